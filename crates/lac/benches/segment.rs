@@ -1,0 +1,89 @@
+//! Benchmarks for the promises of the planar-core issue: solve ≤ 2 µs, solve + 65 samples
+//! ≤ 6 µs (medians over a fixed seeded set of drawable configurations per α), and the
+//! 512×512 drawable-region map ≤ 2 s (in `lac region`, which parallelises these rows).
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use kurbo::Point;
+use lac::Segment;
+use std::hint::black_box;
+
+/// A small deterministic generator (SplitMix64), so the benchmark set never changes.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// 256 drawable configurations with P0 = (−1, 0), P2 = (1, 0) and P1 uniform in the
+/// upper half of the square [−1, 1]², as in seed 000's Fig. 9 and Table 3.
+fn configurations(alpha: f64) -> Vec<[Point; 3]> {
+    let mut rng = Rng(0x1AC0_FFEE ^ alpha.to_bits());
+    let mut out = Vec::new();
+    while out.len() < 256 {
+        let p = [
+            Point::new(-1.0, 0.0),
+            Point::new(2.0 * rng.next() - 1.0, rng.next()),
+            Point::new(1.0, 0.0),
+        ];
+        if Segment::from_control_points(p, alpha).is_ok() {
+            out.push(p);
+        }
+    }
+    out
+}
+
+fn bench_solve(c: &mut Criterion) {
+    let mut group = c.benchmark_group("solve");
+    for alpha in [-1.0, 0.0, 0.5, 1.0, 2.0] {
+        let set = configurations(alpha);
+        group.bench_with_input(BenchmarkId::from_parameter(alpha), &set, |b, set| {
+            let mut i = 0;
+            b.iter(|| {
+                i = (i + 1) % set.len();
+                black_box(Segment::from_control_points(black_box(set[i]), alpha).unwrap())
+            })
+        });
+    }
+    group.finish();
+}
+
+fn bench_solve_and_sample(c: &mut Criterion) {
+    let mut group = c.benchmark_group("solve_and_65_samples");
+    for alpha in [-1.0, 0.0, 0.5, 1.0, 2.0] {
+        let set = configurations(alpha);
+        group.bench_with_input(BenchmarkId::from_parameter(alpha), &set, |b, set| {
+            let mut i = 0;
+            b.iter(|| {
+                i = (i + 1) % set.len();
+                let seg = Segment::from_control_points(black_box(set[i]), alpha).unwrap();
+                black_box(seg.sample_by_arc_length(65).unwrap())
+            })
+        });
+    }
+    group.finish();
+}
+
+/// One row of the region map, in a single thread; 512 rows make the map.
+fn bench_region_row(c: &mut Criterion) {
+    let mut group = c.benchmark_group("region_row_512");
+    group.sample_size(20);
+    for alpha in [-1.0, 0.5, 2.0] {
+        group.bench_with_input(BenchmarkId::from_parameter(alpha), &alpha, |b, &alpha| {
+            let mut row = 0;
+            b.iter(|| {
+                row = (row + 37) % 512;
+                black_box(lac::region::row(alpha, 512, row))
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_solve, bench_solve_and_sample, bench_region_row);
+criterion_main!(benches);

@@ -1,0 +1,132 @@
+//! The crate's error type.
+
+use std::fmt;
+
+/// Result alias used throughout the crate.
+pub type Result<T> = std::result::Result<T, Error>;
+
+/// Everything that can go wrong when building or evaluating a log-aesthetic curve.
+///
+/// Every public function returns one of these for bad input instead of panicking.
+///
+/// ```
+/// use lac::{Error, Segment};
+/// use kurbo::Point;
+/// let err = Segment::from_control_points(
+///     [Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(2.0, 0.0)], -1.0,
+/// ).unwrap_err();
+/// assert!(matches!(err, Error::CollinearPoints));
+/// assert_eq!(err.kind(), "collinear_points");
+/// ```
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// An input number is NaN or infinite.
+    #[error("{what} must be a finite number, got {value}")]
+    NonFinite {
+        /// Which input was not finite.
+        what: &'static str,
+        /// The offending value.
+        value: f64,
+    },
+    /// Two control points coincide, so a tangent direction is undefined.
+    #[error("control points {first} and {second} coincide; move them apart")]
+    CoincidentPoints {
+        /// Index of the first point (0-based).
+        first: usize,
+        /// Index of the second point (0-based).
+        second: usize,
+    },
+    /// The three control points are collinear: a straight line (or a reversal) is not a
+    /// log-aesthetic curve.
+    #[error(
+        "the control points are collinear; a straight line is not a log-aesthetic curve: \
+         move the middle point off the line through the other two"
+    )]
+    CollinearPoints,
+    /// A parameter is outside the range the operation accepts.
+    #[error("{name} = {value} is out of range: {expected}")]
+    OutOfRange {
+        /// The parameter's name.
+        name: &'static str,
+        /// The offending value.
+        value: f64,
+        /// What would be accepted.
+        expected: &'static str,
+    },
+    /// The control points and α admit no log-aesthetic segment.
+    #[error("not drawable: {0}")]
+    NotDrawable(NotDrawable),
+}
+
+impl Error {
+    /// A stable snake_case name for the error, for machine-readable output.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Error::NonFinite { .. } => "non_finite",
+            Error::CoincidentPoints { .. } => "coincident_points",
+            Error::CollinearPoints => "collinear_points",
+            Error::OutOfRange { .. } => "out_of_range",
+            Error::NotDrawable(_) => "not_drawable",
+        }
+    }
+}
+
+/// Why a three-point configuration has no log-aesthetic segment for the requested α.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum NotDrawable {
+    /// The angle at the end with the shorter leg, θe, is larger than any segment of this α
+    /// can make: the segment would have to reach past the inflection point (α < 0) or past
+    /// the point of zero radius (α > 1).
+    ChordAngleTooLarge {
+        /// The slope of the logarithmic curvature graph.
+        alpha: f64,
+        /// The required angle at the shorter-leg end, radians.
+        theta_e: f64,
+        /// The largest angle this α can make for this turning angle, radians.
+        max: f64,
+    },
+    /// A segment exists in theory, but the radius of curvature would vary by more than
+    /// `e^max_log_ratio` along it, which floating point cannot represent.
+    CurvatureRatioTooLarge {
+        /// The slope of the logarithmic curvature graph.
+        alpha: f64,
+        /// The natural logarithm of the largest supported ratio.
+        max_log_ratio: f64,
+    },
+}
+
+impl fmt::Display for NotDrawable {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            NotDrawable::ChordAngleTooLarge { alpha, theta_e, max } => write!(
+                f,
+                "with alpha = {alpha} the angle between the shorter leg and the chord can be at \
+                 most {max:.6} rad ({:.4} deg), but the control points need {theta_e:.6} rad \
+                 ({:.4} deg); move the middle control point toward the perpendicular bisector of \
+                 the end points (a more isosceles triangle), or choose alpha between 0 and 1",
+                max.to_degrees(),
+                theta_e.to_degrees()
+            ),
+            NotDrawable::CurvatureRatioTooLarge {
+                alpha,
+                max_log_ratio,
+            } => write!(
+                f,
+                "with alpha = {alpha} the radius of curvature would vary by more than \
+                 e^{max_log_ratio} along the segment, beyond floating point; make the control \
+                 triangle more isosceles"
+            ),
+        }
+    }
+}
+
+/// Reject NaN and infinities with a message that names the input.
+pub(crate) fn finite(what: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::NonFinite { what, value })
+    }
+}

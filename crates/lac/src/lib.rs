@@ -1,0 +1,47 @@
+//! Log-aesthetic curves.
+//!
+//! A log-aesthetic curve (LAC) has a straight logarithmic curvature graph:
+//! `log(ρ ds/dρ) = α log ρ + c`, i.e. `dρ/ds = Λ ρ^(1−α)`. The clothoid (α = −1), Nielsen
+//! spiral (α = 0), logarithmic spiral (α = 1), circle involute (α = 2) and circle (Λ = 0)
+//! are members. This crate implements the planar family of Yoshida & Saito, *Interactive
+//! Aesthetic Curve Segments* (2006):
+//!
+//! * [`StandardForm`]: ρ(s), θ(s), s(θ), ρ(θ), bounds, points, and the
+//!   [`Classification`] of seed 000 Table 2;
+//! * [`Segment`]: a segment drawn from three control points and α, with evaluation,
+//!   sampling (by arc length, by tangent angle, adaptively) and the evolute;
+//! * [`region`]: the drawable region of seed 000 Fig. 9.
+//!
+//! The crate does no I/O. Signed curvature is positive for left turns.
+//!
+//! ```
+//! use kurbo::Point;
+//! use lac::Segment;
+//!
+//! let seg = Segment::from_control_points(
+//!     [Point::new(-1.0, 0.0), Point::new(-0.2, 0.8), Point::new(1.0, 0.0)],
+//!     0.5,
+//! )
+//! .unwrap();
+//! let end = seg.point_at_s(seg.arc_length()).unwrap();
+//! assert!((end - Point::new(1.0, 0.0)).hypot() < 1e-12);
+//! // The curve turns right (clockwise) from (-1,0) via (-0.2,0.8) to (1,0).
+//! assert!(seg.curvature_start() < 0.0);
+//! ```
+
+mod error;
+mod gauss;
+mod integrate;
+mod kurbo_impl;
+mod numeric;
+pub mod region;
+mod sampling;
+mod segment;
+mod solve;
+mod standard_form;
+
+pub use error::{Error, NotDrawable, Result};
+pub use kurbo_impl::SegmentDerivative;
+pub use sampling::Sample;
+pub use segment::Segment;
+pub use standard_form::{Classification, InfiniteRadiusEnd, StandardForm, ZeroRadiusEnd};

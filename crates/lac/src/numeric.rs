@@ -1,0 +1,151 @@
+//! Small numerical building blocks: complex numbers and the functions that make the
+//! log-aesthetic formulas continuous across α = 0, α = 1 and Λ = 0.
+
+use std::ops::{Add, AddAssign, Mul, Neg, Sub};
+
+/// `expm1(y) / y`, continued by 1 at y = 0.
+///
+/// Every removable singularity of SPEC §2 (α = 0, α = 1, Λ = 0) is a quotient of this form;
+/// `expm1` keeps full relative accuracy for tiny `y`, so the quotient does too.
+#[inline]
+pub(crate) fn expm1_ratio(y: f64) -> f64 {
+    if y == 0.0 {
+        1.0
+    } else {
+        y.exp_m1() / y
+    }
+}
+
+/// `ln(1 + x) / x`, continued by 1 at x = 0 (x > −1).
+#[inline]
+pub(crate) fn ln1p_ratio(x: f64) -> f64 {
+    if x == 0.0 {
+        1.0
+    } else {
+        x.ln_1p() / x
+    }
+}
+
+/// A complex number `re + i im`, the seeds' notation for planar points.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct Complex {
+    pub(crate) re: f64,
+    pub(crate) im: f64,
+}
+
+impl Complex {
+    pub(crate) const ZERO: Complex = Complex { re: 0.0, im: 0.0 };
+
+    #[inline]
+    pub(crate) const fn new(re: f64, im: f64) -> Self {
+        Complex { re, im }
+    }
+
+    /// `e^{iθ}`.
+    #[inline]
+    pub(crate) fn cis(theta: f64) -> Self {
+        let (s, c) = theta.sin_cos();
+        Complex { re: c, im: s }
+    }
+
+    #[inline]
+    pub(crate) fn scale(self, k: f64) -> Self {
+        Complex::new(self.re * k, self.im * k)
+    }
+
+    #[inline]
+    pub(crate) fn conj(self) -> Self {
+        Complex::new(self.re, -self.im)
+    }
+
+    #[inline]
+    pub(crate) fn norm(self) -> f64 {
+        self.re.hypot(self.im)
+    }
+
+    #[inline]
+    pub(crate) fn norm_sqr(self) -> f64 {
+        self.re * self.re + self.im * self.im
+    }
+
+    #[inline]
+    pub(crate) fn arg(self) -> f64 {
+        self.im.atan2(self.re)
+    }
+
+    /// Multiplication by `i`.
+    #[inline]
+    pub(crate) fn mul_i(self) -> Self {
+        Complex::new(-self.im, self.re)
+    }
+
+    #[inline]
+    pub(crate) fn div(self, d: Complex) -> Self {
+        let n = d.norm_sqr();
+        Complex::new(
+            (self.re * d.re + self.im * d.im) / n,
+            (self.im * d.re - self.re * d.im) / n,
+        )
+    }
+}
+
+impl Add for Complex {
+    type Output = Complex;
+    #[inline]
+    fn add(self, o: Complex) -> Complex {
+        Complex::new(self.re + o.re, self.im + o.im)
+    }
+}
+
+impl AddAssign for Complex {
+    #[inline]
+    fn add_assign(&mut self, o: Complex) {
+        self.re += o.re;
+        self.im += o.im;
+    }
+}
+
+impl Sub for Complex {
+    type Output = Complex;
+    #[inline]
+    fn sub(self, o: Complex) -> Complex {
+        Complex::new(self.re - o.re, self.im - o.im)
+    }
+}
+
+impl Neg for Complex {
+    type Output = Complex;
+    #[inline]
+    fn neg(self) -> Complex {
+        Complex::new(-self.re, -self.im)
+    }
+}
+
+impl Mul for Complex {
+    type Output = Complex;
+    #[inline]
+    fn mul(self, o: Complex) -> Complex {
+        Complex::new(
+            self.re * o.re - self.im * o.im,
+            self.re * o.im + self.im * o.re,
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ratios_are_continuous_at_zero() {
+        for &y in &[1e-300, 1e-20, 1e-9, -1e-9, -1e-20] {
+            assert!((expm1_ratio(y) - 1.0).abs() < 1e-8, "{y}");
+            assert!((ln1p_ratio(y) - 1.0).abs() < 1e-8, "{y}");
+        }
+        assert_eq!(expm1_ratio(0.0), 1.0);
+        assert_eq!(ln1p_ratio(0.0), 1.0);
+        // Away from zero they are the plain quotients.
+        assert!((expm1_ratio(1.0) - (1f64.exp() - 1.0)).abs() < 1e-15);
+        assert!((ln1p_ratio(1.0) - 2f64.ln()).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,337 @@
+//! A log-aesthetic segment from three control points and α (SPEC §3, seed 000 §4).
+
+use kurbo::{Point, Vec2};
+
+use crate::error::{finite, Error, Result};
+use crate::integrate::integrate;
+use crate::numeric::Complex;
+use crate::solve::{solve, Piece};
+use crate::standard_form::{StandardForm, Station};
+
+/// A planar log-aesthetic curve segment defined like a quadratic Bézier curve: it starts
+/// at `P0` tangent to `P1 − P0` and ends at `P2` tangent to `P2 − P1` (seed 000 §4.1).
+///
+/// It is a piece of a [`StandardForm`] curve with the tangent-angle range [0, θd]
+/// (α ≤ 1) or [−θd, 0] (α > 1), θd the turning angle of the control polygon, mapped by a
+/// similarity (and a reflection for right turns) onto the control points. Λ is found so that
+/// the piece's chord makes the same angle with its start tangent as `P2 − P0` makes with
+/// `P1 − P0` at the end with the shorter leg.
+///
+/// Arc length `s` runs from 0 at `P0` to [`Segment::arc_length`] at `P2`; `theta` is the
+/// tangent direction in the caller's frame, starting at the direction of `P1 − P0` and
+/// continuous along the curve; curvature is signed, positive for a left turn.
+///
+/// ```
+/// use kurbo::Point;
+/// use lac::Segment;
+///
+/// // A clothoid (α = −1) segment.
+/// let seg = Segment::from_control_points(
+///     [Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(1.6, 0.9)],
+///     -1.0,
+/// )?;
+/// let samples = seg.sample_by_arc_length(65)?;
+/// assert_eq!(samples.len(), 65);
+/// assert!((samples[64].point - Point::new(1.6, 0.9)).hypot() < 1e-12);
+/// // Curvature varies monotonically along a log-aesthetic segment.
+/// assert!(samples.windows(2).all(|w| w[1].kappa >= w[0].kappa)
+///     || samples.windows(2).all(|w| w[1].kappa <= w[0].kappa));
+/// # Ok::<(), lac::Error>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct Segment {
+    pub(crate) alpha: f64,
+    pub(crate) form: StandardForm,
+    /// Standard-form stations at the caller's first and last point.
+    pub(crate) first: Station,
+    pub(crate) last: Station,
+    /// P(last) − P(first) in the standard form.
+    pub(crate) chord: Complex,
+    /// The caller's first point.
+    pub(crate) origin: Point,
+    /// caller = origin + M(rot · (P − P(first))), M = conjugation when `mirrored`.
+    pub(crate) rot: Complex,
+    pub(crate) mirrored: bool,
+    /// The caller's curve turns left (positive curvature).
+    pub(crate) left: bool,
+    /// Tangent direction at the first point, radians.
+    pub(crate) theta_first: f64,
+    /// Turning angle θd.
+    pub(crate) turning: f64,
+}
+
+impl Segment {
+    /// Solve for the segment with control points `points = [P0, P1, P2]` and slope `alpha`.
+    ///
+    /// Errors: non-finite input ([`Error::NonFinite`]), coincident or collinear control
+    /// points, or [`Error::NotDrawable`] when no segment of this α fits the triangle.
+    pub fn from_control_points(points: [Point; 3], alpha: f64) -> Result<Segment> {
+        finite("alpha", alpha)?;
+        const NAMES: [[&str; 2]; 3] = [["P0.x", "P0.y"], ["P1.x", "P1.y"], ["P2.x", "P2.y"]];
+        for (p, names) in points.iter().zip(NAMES) {
+            finite(names[0], p.x)?;
+            finite(names[1], p.y)?;
+        }
+        let [p0, p1, p2] = points;
+        for (i, j) in [(0, 1), (1, 2), (0, 2)] {
+            if points[i] == points[j] {
+                return Err(Error::CoincidentPoints {
+                    first: i,
+                    second: j,
+                });
+            }
+        }
+        let (u, v) = (p1 - p0, p2 - p1);
+        if !(u.hypot().is_finite() && v.hypot().is_finite() && (p2 - p0).hypot().is_finite()) {
+            return Err(Error::OutOfRange {
+                name: "control points",
+                value: f64::INFINITY,
+                expected: "coordinates whose differences do not overflow",
+            });
+        }
+        let cross = u.cross(v);
+        let left = cross > 0.0;
+        let turning = cross.abs().atan2(u.dot(v));
+        if !(turning > 1e-13 && turning < std::f64::consts::PI - 1e-13) {
+            return Err(Error::CollinearPoints);
+        }
+        // The shorter leg goes first (SPEC §3 step 2).
+        let reversed = u.hypot() > v.hypot();
+        let (a, b, c) = if reversed { (p2, p1, p0) } else { (p0, p1, p2) };
+        let (ab, ac) = (b - a, c - a);
+        let theta_e = ab.cross(ac).abs().atan2(ab.dot(ac)).max(0.5 * turning);
+        let piece = solve(alpha, turning, theta_e)?;
+        Ok(Self::from_piece(piece, alpha, p0, p2, left, reversed, turning, u.atan2()))
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn from_piece(
+        piece: Piece,
+        alpha: f64,
+        p0: Point,
+        p2: Point,
+        left: bool,
+        reversed: bool,
+        turning: f64,
+        theta_first: f64,
+    ) -> Segment {
+        let (first, last, chord) = if reversed {
+            (piece.end, piece.start, -piece.chord)
+        } else {
+            (piece.start, piece.end, piece.chord)
+        };
+        // The standard form turns left along increasing θ; traversed backwards it turns right.
+        let mirrored = left == reversed;
+        let c = p2 - p0;
+        let c = Complex::new(c.x, if mirrored { -c.y } else { c.y });
+        Segment {
+            alpha,
+            form: piece.form,
+            first,
+            last,
+            chord,
+            origin: p0,
+            rot: c.div(chord),
+            mirrored,
+            left,
+            theta_first,
+            turning,
+        }
+    }
+
+    /// The slope α of the logarithmic curvature graph.
+    pub fn alpha(&self) -> f64 {
+        self.alpha
+    }
+
+    /// The Λ of the solved standard-form piece (ρ = 1 at the end that stays regular).
+    pub fn lambda(&self) -> f64 {
+        self.form.lambda
+    }
+
+    /// The standard-form curve this segment is a similar copy of.
+    pub fn standard_form(&self) -> StandardForm {
+        self.form
+    }
+
+    /// The turning angle θd of the control polygon, in (0, π).
+    pub fn turning_angle(&self) -> f64 {
+        self.turning
+    }
+
+    /// Is this an exact circular arc (isosceles control triangle, Λ = 0)?
+    pub fn is_circle(&self) -> bool {
+        self.form.lambda == 0.0
+    }
+
+    /// Scale factor from standard-form lengths to the caller's.
+    #[inline]
+    pub(crate) fn scale(&self) -> f64 {
+        self.rot.norm()
+    }
+
+    /// Arc length from the first to the last control point.
+    pub fn arc_length(&self) -> f64 {
+        (self.last.s - self.first.s).abs() * self.scale()
+    }
+
+    /// Signed curvature at the first control point.
+    pub fn curvature_start(&self) -> f64 {
+        self.kappa_of(&self.first)
+    }
+
+    /// Signed curvature at the last control point.
+    pub fn curvature_end(&self) -> f64 {
+        self.kappa_of(&self.last)
+    }
+
+    /// The control points `[P0, P1, P2]`: the ends and the intersection of the end tangents.
+    pub fn control_points(&self) -> [Point; 3] {
+        let p0 = self.origin;
+        let p2 = self.caller_point(self.chord);
+        let t0 = Vec2::from_angle(self.theta_first);
+        let t1 = Vec2::from_angle(self.theta_of(&self.last));
+        // P1 = P0 + a t0 with (P2 − P0 − a t0) × t1 = 0.
+        let a = (p2 - p0).cross(t1) / t0.cross(t1);
+        [p0, p0 + a * t0, p2]
+    }
+
+    /// Point at arc length `s` from the first control point, 0 ≤ s ≤ arc_length().
+    pub fn point_at_s(&self, s: f64) -> Result<Point> {
+        let st = self.station_at_s(s)?;
+        Ok(self.point_of(&st))
+    }
+
+    /// Unit tangent at arc length `s` (in the direction of travel).
+    pub fn tangent_at_s(&self, s: f64) -> Result<Vec2> {
+        Ok(Vec2::from_angle(self.theta_at_s(s)?))
+    }
+
+    /// Signed curvature at arc length `s`.
+    pub fn curvature_at_s(&self, s: f64) -> Result<f64> {
+        Ok(self.kappa_of(&self.station_at_s(s)?))
+    }
+
+    /// Tangent direction (radians, caller's frame, continuous from the first point) at `s`.
+    pub fn theta_at_s(&self, s: f64) -> Result<f64> {
+        Ok(self.theta_of(&self.station_at_s(s)?))
+    }
+
+    /// Arc length at which the tangent direction is `theta` (caller's frame, between
+    /// the start direction and the start direction ± θd).
+    pub fn s_at_theta(&self, theta: f64) -> Result<f64> {
+        Ok(self.s_of(&self.station_at_theta(theta)?))
+    }
+
+    /// Point where the tangent direction is `theta`.
+    pub fn point_at_theta(&self, theta: f64) -> Result<Point> {
+        Ok(self.point_of(&self.station_at_theta(theta)?))
+    }
+
+    /// Signed curvature where the tangent direction is `theta`.
+    pub fn curvature_at_theta(&self, theta: f64) -> Result<f64> {
+        Ok(self.kappa_of(&self.station_at_theta(theta)?))
+    }
+
+    /// +1 along increasing standard-form θ, −1 when the caller's direction is reversed.
+    #[inline]
+    pub(crate) fn dir(&self) -> f64 {
+        if self.last.theta >= self.first.theta {
+            1.0
+        } else {
+            -1.0
+        }
+    }
+
+    pub(crate) fn station_at_s(&self, s: f64) -> Result<Station> {
+        finite("s", s)?;
+        let len = self.arc_length();
+        let slack = 1e-12 * len;
+        if !(s >= -slack && s <= len + slack) {
+            return Err(Error::OutOfRange {
+                name: "s",
+                value: s,
+                expected: "an arc length between 0 and arc_length()",
+            });
+        }
+        let s = s.clamp(0.0, len);
+        let k = self.dir() / self.scale();
+        // Anchor at the nearer end: near a singular end its ρ is known exactly.
+        let st = if s <= 0.5 * len {
+            self.form.advance_s(&self.first, k * s)
+        } else {
+            self.form.advance_s(&self.last, -k * (len - s))
+        };
+        Ok(st.unwrap_or(if s <= 0.5 * len { self.first } else { self.last }))
+    }
+
+    pub(crate) fn station_at_theta(&self, theta: f64) -> Result<Station> {
+        finite("theta", theta)?;
+        let sign = if self.left { 1.0 } else { -1.0 };
+        let turn = sign * (theta - self.theta_first);
+        let slack = 1e-12 * self.turning;
+        if !(turn >= -slack && turn <= self.turning + slack) {
+            return Err(Error::OutOfRange {
+                name: "theta",
+                value: theta,
+                expected: "a tangent direction between those at the two ends of the segment",
+            });
+        }
+        let turn = turn.clamp(0.0, self.turning);
+        let st = if turn <= 0.5 * self.turning {
+            self.form.advance_theta(&self.first, self.dir() * turn)
+        } else {
+            self.form
+                .advance_theta(&self.last, -self.dir() * (self.turning - turn))
+        };
+        Ok(st.unwrap_or(if turn <= 0.5 * self.turning { self.first } else { self.last }))
+    }
+
+    /// P(st) − P(first) in the standard form, integrating from the nearer end.
+    pub(crate) fn offset_of(&self, st: &Station) -> Complex {
+        let span = |a: &Station, b: &Station| {
+            if a.theta <= b.theta {
+                integrate(&self.form, a, b, false).value
+            } else {
+                -integrate(&self.form, b, a, false).value
+            }
+        };
+        if (st.theta - self.first.theta).abs() <= (self.last.theta - st.theta).abs() {
+            span(&self.first, st)
+        } else {
+            self.chord - span(st, &self.last)
+        }
+    }
+
+    pub(crate) fn caller_point(&self, offset: Complex) -> Point {
+        let z = self.rot * offset;
+        let z = if self.mirrored { z.conj() } else { z };
+        Point::new(self.origin.x + z.re, self.origin.y + z.im)
+    }
+
+    pub(crate) fn point_of(&self, st: &Station) -> Point {
+        self.caller_point(self.offset_of(st))
+    }
+
+    pub(crate) fn kappa_of(&self, st: &Station) -> f64 {
+        let k = st.kappa() / self.scale();
+        if self.left {
+            k
+        } else {
+            -k
+        }
+    }
+
+    pub(crate) fn theta_of(&self, st: &Station) -> f64 {
+        let turn = (st.theta - self.first.theta).abs();
+        if self.left {
+            self.theta_first + turn
+        } else {
+            self.theta_first - turn
+        }
+    }
+
+    pub(crate) fn s_of(&self, st: &Station) -> f64 {
+        (st.s - self.first.s).abs() * self.scale()
+    }
+}

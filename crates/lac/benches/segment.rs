@@ -85,5 +85,10 @@ fn bench_region_row(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_solve, bench_solve_and_sample, bench_region_row);
+criterion_group!(
+    benches,
+    bench_solve,
+    bench_solve_and_sample,
+    bench_region_row
+);
 criterion_main!(benches);

@@ -100,7 +100,11 @@ pub enum NotDrawable {
 impl fmt::Display for NotDrawable {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
-            NotDrawable::ChordAngleTooLarge { alpha, theta_e, max } => write!(
+            NotDrawable::ChordAngleTooLarge {
+                alpha,
+                theta_e,
+                max,
+            } => write!(
                 f,
                 "with alpha = {alpha} the angle between the shorter leg and the chord can be at \
                  most {max:.6} rad ({:.4} deg), but the control points need {theta_e:.6} rad \

@@ -144,4 +144,3 @@ impl ParamCurveCurvature for Segment {
         self.curvature_at_s(s).unwrap_or(0.0)
     }
 }
-

@@ -101,7 +101,16 @@ impl Segment {
         let (ab, ac) = (b - a, c - a);
         let theta_e = ab.cross(ac).abs().atan2(ab.dot(ac)).max(0.5 * turning);
         let piece = solve(alpha, turning, theta_e)?;
-        Ok(Self::from_piece(piece, alpha, p0, p2, left, reversed, turning, u.atan2()))
+        Ok(Self::from_piece(
+            piece,
+            alpha,
+            p0,
+            p2,
+            left,
+            reversed,
+            turning,
+            u.atan2(),
+        ))
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -262,7 +271,11 @@ impl Segment {
         } else {
             self.form.advance_s(&self.last, -k * (len - s))
         };
-        Ok(st.unwrap_or(if s <= 0.5 * len { self.first } else { self.last }))
+        Ok(st.unwrap_or(if s <= 0.5 * len {
+            self.first
+        } else {
+            self.last
+        }))
     }
 
     pub(crate) fn station_at_theta(&self, theta: f64) -> Result<Station> {
@@ -284,7 +297,11 @@ impl Segment {
             self.form
                 .advance_theta(&self.last, -self.dir() * (self.turning - turn))
         };
-        Ok(st.unwrap_or(if turn <= 0.5 * self.turning { self.first } else { self.last }))
+        Ok(st.unwrap_or(if turn <= 0.5 * self.turning {
+            self.first
+        } else {
+            self.last
+        }))
     }
 
     /// P(st) − P(first) in the standard form, integrating from the nearer end.

@@ -172,11 +172,12 @@ impl StandardForm {
 
     pub(crate) fn station_at_s(&self, s: f64) -> Result<Station> {
         finite("s", s)?;
-        self.advance_s(&Station::REFERENCE, s).ok_or(Error::OutOfRange {
-            name: "s",
-            value: s,
-            expected: "an arc length inside s_bounds()",
-        })
+        self.advance_s(&Station::REFERENCE, s)
+            .ok_or(Error::OutOfRange {
+                name: "s",
+                value: s,
+                expected: "an arc length inside s_bounds()",
+            })
     }
 
     /// The station `d_theta` further along in tangent angle, or `None` past a bound.

@@ -26,6 +26,31 @@ pub(crate) fn ln1p_ratio(x: f64) -> f64 {
     }
 }
 
+/// ln(1 + (a + a_lo)·b·c) with the sum formed exactly (FMA error-free products and sums),
+/// so that it keeps full relative accuracy when the argument is tiny: near a bound of the
+/// standard form, where ρ → 0 or ∞, a plain product would lose up to all digits of the sum.
+/// `a_lo` carries the rounding error of `a` when `a` is itself computed (α − 1).
+pub(crate) fn ln_1p_product(a: f64, a_lo: f64, b: f64, c: f64) -> f64 {
+    let p1 = a * b;
+    let e1 = a.mul_add(b, -p1) + a_lo * b;
+    let p2 = p1 * c;
+    let e2 = p1.mul_add(c, -p2);
+    // Two-sum 1 + p2 = s + t, exactly.
+    let s = 1.0 + p2;
+    let t = (1.0 - s) + p2;
+    let w_lo = t + e2 + e1 * c;
+    s.ln() + w_lo / s
+}
+
+/// `x − 1` and its rounding error, exactly (Fast2Sum; valid since |1| ≥ |x| or x ≥ 1 ulp
+/// aligned as in TwoSum).
+pub(crate) fn minus_one(x: f64) -> (f64, f64) {
+    let d = x - 1.0;
+    let z = d - x;
+    let lo = (x - (d - z)) + (-1.0 - z);
+    (d, lo)
+}
+
 /// A complex number `re + i im`, the seeds' notation for planar points.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct Complex {
@@ -135,6 +160,27 @@ impl Mul for Complex {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn ln_1p_product_is_accurate_next_to_minus_one() {
+        // 1 + (−0.5)(0.1)(19.999979999999997) in exact rational arithmetic of these doubles
+        // is 1.0000000000842668e-6; its logarithm to 20 digits (mpmath):
+        let exact = -13.815_510_557_880_007;
+        let (a, b, c): (f64, f64, f64) = (-0.5, 0.1, 19.999_979_999_999_997);
+        let got = ln_1p_product(a, 0.0, b, c);
+        assert!((got - exact).abs() < 4e-16 * exact.abs(), "{got}");
+        // A plain evaluation is wrong from the 11th digit on.
+        assert!(((a * b * c).ln_1p() - exact).abs() > 1e-11);
+    }
+
+    #[test]
+    fn minus_one_is_exact() {
+        let (d, lo) = minus_one(-1e-8);
+        // −1.00000001 is not a double; d + lo is, to 1e-32.
+        assert_eq!(d, -1.000_000_01);
+        assert!(lo != 0.0 && lo.abs() < 1e-16);
+        assert_eq!(minus_one(0.5), (-0.5, 0.0));
+    }
 
     #[test]
     fn ratios_are_continuous_at_zero() {

@@ -18,9 +18,11 @@ use crate::standard_form::{StandardForm, Station};
 
 /// Largest supported ln(ρ_max/ρ_min) along one segment (ρ ratio ≈ 1e260).
 pub(crate) const MAX_LOG_RATIO: f64 = 600.0;
-/// Beyond μ = SATURATION/|α| (α < 0) or SATURATION/α (α > 1) the chord angle has reached
-/// its limit to below 1e-17: the rest of the curve toward the singular point is shorter
-/// than e^(−SATURATION) of the piece.
+/// Beyond μ = SATURATION/|α| (α < 0) or SATURATION/(α − 1) (α > 1) the chord angle has
+/// reached its limit to below 1e-17: for α < 0 the rest of the curve up to the inflection is
+/// shorter than e^(−|α|μ) of the piece; and Λ differs from its bound 1/(θd|1−α|) by the
+/// factor e^(−|α−1|μ), which changes the whole piece by as much (the slower of the two
+/// rates is the binding one: |α| for α < 0, α − 1 for α > 1).
 const SATURATION: f64 = 40.0;
 
 /// A solved standard-form piece: θ ∈ [−θd, 0] or [0, θd], ascending.
@@ -139,7 +141,7 @@ pub(crate) fn solve(alpha: f64, theta_d: f64, theta_e: f64) -> Result<Piece> {
     let mu_max = if alpha < 0.0 {
         MAX_LOG_RATIO.min(SATURATION / -alpha)
     } else if alpha > 1.0 {
-        MAX_LOG_RATIO.min(SATURATION / alpha)
+        MAX_LOG_RATIO.min(SATURATION / (alpha - 1.0))
     } else {
         MAX_LOG_RATIO
     };

@@ -4,7 +4,7 @@ use kurbo::{Point, Vec2};
 
 use crate::error::{finite, Error, Result};
 use crate::integrate::integrate;
-use crate::numeric::{expm1_ratio, ln1p_ratio};
+use crate::numeric::{expm1_ratio, ln1p_ratio, ln_1p_product, minus_one};
 
 /// A planar log-aesthetic curve in standard form II (seed 000 §3.3, SPEC §2).
 ///
@@ -193,7 +193,13 @@ impl StandardForm {
         if x <= -1.0 || x.is_nan() {
             return None;
         }
-        let lr = ln1p_ratio(x);
+        let lr = if from.ln_rho == 0.0 && x < -0.5 {
+            // From the reference point (w = 1) near the bound: form 1 + (α−1)Λθ exactly.
+            let (am1, am1_lo) = minus_one(a);
+            ln_1p_product(am1, am1_lo, l, d_theta) / x
+        } else {
+            ln1p_ratio(x)
+        };
         let d_ln_rho = t * lr;
         let d_s = from.ln_rho.exp() * d_theta * lr * expm1_ratio(a * d_ln_rho);
         let out = Station {
@@ -216,7 +222,11 @@ impl StandardForm {
         if x <= -1.0 || x.is_nan() {
             return None;
         }
-        let lr = ln1p_ratio(x);
+        let lr = if from.ln_rho == 0.0 && x < -0.5 {
+            ln_1p_product(a, 0.0, l, d_s) / x
+        } else {
+            ln1p_ratio(x)
+        };
         let d_ln_rho = t * lr;
         let d_theta = from.kappa() * d_s * lr * expm1_ratio((a - 1.0) * d_ln_rho);
         let out = Station {

@@ -1,0 +1,36 @@
+# `make test` runs every test of the project: formatting, clippy (warnings denied), Rust unit,
+# property, integration and doc tests, and the Python cross-checks (installed into .venv).
+VENV := .venv
+PY := $(VENV)/bin/python
+
+.PHONY: test rust python fixtures bench example
+
+test: rust python
+
+rust:
+	cargo fmt --all -- --check
+	cargo clippy --workspace --all-targets -- -D warnings
+	cargo test --workspace
+
+python: $(VENV)/.installed
+	cargo build --release -p lac-cli
+	LAC_BIN=$(CURDIR)/target/release/lac $(PY) -m pytest -q tools/reference
+
+$(VENV)/.installed: tools/reference/requirements.txt
+	python3 -m venv $(VENV)
+	$(VENV)/bin/pip install --quiet --disable-pip-version-check -r tools/reference/requirements.txt
+	touch $@
+
+# Regenerate the 40-digit reference fixtures (a few minutes; the output is committed).
+fixtures: $(VENV)/.installed
+	$(PY) tools/reference/generate_fixtures.py
+
+# Criterion benchmarks (medians quoted in issue notes); the Clothoids timing for comparison.
+bench: $(VENV)/.installed
+	cargo bench -p lac --bench segment
+	$(PY) tools/reference/bench_clothoids.py
+
+# The main job: a clothoid-to-spiral segment drawn as SVG with its curvature comb.
+example:
+	cargo run --release -p lac-cli -- segment --points "-1,0 -0.2,0.8 1,0" --alpha 0.5 \
+		--format svg --comb --evolute -o segment.svg

@@ -72,7 +72,7 @@ impl ParamCurveArclen for Segment {
 /// The `order`-th derivative of a [`Segment`] with respect to t = s / arc_length, as a
 /// curve (kurbo's convention: the vector is returned as a `Point`).
 ///
-/// Orders 1 to 4 are exact (from θ, κ, κ′, κ″); higher orders, which nothing in kurbo
+/// Orders 1 to 6 are exact (algebraic in κ and its derivatives); higher orders, which nothing in kurbo
 /// uses, are central differences of the order below.
 #[derive(Clone, Debug)]
 pub struct SegmentDerivative {
@@ -105,7 +105,7 @@ impl ParamCurveDeriv for SegmentDerivative {
 impl ParamCurve for SegmentDerivative {
     fn eval(&self, t: f64) -> Point {
         let seg = &self.segment;
-        if self.order > 4 {
+        if self.order > 6 {
             let h = 1e-4;
             let lower = SegmentDerivative {
                 segment: seg.clone(),

@@ -2,11 +2,14 @@
 //! chordal tolerance; and its evolute.
 //!
 //! Positions between consecutive samples come from the two-point Hermite (Obreshkov)
-//! quadrature of f(s) = e^{iθ(s)}, whose derivatives at a sample are algebraic in κ, κ′, κ″:
-//! `∫₀ʰ f = h/2 (f₀+f₁) + 3h²/28 (f₀′−f₁′) + h³/84 (f₀″+f₁″) + h⁴/1680 (f₀‴−f₁‴)`,
-//! exact for degree 7. The same rule with one derivative fewer estimates the error; where
-//! the two differ by more than 3e-11·h (strong curvature variation between samples) the
-//! interval is halved (and integrated by the general quadrature after 12 halvings). So a sample costs one
+//! quadrature of f(s) = e^{iθ(s)} with derivatives up to the fifth,
+//! `∫₀ʰ f = Σₖ cₖ hᵏ⁺¹ (f₀⁽ᵏ⁾ + (−1)ᵏ f₁⁽ᵏ⁾)`, c = (1/2, 5/44, 1/66, 1/792, 1/15840,
+//! 1/665280), exact for degree 11 (coefficients from `tools/reference/hermite_rule.py`).
+//! The derivatives are algebraic: κ⁽ʲ⁾ = κ (Λρ^(−α))ʲ Πᵢ₍ᵢ<ⱼ₎ −(1 + iα), and
+//! f⁽ⁿ⁺¹⁾ = i Σⱼ C(n, j) κ⁽ʲ⁾ f⁽ⁿ⁻ʲ⁾. The order-9 rule (one derivative fewer) estimates the
+//! error; where the two differ by more than 1e-11·h (strong curvature variation between
+//! samples, e.g. near ρ = 0 for α > 1) the interval is halved, and after 12 halvings it is
+//! integrated by the general quadrature. So a sample costs one
 //! evaluation of θ and κ, which the output needs anyway, and no extra quadrature nodes.
 
 use kurbo::{Point, Vec2};
@@ -206,47 +209,78 @@ impl Segment {
         self.sample_from(&Node::new(&self.form, *st), z)
     }
 
-    /// f = e^{iθ} and its first three derivatives in standard-form arc length.
-    pub(crate) fn jet(&self, st: &Station) -> [Complex; 4] {
+    /// f = e^{iθ} and its first five derivatives in standard-form arc length.
+    pub(crate) fn jet(&self, st: &Station) -> Jet {
         self.jet_of(&Node::new(&self.form, *st))
     }
 
-    fn jet_of(&self, node: &Node) -> [Complex; 4] {
-        let (alpha, lambda) = (self.form.alpha, self.form.lambda);
+    fn jet_of(&self, node: &Node) -> Jet {
+        const BINOMIAL: [[f64; 5]; 5] = [
+            [1.0, 0.0, 0.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0, 0.0, 0.0],
+            [1.0, 2.0, 1.0, 0.0, 0.0],
+            [1.0, 3.0, 3.0, 1.0, 0.0],
+            [1.0, 4.0, 6.0, 4.0, 1.0],
+        ];
+        let alpha = self.form.alpha;
+        let r = self.form.lambda * node.q; // −κ′/κ
+                                           // κ⁽ʲ⁾ for j = 0..4.
+        let mut k = [node.kappa; 5];
+        for j in 1..5 {
+            k[j] = k[j - 1] * r * -(1.0 + (j - 1) as f64 * alpha);
+        }
+        // f⁽ⁿ⁾ = g[n]·e^{iθ} with g[n+1] = i Σⱼ C(n, j) κ⁽ʲ⁾ g[n−j].
+        let mut g = [Complex::new(1.0, 0.0); 6];
+        for n in 0..5 {
+            let mut sum = Complex::ZERO;
+            for j in 0..=n {
+                sum += g[n - j].scale(BINOMIAL[n][j] * k[j]);
+            }
+            g[n + 1] = sum.mul_i();
+        }
         let f = Complex::cis(node.st.theta);
-        let (k, q) = (node.kappa, node.q);
-        let k1 = -lambda * k * q;
-        let k2 = lambda * lambda * (1.0 + alpha) * k * q * q;
-        [
-            f,
-            f * Complex::new(0.0, k),
-            f * Complex::new(-k * k, k1),
-            f * Complex::new(-3.0 * k * k1, k2 - k * k * k),
-        ]
+        g.map(|gn| f * gn)
     }
 
     /// ∫ e^{iθ} ds from `a` to `b` by the Hermite rule, halving the interval where the
     /// error estimate is too large, and by the general quadrature after 12 halvings.
-    fn hermite(
-        &self,
-        a: &Node,
-        b: &Node,
-        ja: &[Complex; 4],
-        jb: &[Complex; 4],
-        depth: u32,
-    ) -> Complex {
+    fn hermite(&self, a: &Node, b: &Node, ja: &Jet, jb: &Jet, depth: u32) -> Complex {
+        const ORDER_11: [f64; 6] = [
+            1.0 / 2.0,
+            5.0 / 44.0,
+            1.0 / 66.0,
+            1.0 / 792.0,
+            1.0 / 15840.0,
+            1.0 / 665280.0,
+        ];
+        const ORDER_9: [f64; 5] = [
+            1.0 / 2.0,
+            1.0 / 9.0,
+            1.0 / 72.0,
+            1.0 / 1008.0,
+            1.0 / 30240.0,
+        ];
         let h = b.st.s - a.st.s;
-        let (h2, h3, h4) = (h * h, h * h * h, h * h * h * h);
-        let sum0 = (ja[0] + jb[0]).scale(0.5 * h);
-        let d1 = ja[1] - jb[1];
-        let s2 = ja[2] + jb[2];
-        let d3 = ja[3] - jb[3];
-        let order7 = sum0 + d1.scale(3.0 * h2 / 28.0) + s2.scale(h3 / 84.0) + d3.scale(h4 / 1680.0);
-        let order5 = sum0 + d1.scale(h2 / 10.0) + s2.scale(h3 / 120.0);
-        // The order-5 rule's error is |order7 − order5|; order 7's is smaller by about
-        // (hκ)²/250 ≤ 1e-4 whenever that difference is below 3e-11·h (hκ ≤ 0.16).
-        if (order7 - order5).norm_sqr() <= 9e-22 * h * h {
-            return order7;
+        let (mut order11, mut order9) = (Complex::ZERO, Complex::ZERO);
+        let mut hk = h;
+        for k in 0..6 {
+            // (f₀⁽ᵏ⁾ + (−1)ᵏ f₁⁽ᵏ⁾)·hᵏ⁺¹
+            let term = if k % 2 == 0 {
+                ja[k] + jb[k]
+            } else {
+                ja[k] - jb[k]
+            }
+            .scale(hk);
+            order11 += term.scale(ORDER_11[k]);
+            if k < 5 {
+                order9 += term.scale(ORDER_9[k]);
+            }
+            hk *= h;
+        }
+        // The order-9 rule's error is about |order11 − order9|; order 11's is smaller by
+        // about (hκ)²/600, and a difference below 1e-11·h implies hκ < 0.85.
+        if (order11 - order9).norm_sqr() <= 1e-22 * h * h {
+            return order11;
         }
         let mid = match self.form.advance_s(&a.st, 0.5 * h) {
             Some(st) if depth < 12 => Node::new(&self.form, st),
@@ -277,6 +311,9 @@ fn check_count(n: usize) -> Result<()> {
         })
     }
 }
+
+/// f = e^{iθ} and its derivatives of orders 0 to 5 at a station.
+pub(crate) type Jet = [Complex; 6];
 
 /// A station with its curvature κ = 1/ρ and q = ρ^(−α), the quantities of the jet.
 struct Node {

@@ -24,9 +24,9 @@ use crate::numeric::{expm1_ratio, ln1p_ratio, ln_1p_product, minus_one};
 ///
 /// ```
 /// use lac::StandardForm;
-/// // The clothoid: θ(s) = s + s²/2 for Λ = 1.
+/// // The clothoid (α = −1, Λ = 1): κ = 1 − s, so θ(s) = s − s²/2.
 /// let clothoid = StandardForm::new(-1.0, 1.0).unwrap();
-/// assert!((clothoid.theta_at_s(0.5).unwrap() - 0.625).abs() < 1e-15);
+/// assert!((clothoid.theta_at_s(0.5).unwrap() - 0.375).abs() < 1e-15);
 /// // α = 1 is the logarithmic spiral: ρ(θ) = e^(Λθ).
 /// let spiral = StandardForm::new(1.0, 0.2).unwrap();
 /// assert!((spiral.rho_at_theta(1.0).unwrap() - 0.2f64.exp()).abs() < 1e-15);

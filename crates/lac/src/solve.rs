@@ -1,31 +1,39 @@
-//! The one-dimensional search of SPEC §3 step 4 (seed 000 §4.1, Appendix A).
+//! The one-dimensional search of SPEC §3 step 4 (seed 000 §4.1, Appendix A) and §4
+//! (seed 004), for one piece or two pieces joined with G3 continuity.
 //!
-//! Instead of bisecting on Λ, we search on μ = ln(ρ_max/ρ_min), the logarithm of the
-//! curvature ratio along the piece. Λ(μ) = μ·(1 − e^{−|α−1|μ})/(|α−1|μ)/θd maps
-//! [0, ∞) onto the seed's bracket [0, 1/(θd|1−α|)) for every α (α = 1 included), and the
-//! end of the piece that approaches the singular point has ρ^(α−1) = e^{−|α−1|μ} exactly,
-//! which keeps the integrals accurate however close the segment comes to an inflection.
-//! The chord angle increases monotonically with μ; Newton steps with the analytic
-//! derivative are taken inside a bracket that only shrinks, and bisection is the fallback,
-//! so the iteration never leaves [0, μ_max].
+//! Both pieces share the reference point of their standard forms, at the joint: piece 0 is
+//! θ ∈ [−θ0, 0] of LAC(α0, Λ), piece 1 is θ ∈ [0, θ1] of LAC(α1, Λ), so ρ = 1 and dρ/ds = Λ
+//! on both sides of the joint (the logarithmic curvature graph is one continuous polyline).
+//! A single segment is θ0 = 0 (α ≤ 1) or θ1 = 0 (α > 1).
+//!
+//! Instead of bisecting on Λ we search on μ with Λ(μ) = μ·E(−Dμ/Θ)/Θ, E(y) = (e^y − 1)/y,
+//! where Θ = θ0 + θ1 and D = max(θ0(α0 − 1), θ1(1 − α1), 0) is such that Λ < 1/D keeps
+//! both pieces clear of their singular points (ρ = 0 before the start when α0 > 1, ρ = ∞
+//! after the end when α1 < 1). This maps [0, ∞) onto [0, 1/D) (onto [0, ∞) when D = 0),
+//! and the end that approaches its singular point has ρ^(α−1) = e^{−Dμ/Θ} exactly, which
+//! keeps the integrals accurate however close the curve comes to an inflection. For one
+//! piece μ is exactly ln(ρ_max/ρ_min). The chord angle increases monotonically with μ;
+//! Newton steps with the analytic derivative are taken inside a bracket that only shrinks,
+//! with bisection as the fallback, so the iteration never leaves [0, μ_max].
 
 use std::cell::OnceCell;
 
 use crate::error::{Error, NotDrawable, Result};
 use crate::integrate::{integrate_with, NodeCache};
-use crate::numeric::{expm1_ratio, Complex};
+use crate::numeric::{expm1_ratio, ln1p_ratio, Complex};
 use crate::standard_form::{StandardForm, Station};
 
-/// Largest supported ln(ρ_max/ρ_min) along one segment (ρ ratio ≈ 1e260).
+/// Largest supported ln(ρ_max/ρ_min) along one curve (ρ ratio ≈ 1e260).
 pub(crate) const MAX_LOG_RATIO: f64 = 600.0;
-/// Beyond μ = SATURATION/|α| (α < 0) or SATURATION/(α − 1) (α > 1) the chord angle has
-/// reached its limit to below 1e-17: for α < 0 the rest of the curve up to the inflection is
-/// shorter than e^(−|α|μ) of the piece; and Λ differs from its bound 1/(θd|1−α|) by the
-/// factor e^(−|α−1|μ), which changes the whole piece by as much (the slower of the two
-/// rates is the binding one: |α| for α < 0, α − 1 for α > 1).
+/// The search stops growing μ once the chord angle has reached its limit to below
+/// e^(−SATURATION): for a binding piece with α < 0 the rest of the curve up to the
+/// inflection is shorter than w^(|α|/(1−α)) of it, and Λ differs from its bound by the
+/// factor w, which changes the whole curve by as much (w = e^{−Dμ/Θ}); for α > 1 the rest
+/// up to ρ = 0 is shorter than w^(α/(α−1)) ≤ w. For 0 ≤ α < 1 the inflection is at
+/// infinity and there is no limit short of MAX_LOG_RATIO.
 const SATURATION: f64 = 40.0;
 
-/// A solved standard-form piece: θ ∈ [−θd, 0] or [0, θd], ascending.
+/// A solved standard-form piece: θ ascending from `start` to `end`.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Piece {
     pub(crate) form: StandardForm,
@@ -35,169 +43,248 @@ pub(crate) struct Piece {
     pub(crate) chord: Complex,
 }
 
-struct ChordAngle {
-    alpha: f64,
-    beta: f64,
-    theta_d: f64,
+/// Two pieces joined at the reference point; a piece with θ0 = 0 or θ1 = 0 is empty.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Pieces {
+    pub(crate) parts: [Piece; 2],
+}
+
+/// The search problem: slopes, turning of each piece, and the required angle from the
+/// start tangent (direction −θ0) to the chord, in [0, 2π).
+pub(crate) struct ChordAngle {
+    alpha: [f64; 2],
+    theta: [f64; 2],
     theta_e: f64,
-    range: (f64, f64),
-    /// Built on first use: the series path never needs it.
-    nodes: OnceCell<NodeCache>,
+    total: f64,
+    /// D_i = θ_i |α_i − 1| for a piece heading toward its singular point, else 0.
+    bound: [f64; 2],
+    d: f64,
+    /// Built on first use: the series path never needs them.
+    nodes: [OnceCell<NodeCache>; 2],
 }
 
 struct Eval {
     g: f64,
     slope: f64,
-    piece: Piece,
+    pieces: Pieces,
 }
 
 impl ChordAngle {
-    fn piece_stations(&self, mu: f64) -> (Station, Station) {
-        let (a, b, td) = (self.alpha, self.beta, self.theta_d);
-        let denom = expm1_ratio(-b * mu);
-        if a <= 1.0 {
-            let end = Station {
-                theta: td,
-                s: td * expm1_ratio(a * mu) / denom,
-                ln_rho: mu,
-            };
-            (Station::REFERENCE, end)
+    pub(crate) fn new(alpha: [f64; 2], theta: [f64; 2], theta_e: f64) -> Self {
+        let bound = [
+            if alpha[0] > 1.0 {
+                theta[0] * (alpha[0] - 1.0)
+            } else {
+                0.0
+            },
+            if alpha[1] < 1.0 {
+                theta[1] * (1.0 - alpha[1])
+            } else {
+                0.0
+            },
+        ];
+        ChordAngle {
+            alpha,
+            theta,
+            theta_e,
+            total: theta[0] + theta[1],
+            bound,
+            d: bound[0].max(bound[1]),
+            nodes: [OnceCell::new(), OnceCell::new()],
+        }
+    }
+
+    /// The far station of piece `i` (θ = −θ0 or θ1) for Λ, with w = ρ^(α−1) there taken
+    /// from the exact w_bind = e^{−Dμ/Θ} when the piece heads toward its singular point.
+    fn station(&self, i: usize, lambda: f64, w_bind: f64) -> Station {
+        let alpha = self.alpha[i];
+        let theta = if i == 0 {
+            -self.theta[0]
         } else {
-            let start = Station {
-                theta: -td,
-                s: -td * expm1_ratio(-a * mu) / denom,
-                ln_rho: -mu,
-            };
-            (start, Station::REFERENCE)
+            self.theta[1]
+        };
+        let x = (alpha - 1.0) * lambda * theta;
+        // w = 1 − (D_i/D)(1 − w_bind), a sum of two non-negative terms.
+        let w = if self.bound[i] > 0.0 {
+            let r = self.bound[i] / self.d;
+            (1.0 - r) + r * w_bind
+        } else {
+            1.0 + x
+        };
+        let (ln_rho, per_lambda) = if w < 0.5 {
+            let u = w.ln() / (alpha - 1.0);
+            (u, u / lambda)
+        } else {
+            let lr = ln1p_ratio(x);
+            (lambda * theta * lr, theta * lr)
+        };
+        Station {
+            theta,
+            s: per_lambda * expm1_ratio(alpha * ln_rho),
+            ln_rho,
         }
     }
 
     fn eval(&self, mu: f64) -> Eval {
-        let lambda = mu * expm1_ratio(-self.beta * mu) / self.theta_d;
-        let form = StandardForm {
-            alpha: self.alpha,
-            lambda,
-        };
-        let (start, end) = self.piece_stations(mu);
-        let nodes = self
-            .nodes
-            .get_or_init(|| NodeCache::new(self.range.0, self.range.1));
-        let integral = integrate_with(&form, &start, &end, true, Some(nodes));
-        let p = integral.value;
-        let offset = if self.alpha > 1.0 { self.theta_d } else { 0.0 };
-        let phi = p.arg() + offset;
-        let dphi_dlambda = (p.conj() * integral.d_lambda).im / p.norm_sqr();
-        let dlambda_dmu = (-self.beta * mu).exp() / self.theta_d;
+        let k = self.d / self.total;
+        let lambda = mu * expm1_ratio(-k * mu) / self.total;
+        let w_bind = (-k * mu).exp();
+        let mut parts = [Piece {
+            form: StandardForm {
+                alpha: self.alpha[0],
+                lambda,
+            },
+            start: Station::REFERENCE,
+            end: Station::REFERENCE,
+            chord: Complex::ZERO,
+        }; 2];
+        let (mut p, mut dp) = (Complex::ZERO, Complex::ZERO);
+        for (i, part) in parts.iter_mut().enumerate() {
+            let form = StandardForm {
+                alpha: self.alpha[i],
+                lambda,
+            };
+            part.form = form;
+            if self.theta[i] <= 0.0 {
+                continue;
+            }
+            let far = self.station(i, lambda, w_bind);
+            let (a, b) = if i == 0 {
+                (far, Station::REFERENCE)
+            } else {
+                (Station::REFERENCE, far)
+            };
+            let nodes = self.nodes[i].get_or_init(|| NodeCache::new(a.theta, b.theta));
+            let integral = integrate_with(&form, &a, &b, true, Some(nodes));
+            part.start = a;
+            part.end = b;
+            part.chord = integral.value;
+            p += integral.value;
+            dp += integral.d_lambda;
+        }
+        let phi = (p.arg() + self.theta[0]).rem_euclid(std::f64::consts::TAU);
+        let dphi_dlambda = (p.conj() * dp).im / p.norm_sqr();
+        let dlambda_dmu = w_bind / self.total;
         Eval {
             g: phi - self.theta_e,
             slope: dphi_dlambda * dlambda_dmu,
-            piece: Piece {
-                form,
-                start,
-                end,
-                chord: p,
-            },
+            pieces: Pieces { parts },
         }
     }
 
-    /// g and dg/dμ at μ = 0 (the circle) in closed form.
+    /// g and dg/dμ at μ = 0 (both pieces arcs of the unit circle) in closed form.
     fn at_circle(&self) -> (f64, f64) {
-        let td = self.theta_d;
-        let (a, b) = if self.alpha > 1.0 {
-            (-td, 0.0)
-        } else {
-            (0.0, td)
-        };
+        let (a, b) = (-self.theta[0], self.theta[1]);
         // ∫ e^{iψ} = −i[e^{iψ}], ∫ ψ e^{iψ} = [e^{iψ}(1 − iψ)].
         let p = (Complex::cis(b) - Complex::cis(a)).mul_i().scale(-1.0);
         let prim = |x: f64| Complex::cis(x) * Complex::new(1.0, -x);
         let dp = prim(b) - prim(a);
-        let slope = (p.conj() * dp).im / p.norm_sqr() / td;
-        (td / 2.0 - self.theta_e, slope)
+        let slope = (p.conj() * dp).im / p.norm_sqr() / self.total;
+        (0.5 * self.total - self.theta_e, slope)
+    }
+
+    /// Where the search may stop growing μ, and whether that is a limit of the family
+    /// (true) or of floating point (false).
+    fn mu_max(&self) -> (f64, bool) {
+        if self.d <= 0.0 {
+            return (MAX_LOG_RATIO, false);
+        }
+        // The binding piece (the one with the larger bound) sets the saturation rate.
+        let i = if self.bound[0] >= self.bound[1] { 0 } else { 1 };
+        let alpha = self.alpha[i];
+        let rate = if alpha > 1.0 {
+            1.0
+        } else if alpha < 0.0 {
+            (-alpha / (1.0 - alpha)).min(1.0)
+        } else {
+            return (MAX_LOG_RATIO, false);
+        };
+        let mu = SATURATION * self.total / (self.d * rate);
+        if mu < MAX_LOG_RATIO {
+            (mu, true)
+        } else {
+            (MAX_LOG_RATIO, false)
+        }
+    }
+
+    /// Find μ, hence Λ, such that the chord angle is θe. Requires Θ/2 ≤ θe.
+    pub(crate) fn solve(&self) -> Result<Pieces> {
+        // An isosceles configuration is a circular arc for every α.
+        if self.theta_e - 0.5 * self.total <= 4.0 * f64::EPSILON * self.total {
+            return Ok(self.eval(0.0).pieces);
+        }
+        let (mu_max, is_limit) = self.mu_max();
+        let not_drawable = |top: &Eval| {
+            Error::NotDrawable(if is_limit {
+                NotDrawable::ChordAngleTooLarge {
+                    alpha: if self.bound[0] >= self.bound[1] {
+                        self.alpha[0]
+                    } else {
+                        self.alpha[1]
+                    },
+                    theta_e: self.theta_e,
+                    max: self.theta_e + top.g,
+                }
+            } else {
+                NotDrawable::CurvatureRatioTooLarge {
+                    alpha: self.alpha[1],
+                    max_log_ratio: MAX_LOG_RATIO,
+                }
+            })
+        };
+        // Newton from the circle end. g is increasing; the bracket [lo, hi] only shrinks and
+        // its top is evaluated only if an iterate wants to go there.
+        let (mut lo, mut hi, mut top_known) = (0.0, mu_max, false);
+        let (g0, slope0) = self.at_circle();
+        let (mut mu, mut g, mut slope) = (0.0, g0, slope0);
+        let tolerance = 4.0 * f64::EPSILON * self.total;
+        for _ in 0..200 {
+            let newton = mu - g / slope;
+            let next = if slope > 0.0 && newton > lo && newton < hi {
+                newton
+            } else if !top_known && hi == mu_max {
+                hi
+            } else if hi > 4.0 * (lo + 1.0) {
+                // Far from the root with a wide bracket: grow geometrically, not by halves.
+                4.0 * (lo + 1.0)
+            } else {
+                0.5 * (lo + hi)
+            };
+            let step = next - mu;
+            let e = self.eval(next);
+            if next == mu_max {
+                top_known = true;
+                if e.g < 0.0 {
+                    return Err(not_drawable(&e));
+                }
+            }
+            if e.g < 0.0 {
+                lo = next;
+            } else {
+                hi = next;
+            }
+            (mu, g, slope) = (next, e.g, e.slope);
+            // Newton converges quadratically: after a step of 1e-9 the error is ~1e-18.
+            let converged = g.abs() <= tolerance
+                || (next != mu_max && step.abs() <= 1e-9 * mu.max(1.0) && newton == next)
+                || hi - lo <= 1e-15 * hi.max(1.0);
+            if converged {
+                return Ok(e.pieces);
+            }
+        }
+        Ok(self.eval(mu).pieces)
     }
 }
 
-/// Find the piece whose chord angle at its start is `theta_e`, for turning `theta_d`.
-///
-/// Requires 0 < θd < π and θd/2 ≤ θe < θd (the caller has put the shorter leg first).
+/// Find the single piece whose chord angle at its start is `theta_e`, for turning
+/// `theta_d`. Requires 0 < θd < π and θd/2 ≤ θe < θd (the shorter leg first).
 pub(crate) fn solve(alpha: f64, theta_d: f64, theta_e: f64) -> Result<Piece> {
-    let range = if alpha > 1.0 {
-        (-theta_d, 0.0)
+    // ρ = 1 at the end that stays regular as Λ grows (SPEC §3 step 4).
+    let (theta, i) = if alpha > 1.0 {
+        ([theta_d, 0.0], 0)
     } else {
-        (0.0, theta_d)
+        ([0.0, theta_d], 1)
     };
-    let problem = ChordAngle {
-        alpha,
-        beta: (alpha - 1.0).abs(),
-        theta_d,
-        theta_e,
-        range,
-        nodes: OnceCell::new(),
-    };
-    // An isosceles triangle is a circular arc for every α.
-    if theta_e - 0.5 * theta_d <= 4.0 * f64::EPSILON * theta_d {
-        return Ok(problem.eval(0.0).piece);
-    }
-    let mu_max = if alpha < 0.0 {
-        MAX_LOG_RATIO.min(SATURATION / -alpha)
-    } else if alpha > 1.0 {
-        MAX_LOG_RATIO.min(SATURATION / (alpha - 1.0))
-    } else {
-        MAX_LOG_RATIO
-    };
-    let not_drawable = |top: &Eval| {
-        Error::NotDrawable(if mu_max < MAX_LOG_RATIO {
-            NotDrawable::ChordAngleTooLarge {
-                alpha,
-                theta_e,
-                max: theta_e + top.g,
-            }
-        } else {
-            NotDrawable::CurvatureRatioTooLarge {
-                alpha,
-                max_log_ratio: MAX_LOG_RATIO,
-            }
-        })
-    };
-    // Newton from the circle end. g is increasing; the bracket [lo, hi] only shrinks and
-    // its top is evaluated only if an iterate wants to go there.
-    let (mut lo, mut hi, mut top_known) = (0.0, mu_max, false);
-    let (g0, slope0) = problem.at_circle();
-    let (mut mu, mut g, mut slope) = (0.0, g0, slope0);
-    let tolerance = 4.0 * f64::EPSILON * theta_d;
-    for _ in 0..200 {
-        let newton = mu - g / slope;
-        let next = if slope > 0.0 && newton > lo && newton < hi {
-            newton
-        } else if !top_known && hi == mu_max {
-            hi
-        } else if hi > 4.0 * (lo + 1.0) {
-            // Far from the root with a wide bracket: grow geometrically, not by halves.
-            4.0 * (lo + 1.0)
-        } else {
-            0.5 * (lo + hi)
-        };
-        let step = next - mu;
-        let e = problem.eval(next);
-        if next == mu_max {
-            top_known = true;
-            if e.g < 0.0 {
-                return Err(not_drawable(&e));
-            }
-        }
-        if e.g < 0.0 {
-            lo = next;
-        } else {
-            hi = next;
-        }
-        (mu, g, slope) = (next, e.g, e.slope);
-        // Newton converges quadratically: after a step of 1e-9 the error is ~1e-18.
-        let converged = g.abs() <= tolerance
-            || (next != mu_max && step.abs() <= 1e-9 * mu.max(1.0) && newton == next)
-            || hi - lo <= 1e-15 * hi.max(1.0);
-        if converged {
-            return Ok(e.piece);
-        }
-    }
-    Ok(problem.eval(mu).piece)
+    let pieces = ChordAngle::new([alpha, alpha], theta, theta_e).solve()?;
+    Ok(pieces.parts[i])
 }

@@ -146,7 +146,7 @@ fn series(
         q += unit.scale(d);
         hi *= sigma_far;
         lo *= sigma_near;
-        if k as f64 > sigma_far && term.norm_sqr() <= 1e-36 * sum.norm_sqr() {
+        if k as f64 > sigma_far && term.norm_max() <= 1e-18 * sum.norm_max() {
             break;
         }
     }

@@ -93,6 +93,12 @@ impl Complex {
         self.re * self.re + self.im * self.im
     }
 
+    /// max(|re|, |im|): a norm that cannot overflow, within √2 of |z|.
+    #[inline]
+    pub(crate) fn norm_max(self) -> f64 {
+        self.re.abs().max(self.im.abs())
+    }
+
     #[inline]
     pub(crate) fn arg(self) -> f64 {
         self.im.atan2(self.re)
@@ -104,13 +110,20 @@ impl Complex {
         Complex::new(-self.im, self.re)
     }
 
+    /// Division by Smith's method, which never forms |d|² and so neither overflows nor
+    /// underflows for divisors up to the largest finite magnitudes (standard-form chords
+    /// reach 1e260 when the curvature ratio does).
     #[inline]
     pub(crate) fn div(self, d: Complex) -> Self {
-        let n = d.norm_sqr();
-        Complex::new(
-            (self.re * d.re + self.im * d.im) / n,
-            (self.im * d.re - self.re * d.im) / n,
-        )
+        if d.re.abs() >= d.im.abs() {
+            let r = d.im / d.re;
+            let den = d.re + d.im * r;
+            Complex::new((self.re + self.im * r) / den, (self.im - self.re * r) / den)
+        } else {
+            let r = d.re / d.im;
+            let den = d.re * r + d.im;
+            Complex::new((self.re * r + self.im) / den, (self.im * r - self.re) / den)
+        }
     }
 }
 
@@ -171,6 +184,15 @@ mod tests {
         assert!((got - exact).abs() < 4e-16 * exact.abs(), "{got}");
         // A plain evaluation is wrong from the 11th digit on.
         assert!(((a * b * c).ln_1p() - exact).abs() > 1e-11);
+    }
+
+    #[test]
+    fn division_survives_huge_divisors() {
+        let big = Complex::new(3e200, 4e200);
+        let q = Complex::new(6.0, 8.0).div(big);
+        assert!((q.re - 2e-200).abs() < 1e-215 && q.im.abs() < 1e-215);
+        let q = Complex::new(1.0, 2.0).div(Complex::new(0.0, 2.0));
+        assert_eq!((q.re, q.im), (1.0, -0.5));
     }
 
     #[test]

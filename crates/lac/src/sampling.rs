@@ -48,25 +48,38 @@ impl Segment {
     /// and the last at the last.
     pub fn sample_by_arc_length(&self, n: usize) -> Result<Vec<Sample>> {
         check_count(n)?;
-        // Standard-form arc length between samples; each sample is placed from the nearer
-        // end, where ρ is known exactly (see `Segment::station_at_s`).
-        let step = (self.last.s - self.first.s) / (n - 1) as f64;
+        let len = self.arc_length();
+        let step = len / (n - 1) as f64;
+        let at: Vec<f64> = (0..n)
+            .map(|i| if i == n - 1 { len } else { i as f64 * step })
+            .collect();
+        self.samples_at_arc_lengths(&at)
+    }
+
+    /// Samples at the given ascending arc lengths (caller's units, within [0, arc_length]).
+    pub(crate) fn samples_at_arc_lengths(&self, at: &[f64]) -> Result<Vec<Sample>> {
+        if at.is_empty() {
+            return Ok(Vec::new());
+        }
+        // Each sample is placed from the nearer end, where ρ is known exactly (see
+        // `Segment::station_at_s`), in standard-form arc length.
+        let (len, k) = (self.arc_length(), self.dir() / self.scale());
         let (head, tail) = (
             Anchor::new(&self.form, self.first),
             Anchor::new(&self.form, self.last),
         );
-        let half = (n - 1) / 2;
-        let nodes: Vec<Node> = (0..n)
-            .map(|i| {
-                let node = if i <= half {
-                    head.advance_s(&self.form, i as f64 * step)
+        let nodes: Vec<Node> = at
+            .iter()
+            .map(|&s| {
+                let node = if s <= 0.5 * len {
+                    head.advance_s(&self.form, k * s)
                 } else {
-                    tail.advance_s(&self.form, -((n - 1 - i) as f64) * step)
+                    tail.advance_s(&self.form, -k * (len - s))
                 };
                 node.ok_or(Error::OutOfRange {
-                    name: "samples",
-                    value: n as f64,
-                    expected: "a sample count whose stations stay inside the curve",
+                    name: "s",
+                    value: s,
+                    expected: "arc lengths between 0 and arc_length()",
                 })
             })
             .collect::<Result<_>>()?;
@@ -279,7 +292,7 @@ impl Segment {
         }
         // The order-9 rule's error is about |order11 − order9|; order 11's is smaller by
         // about (hκ)²/600, and a difference below 1e-11·h implies hκ < 0.85.
-        if (order11 - order9).norm_sqr() <= 1e-22 * h * h {
+        if (order11 - order9).norm_max() <= 0.7e-11 * h.abs() {
             return order11;
         }
         let mid = match self.form.advance_s(&a.st, 0.5 * h) {

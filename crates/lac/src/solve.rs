@@ -163,7 +163,8 @@ impl ChordAngle {
             dp += integral.d_lambda;
         }
         let phi = (p.arg() + self.theta[0]).rem_euclid(std::f64::consts::TAU);
-        let dphi_dlambda = (p.conj() * dp).im / p.norm_sqr();
+        // dφ/dΛ = Im(P′/P), divided without forming |P|² (P reaches 1e260).
+        let dphi_dlambda = dp.div(p).im;
         let dlambda_dmu = w_bind / self.total;
         Eval {
             g: phi - self.theta_e,

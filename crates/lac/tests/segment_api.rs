@@ -233,3 +233,18 @@ fn the_evolute_is_at_distance_rho_along_the_normal() {
         assert!(s.tangent().cross(d) * s.kappa > 0.0);
     }
 }
+
+/// A near-reversal polygon with α = 1 has a standard-form chord of ~1e215; dividing by it
+/// once squared its norm and overflowed, collapsing the curve to a point.
+#[test]
+fn huge_curvature_ratios_keep_their_scale() {
+    let pts = [
+        Point::new(-1.0, 0.0),
+        Point::new(-1.336_953_595_120_045_3, -0.014_620_700_738_368_487),
+        Point::new(1.0, 0.0),
+    ];
+    let seg = Segment::from_control_points(pts, 1.0).unwrap();
+    assert!(seg.arc_length() > 2.0 && seg.curvature_start().is_finite());
+    let samples = seg.sample_by_arc_length(5).unwrap();
+    assert!((samples[4].point - pts[2]).hypot() < 1e-12);
+}

@@ -44,6 +44,18 @@ pub enum Error {
          move the middle point off the line through the other two"
     )]
     CollinearPoints,
+    /// The control polygon turns left at one vertex and right at another: a log-aesthetic
+    /// curve (or compound curve) has monotone curvature of one sign and no inflection.
+    #[error(
+        "the control polygon turns {first} at P1 but {second} at P2; a log-aesthetic curve \
+         cannot have an inflection: move P1 or P2 so that the polygon turns one way only"
+    )]
+    InflectedPolygon {
+        /// Turning direction at the first inner vertex ("left" or "right").
+        first: &'static str,
+        /// Turning direction at the second inner vertex.
+        second: &'static str,
+    },
     /// A parameter is outside the range the operation accepts.
     #[error("{name} = {value} is out of range: {expected}")]
     OutOfRange {
@@ -66,6 +78,7 @@ impl Error {
             Error::NonFinite { .. } => "non_finite",
             Error::CoincidentPoints { .. } => "coincident_points",
             Error::CollinearPoints => "collinear_points",
+            Error::InflectedPolygon { .. } => "inflected_polygon",
             Error::OutOfRange { .. } => "out_of_range",
             Error::NotDrawable(_) => "not_drawable",
         }
@@ -86,6 +99,14 @@ pub enum NotDrawable {
         theta_e: f64,
         /// The largest angle this α can make for this turning angle, radians.
         max: f64,
+    },
+    /// The chord from the first to the last point leaves the first point outside the angle
+    /// swept by the tangents (possible with four control points): no convex curve fits.
+    ChordOutsideTangents {
+        /// Angle from the start tangent to the chord, in the turning direction, radians.
+        theta_e: f64,
+        /// Total turning of the control polygon, radians.
+        turning: f64,
     },
     /// A segment exists in theory, but the radius of curvature would vary by more than
     /// `e^max_log_ratio` along it, which floating point cannot represent.
@@ -112,6 +133,14 @@ impl fmt::Display for NotDrawable {
                  the end points (a more isosceles triangle), or choose alpha between 0 and 1",
                 max.to_degrees(),
                 theta_e.to_degrees()
+            ),
+            NotDrawable::ChordOutsideTangents { theta_e, turning } => write!(
+                f,
+                "the chord P3 - P0 makes {:.4} deg with the start tangent, outside the \
+                 {:.4} deg swept by the tangents; move P3 (or P0) so that the chord lies \
+                 between the start and end tangent directions",
+                theta_e.to_degrees(),
+                turning.to_degrees()
             ),
             NotDrawable::CurvatureRatioTooLarge {
                 alpha,

@@ -10,7 +10,10 @@
 //!   [`Classification`] of seed 000 Table 2;
 //! * [`Segment`]: a segment drawn from three control points and α, with evaluation,
 //!   sampling (by arc length, by tangent angle, adaptively) and the evolute;
-//! * [`region`]: the drawable region of seed 000 Fig. 9.
+//! * [`CompoundCurve`]: two pieces of slopes α0 and α1 joined with G3 continuity, from
+//!   three control points and a turning ratio (seed 004) or from four control points
+//!   (seed 002), with the logarithmic curvature graph of each piece ([`LcgLine`]);
+//! * [`region`]: the drawable region of seed 000 Fig. 9, and of compound curves.
 //!
 //! The crate does no I/O. Signed curvature is positive for left turns.
 //!
@@ -29,10 +32,12 @@
 //! assert!(seg.curvature_start() < 0.0);
 //! ```
 
+mod compound;
 mod error;
 mod gauss;
 mod integrate;
 mod kurbo_impl;
+mod lcg;
 mod numeric;
 pub mod region;
 mod sampling;
@@ -40,8 +45,10 @@ mod segment;
 mod solve;
 mod standard_form;
 
+pub use compound::CompoundCurve;
 pub use error::{Error, NotDrawable, Result};
 pub use kurbo_impl::SegmentDerivative;
+pub use lcg::LcgLine;
 pub use sampling::Sample;
 pub use segment::Segment;
 pub use standard_form::{Classification, InfiniteRadiusEnd, StandardForm, ZeroRadiusEnd};

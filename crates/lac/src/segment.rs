@@ -8,6 +8,55 @@ use crate::numeric::Complex;
 use crate::solve::{solve, Piece};
 use crate::standard_form::{StandardForm, Station};
 
+/// The angles of a three-point control polygon (SPEC §3 steps 1 and 3).
+pub(crate) struct Triangle {
+    /// Turning angle θd ∈ (0, π).
+    pub(crate) turning: f64,
+    /// The polygon turns left.
+    pub(crate) left: bool,
+    /// Direction of P1 − P0.
+    pub(crate) theta_first: f64,
+    /// Angle at P0 between P1 − P0 and P2 − P0, in (0, θd).
+    pub(crate) theta_e: f64,
+}
+
+/// Validate three control points and measure their triangle.
+pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
+    const NAMES: [[&str; 2]; 3] = [["P0.x", "P0.y"], ["P1.x", "P1.y"], ["P2.x", "P2.y"]];
+    for (p, names) in points.iter().zip(NAMES) {
+        finite(names[0], p.x)?;
+        finite(names[1], p.y)?;
+    }
+    for (i, j) in [(0, 1), (1, 2), (0, 2)] {
+        if points[i] == points[j] {
+            return Err(Error::CoincidentPoints {
+                first: i,
+                second: j,
+            });
+        }
+    }
+    let [p0, p1, p2] = points;
+    let (u, v, c) = (p1 - p0, p2 - p1, p2 - p0);
+    if !(u.hypot().is_finite() && v.hypot().is_finite() && c.hypot().is_finite()) {
+        return Err(Error::OutOfRange {
+            name: "control points",
+            value: f64::INFINITY,
+            expected: "coordinates whose differences do not overflow",
+        });
+    }
+    let cross = u.cross(v);
+    let turning = cross.abs().atan2(u.dot(v));
+    if !(turning > 1e-13 && turning < std::f64::consts::PI - 1e-13) {
+        return Err(Error::CollinearPoints);
+    }
+    Ok(Triangle {
+        turning,
+        left: cross > 0.0,
+        theta_first: u.atan2(),
+        theta_e: u.cross(c).abs().atan2(u.dot(c)),
+    })
+}
+
 /// A planar log-aesthetic curve segment defined like a quadratic Bézier curve: it starts
 /// at `P0` tangent to `P1 − P0` and ends at `P2` tangent to `P2 − P1` (seed 000 §4.1).
 ///
@@ -67,49 +116,25 @@ impl Segment {
     /// points, or [`Error::NotDrawable`] when no segment of this α fits the triangle.
     pub fn from_control_points(points: [Point; 3], alpha: f64) -> Result<Segment> {
         finite("alpha", alpha)?;
-        const NAMES: [[&str; 2]; 3] = [["P0.x", "P0.y"], ["P1.x", "P1.y"], ["P2.x", "P2.y"]];
-        for (p, names) in points.iter().zip(NAMES) {
-            finite(names[0], p.x)?;
-            finite(names[1], p.y)?;
-        }
-        let [p0, p1, p2] = points;
-        for (i, j) in [(0, 1), (1, 2), (0, 2)] {
-            if points[i] == points[j] {
-                return Err(Error::CoincidentPoints {
-                    first: i,
-                    second: j,
-                });
-            }
-        }
-        let (u, v) = (p1 - p0, p2 - p1);
-        if !(u.hypot().is_finite() && v.hypot().is_finite() && (p2 - p0).hypot().is_finite()) {
-            return Err(Error::OutOfRange {
-                name: "control points",
-                value: f64::INFINITY,
-                expected: "coordinates whose differences do not overflow",
-            });
-        }
-        let cross = u.cross(v);
-        let left = cross > 0.0;
-        let turning = cross.abs().atan2(u.dot(v));
-        if !(turning > 1e-13 && turning < std::f64::consts::PI - 1e-13) {
-            return Err(Error::CollinearPoints);
-        }
-        // The shorter leg goes first (SPEC §3 step 2).
+        let tri = control_triangle(points)?;
+        // The shorter leg goes first (SPEC §3 step 2): there the angle is at least θd/2.
+        let (u, v) = (points[1] - points[0], points[2] - points[1]);
         let reversed = u.hypot() > v.hypot();
-        let (a, b, c) = if reversed { (p2, p1, p0) } else { (p0, p1, p2) };
-        let (ab, ac) = (b - a, c - a);
-        let theta_e = ab.cross(ac).abs().atan2(ab.dot(ac)).max(0.5 * turning);
-        let piece = solve(alpha, turning, theta_e)?;
+        let theta_e = if reversed {
+            tri.turning - tri.theta_e
+        } else {
+            tri.theta_e
+        };
+        let piece = solve(alpha, tri.turning, theta_e.max(0.5 * tri.turning))?;
         Ok(Self::from_piece(
             piece,
             alpha,
-            p0,
-            p2,
-            left,
+            points[0],
+            points[2],
+            tri.left,
             reversed,
-            turning,
-            u.atan2(),
+            tri.turning,
+            tri.theta_first,
         ))
     }
 

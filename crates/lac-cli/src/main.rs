@@ -1,1 +1,55 @@
-fn main() {}
+//! The `lac` command: log-aesthetic curve segments and drawable regions.
+//!
+//! `lac segment` solves a segment from three control points and α and prints its samples
+//! as JSON, CSV or SVG, one at a time or in batches of JSON lines; `lac region` maps the
+//! drawable region of seed 000 Fig. 9. Failures are one line of JSON on standard error:
+//! `{"error":{"kind":…,"message":…}}`, exit code 2 for invalid input, 3 for
+//! "not drawable", 1 for I/O. See `lac --help`.
+
+mod batch;
+mod cli;
+mod failure;
+mod output;
+mod points;
+mod region;
+mod report;
+mod segment;
+mod svg;
+
+use std::process::ExitCode;
+
+use clap::error::ErrorKind;
+use clap::Parser;
+
+use cli::{Cli, Command};
+use failure::Failure;
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(err)
+            if matches!(
+                err.kind(),
+                ErrorKind::DisplayHelp | ErrorKind::DisplayVersion
+            ) =>
+        {
+            let _ = err.print();
+            return ExitCode::SUCCESS;
+        }
+        Err(err) => return fail(&failure::from_clap(&err)),
+    };
+    let result = match &cli.command {
+        Command::Segment(args) => segment::run(args),
+        Command::Region(args) => region::run(args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(failure) => fail(&failure),
+    }
+}
+
+/// Report `failure` on standard error as one line of JSON and return its exit code.
+fn fail(failure: &Failure) -> ExitCode {
+    eprintln!("{}", failure.to_json_line());
+    ExitCode::from(failure.exit_code())
+}

@@ -1,0 +1,100 @@
+//! Parsing the `--points` argument: three points "x,y" separated by spaces and/or semicolons.
+
+use kurbo::Point;
+
+use crate::failure::Failure;
+
+/// Parse exactly three points "x0,y0 x1,y1 x2,y2".
+///
+/// Spaces and semicolons separate points; spaces around a comma are allowed ("1, 2; 3, 4").
+/// Numbers are read by Rust's `f64` parser, so "nan" and "inf" parse and are rejected later
+/// by the library with the name of the coordinate.
+pub(crate) fn parse_points(text: &str) -> Result<[Point; 3], Failure> {
+    let tight = tighten_commas(text);
+    let tokens: Vec<&str> = tight
+        .split(|c: char| c == ';' || c.is_whitespace())
+        .filter(|t| !t.is_empty())
+        .collect();
+    let [a, b, c] = tokens[..] else {
+        return Err(Failure::invalid_input(format!(
+            "expected exactly 3 points \"x,y\" separated by spaces or semicolons, got {} in {text:?}",
+            tokens.len()
+        )));
+    };
+    Ok([parse_point(a, 0)?, parse_point(b, 1)?, parse_point(c, 2)?])
+}
+
+/// Remove whitespace on either side of each comma, so "1 , 2" reads as one point.
+fn tighten_commas(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut after_comma = false;
+    for ch in text.chars() {
+        if ch == ',' {
+            out.truncate(out.trim_end().len());
+            after_comma = true;
+            out.push(ch);
+        } else if !(after_comma && ch.is_whitespace()) {
+            after_comma = false;
+            out.push(ch);
+        }
+    }
+    out
+}
+
+fn parse_point(token: &str, index: usize) -> Result<Point, Failure> {
+    let bad = |why: &str| {
+        Failure::invalid_input(format!(
+            "control point P{index} {token:?}: {why}; write each point as \"x,y\""
+        ))
+    };
+    let (x, y) = token.split_once(',').ok_or_else(|| bad("no comma"))?;
+    let x: f64 = x.parse().map_err(|_| bad("x is not a number"))?;
+    let y: f64 = y.parse().map_err(|_| bad("y is not a number"))?;
+    Ok(Point::new(x, y))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spaces_semicolons_and_negative_numbers_all_separate_points() {
+        let want = [
+            Point::new(-1.0, 0.0),
+            Point::new(0.2, 0.8),
+            Point::new(1.0, -0.5),
+        ];
+        for text in [
+            "-1,0 0.2,0.8 1,-0.5",
+            "-1,0;0.2,0.8;1,-0.5",
+            " -1 , 0 ; 0.2, 0.8 ;  1 ,-0.5 ",
+            "-1e0,0\t2e-1,8e-1\n1,-.5",
+        ] {
+            assert_eq!(parse_points(text).unwrap(), want, "{text:?}");
+        }
+    }
+
+    #[test]
+    fn wrong_count_and_bad_numbers_are_invalid_input() {
+        for text in [
+            "",
+            "0,0 1,1",
+            "0,0 1,1 2,0 3,3",
+            "0,0 1;1 2,0",
+            "0,0 1,x 2,0",
+            "0,0 1,1,1 2,0",
+        ] {
+            assert_eq!(
+                parse_points(text).unwrap_err().kind,
+                "invalid_input",
+                "{text:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn nan_parses_so_the_library_can_name_the_coordinate() {
+        let p = parse_points("nan,0 1,1 2,0").unwrap();
+        assert!(p[0].x.is_nan());
+    }
+}

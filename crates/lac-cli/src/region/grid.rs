@@ -1,0 +1,42 @@
+//! Computing the drawable-region map, one rayon task per row.
+
+use std::io::IsTerminal;
+
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+
+/// Rows top (y = +1) to bottom of a `size`×`size` map: `true` where a segment of slope
+/// `alpha` exists for the pixel's centre as middle control point.
+///
+/// Shows a progress bar on standard error when it is a terminal, never in pipes or CI.
+pub(crate) fn drawable_rows(alpha: f64, size: usize) -> Vec<Vec<bool>> {
+    let progress = progress_bar(size);
+    let rows = (0..size)
+        .into_par_iter()
+        .map(|row| {
+            let pixels = lac::region::row(alpha, size, row);
+            progress.inc(1);
+            pixels
+        })
+        .collect();
+    progress.finish_and_clear();
+    rows
+}
+
+fn progress_bar(rows: usize) -> ProgressBar {
+    if !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::new(rows as u64);
+    if let Ok(style) = ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {eta} left") {
+        bar.set_style(style);
+    }
+    bar
+}
+
+/// The share of `true` pixels.
+pub(crate) fn fraction(rows: &[Vec<bool>]) -> f64 {
+    let total: usize = rows.iter().map(Vec::len).sum();
+    let drawable: usize = rows.iter().flatten().filter(|&&d| d).count();
+    drawable as f64 / total.max(1) as f64
+}

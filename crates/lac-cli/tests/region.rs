@@ -1,0 +1,109 @@
+//! `lac region`: the drawable region as a JSON grid and as a PNG.
+
+mod common;
+
+use common::{assert_failure, json, lac};
+
+#[test]
+fn json_is_a_size_by_size_grid_mostly_drawable_for_alpha_between_0_and_1() {
+    let run = lac(&[
+        "region", "--alpha", "0.5", "--size", "16", "--format", "json",
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let v = json(&run);
+    assert_eq!(v["size"], 16);
+    assert_eq!(v["extent"], serde_json::json!([-1.0, 1.0, -1.0, 1.0]));
+    assert_eq!(v["first"], serde_json::json!([-1.0, 0.0]));
+    assert_eq!(v["last"], serde_json::json!([1.0, 0.0]));
+    let rows = v["drawable"].as_array().unwrap();
+    assert_eq!(rows.len(), 16);
+    assert!(rows.iter().all(|r| r.as_array().unwrap().len() == 16));
+    let fraction = v["drawable_fraction"].as_f64().unwrap();
+    assert!(fraction > 0.9, "{fraction}");
+}
+
+#[test]
+fn the_clothoid_region_excludes_the_sides_and_the_axis() {
+    let v = json(&lac(&[
+        "region", "--alpha", "-1", "--size", "15", "--format", "json",
+    ]));
+    let rows = v["drawable"].as_array().unwrap();
+    let at = |r: usize, c: usize| rows[r][c].as_bool().unwrap();
+    assert!(at(3, 7), "above the middle of the chord");
+    assert!(!at(3, 0) && !at(3, 14), "far to the sides");
+    assert!(
+        (0..15).all(|c| !at(7, c)),
+        "the middle row is y = 0: collinear"
+    );
+    let fraction = v["drawable_fraction"].as_f64().unwrap();
+    assert!(fraction > 0.2 && fraction < 0.8, "{fraction}");
+}
+
+#[test]
+fn png_is_valid_grayscale_and_matches_the_json_grid() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("region.png");
+    let run = lac(&[
+        "region",
+        "--alpha",
+        "-1",
+        "--size",
+        "24",
+        "-o",
+        path.to_str().unwrap(),
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let bytes = std::fs::read(&path).unwrap();
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    let mut reader = png::Decoder::new(std::io::Cursor::new(bytes))
+        .read_info()
+        .unwrap();
+    let mut pixels = vec![0; reader.output_buffer_size().unwrap()];
+    let info = reader.next_frame(&mut pixels).unwrap();
+    assert_eq!((info.width, info.height), (24, 24));
+    assert_eq!(info.color_type, png::ColorType::Grayscale);
+    assert_eq!(info.bit_depth, png::BitDepth::Eight);
+
+    let v = json(&lac(&[
+        "region", "--alpha", "-1", "--size", "24", "--format", "json",
+    ]));
+    let grid: Vec<u8> = v["drawable"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|r| {
+            r.as_array()
+                .unwrap()
+                .iter()
+                .map(|d| if d.as_bool().unwrap() { 255 } else { 0 })
+        })
+        .collect();
+    assert_eq!(pixels[..24 * 24], grid[..]);
+}
+
+#[test]
+fn png_goes_to_standard_output_when_it_is_a_pipe() {
+    let run = lac(&["region", "--alpha", "0.5", "--size", "4"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert_eq!(&run.stdout_bytes[..8], b"\x89PNG\r\n\x1a\n");
+}
+
+#[test]
+fn size_and_alpha_are_checked() {
+    assert_failure(
+        &lac(&["region", "--alpha", "0.5", "--size", "0"]),
+        2,
+        "usage",
+    );
+    assert_failure(
+        &lac(&["region", "--alpha", "0.5", "--size", "8193"]),
+        2,
+        "usage",
+    );
+    assert_failure(
+        &lac(&["region", "--alpha", "nan", "--format", "json"]),
+        2,
+        "non_finite",
+    );
+    assert_failure(&lac(&["region"]), 2, "usage");
+}

@@ -2,10 +2,13 @@
 //!
 //! With the first control point at (−1, 0) and the last at (1, 0), the middle control
 //! point is moved over the square [−1, 1]²; a pixel is drawable when a segment of slope α
-//! exists for it. The functions here are pure; callers parallelise over rows.
+//! exists for it (or, for compound curves, a compound curve with slopes α0, α1 and turning
+//! ratio r_θ: the drawable regions seed 004 leaves open). The functions here are pure;
+//! callers parallelise over rows.
 
 use kurbo::Point;
 
+use crate::compound::CompoundCurve;
 use crate::error::Error;
 use crate::segment::Segment;
 
@@ -46,5 +49,24 @@ pub fn pixel_center(size: usize, row: usize, col: usize) -> Point {
 pub fn row(alpha: f64, size: usize, row: usize) -> Vec<bool> {
     (0..size)
         .map(|col| is_drawable(alpha, pixel_center(size, row, col)))
+        .collect()
+}
+
+/// Is there a compound-rhythm curve (seed 004) from (−1, 0) to (1, 0) with middle point
+/// `middle`, slopes `alpha0` (from the first point) and `alpha1`, and turning share `ratio`?
+///
+/// ```
+/// use kurbo::Point;
+/// use lac::region::is_drawable_compound;
+/// assert!(is_drawable_compound(-1.0, 2.0, 0.5, Point::new(0.0, 0.5)));
+/// ```
+pub fn is_drawable_compound(alpha0: f64, alpha1: f64, ratio: f64, middle: Point) -> bool {
+    CompoundCurve::from_three_points([FIRST, middle, LAST], alpha0, alpha1, ratio).is_ok()
+}
+
+/// One row of the compound-curve map: `true` where drawable.
+pub fn compound_row(alpha0: f64, alpha1: f64, ratio: f64, size: usize, row: usize) -> Vec<bool> {
+    (0..size)
+        .map(|col| is_drawable_compound(alpha0, alpha1, ratio, pixel_center(size, row, col)))
         .collect()
 }

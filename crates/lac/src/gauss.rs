@@ -1,7 +1,15 @@
-//! The 16-point Gauss–Legendre rule on [−1, 1].
+//! The 8- and 16-point Gauss–Legendre rules on [−1, 1].
 //!
-//! Generated at 40 digits by `tools/reference/gauss_table.py 16`; only the non-negative
-//! half of the symmetric rule is stored, as `(node, weight)`.
+//! Generated at 40 digits by `tools/reference/gauss_table.py N`; only the non-negative
+//! half of each symmetric rule is stored, as `(node, weight)`.
+
+/// Half of the 8-point Gauss–Legendre rule: `(x_i, w_i)` with `x_i > 0`.
+pub(crate) const GAUSS_8: [(f64, f64); 4] = [
+    (1.834_346_424_956_498e-1, 3.626_837_833_783_62e-1),
+    (5.255_324_099_163_29e-1, 3.137_066_458_778_873e-1),
+    (7.966_664_774_136_267e-1, 2.223_810_344_533_744_7e-1),
+    (9.602_898_564_975_363e-1, 1.012_285_362_903_762_6e-1),
+];
 
 /// Half of the 16-point Gauss–Legendre rule: `(x_i, w_i)` with `x_i > 0`.
 pub(crate) const GAUSS_16: [(f64, f64); 8] = [
@@ -18,6 +26,17 @@ pub(crate) const GAUSS_16: [(f64, f64); 8] = [
 #[cfg(test)]
 mod tests {
     use super::GAUSS_16;
+
+    #[test]
+    fn the_8_point_rule_integrates_x14_exactly() {
+        let w: f64 = super::GAUSS_8.iter().map(|&(_, w)| 2.0 * w).sum();
+        assert!((w - 2.0).abs() < 1e-15);
+        let i: f64 = super::GAUSS_8
+            .iter()
+            .map(|&(x, w)| 2.0 * w * x.powi(14))
+            .sum();
+        assert!((i - 2.0 / 15.0).abs() < 1e-15);
+    }
 
     #[test]
     fn weights_sum_to_two_and_integrate_x14_exactly() {

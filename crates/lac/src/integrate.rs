@@ -8,15 +8,19 @@
 //!   `Σₖ (∓i)^k/k! [ρ σ^(k+1)]/(k+1+γ)`, that is exact right up to the singular point.
 //!   It is used for the part of [a, b] within distance 4 of ψₛ (where the terms stay small,
 //!   so no precision is lost to cancellation).
-//! * Everywhere else: 16-point Gauss–Legendre on panels laid from the large-ρ end, each
-//!   narrow enough that ln ρ changes by at most `RATE_LIMIT` across it and the singular
-//!   point is at least half a panel away. Panels whose contribution is below 1e-17 of the
+//! * Everywhere else: Gauss–Legendre on panels laid from the large-ρ end, each narrow
+//!   enough that ln ρ changes by at most `RATE_LIMIT` across it and the singular point is
+//!   at least 4/3 of a panel away. A panel uses 8 nodes where the integrand is gentle
+//!   (phase and ln ρ together change by at most `EASY` per half panel, and the singular
+//!   point is 3 panels away: the rule's error is then below 1e-17), else 16. Panels whose contribution is below 1e-17 of the
 //!   total are skipped (α ≈ 1 with large Λ, where ρ spans hundreds of orders of magnitude).
 //!
 //! Both also return ∂/∂Λ of the integral (θ limits fixed), which the solver uses for Newton
 //! steps: ∂ρ/∂Λ = ρ ψ / (1 + (α−1)Λψ).
 
-use crate::gauss::GAUSS_16;
+use std::cell::OnceCell;
+
+use crate::gauss::{GAUSS_16, GAUSS_8};
 use crate::numeric::{expm1_ratio, ln1p_ratio, Complex};
 use crate::standard_form::{StandardForm, Station};
 
@@ -28,6 +32,23 @@ const RATE_LIMIT: f64 = 6.0;
 const DISTANCE_RATIO: f64 = 0.75;
 /// Widest Gauss panel, radians (keeps e^{iψ} well resolved).
 const MAX_PANEL: f64 = 2.5;
+/// The 8-point rule is used when (h/2)·|r + i| ≤ EASY, r the largest rate of ln ρ on the
+/// panel: its error for e^{λx} on [−1, 1] is about 2e-18·|λ|^16.
+const EASY: f64 = 1.1;
+
+/// Most terms the power series may take (σ ≤ 4 needs about 30).
+const MAX_TERMS: usize = 80;
+
+/// 1/k for k = 0..=MAX_TERMS (1/0 unused), so the series multiplies instead of divides.
+const RECIPROCALS: [f64; MAX_TERMS + 1] = {
+    let mut r = [0.0; MAX_TERMS + 1];
+    let mut k = 1;
+    while k <= MAX_TERMS {
+        r[k] = 1.0 / k as f64;
+        k += 1;
+    }
+    r
+};
 
 /// An integral and its derivative with respect to Λ.
 #[derive(Clone, Copy, Debug, Default)]
@@ -36,22 +57,37 @@ pub(crate) struct Integral {
     pub(crate) d_lambda: Complex,
 }
 
-/// e^{iψ} at the 16 Gauss nodes of one panel spanning a whole interval, for repeated
-/// integrals over the same θ range with different Λ (the solver's iterations).
+/// e^{iψ} at the Gauss nodes of one panel spanning a whole interval, for repeated
+/// integrals over the same θ range with different Λ (the solver's iterations); each rule's
+/// table is built on first use.
 pub(crate) struct NodeCache {
     theta: (f64, f64),
-    cis: [Complex; 16],
+    cis8: OnceCell<Vec<Complex>>,
+    cis16: OnceCell<Vec<Complex>>,
 }
 
 impl NodeCache {
     pub(crate) fn new(a: f64, b: f64) -> Self {
-        let (half, mid) = (0.5 * (b - a), 0.5 * (a + b));
-        let mut cis = [Complex::ZERO; 16];
-        for (i, &(xi, _)) in GAUSS_16.iter().enumerate() {
-            cis[2 * i] = Complex::cis(mid - xi * half);
-            cis[2 * i + 1] = Complex::cis(mid + xi * half);
+        NodeCache {
+            theta: (a, b),
+            cis8: OnceCell::new(),
+            cis16: OnceCell::new(),
         }
-        NodeCache { theta: (a, b), cis }
+    }
+
+    fn table(&self, rule: &[(f64, f64)]) -> &[Complex] {
+        let cell = if rule.len() == GAUSS_8.len() {
+            &self.cis8
+        } else {
+            &self.cis16
+        };
+        cell.get_or_init(|| {
+            let (a, b) = self.theta;
+            let (half, mid) = (0.5 * (b - a), 0.5 * (a + b));
+            rule.iter()
+                .flat_map(|&(xi, _)| [Complex::cis(mid - xi * half), Complex::cis(mid + xi * half)])
+                .collect()
+        })
     }
 }
 
@@ -131,22 +167,28 @@ fn series(
             (hi - lo) / m
         }
     };
-    // unit = (sign·i)^k / k!
-    let step = Complex::new(0.0, sign);
-    let mut unit = Complex::new(1.0, 0.0);
+    // Term k of the sum is (sign·i)^k/k! · bracket_k: a real coefficient c = sign^k/k!
+    // added to the real or imaginary part, with the sign, as i^k cycles through 1, i, −1, −i.
+    let add = |acc: &mut Complex, k: usize, x: f64| match k & 3 {
+        0 => acc.re += x,
+        1 => acc.im += x,
+        2 => acc.re -= x,
+        _ => acc.im -= x,
+    };
     let (mut hi, mut lo) = (rho_far * sigma_far, rho_near * sigma_near);
     let mut sum = Complex::ZERO;
-    // Q = ∫ ρ/σ e^{∓iσ} dσ, whose k-th term reuses the (k−1)-th bracket of the sum.
+    // Q = ∫ ρ/σ e^{∓iσ} dσ, whose (k+1)-th term reuses the k-th bracket of the sum.
     let mut q = Complex::new(bracket(rho_far, rho_near, gamma), 0.0);
-    for k in 0..80 {
+    let mut c = 1.0;
+    for k in 0..MAX_TERMS {
         let d = bracket(hi, lo, k as f64 + 1.0 + gamma);
-        let term = unit.scale(d);
-        sum += term;
-        unit = (unit * step).scale(1.0 / (k as f64 + 1.0));
-        q += unit.scale(d);
+        let term = c * d;
+        add(&mut sum, k, term);
+        c *= sign * RECIPROCALS[k + 1];
+        add(&mut q, k + 1, c * d);
         hi *= sigma_far;
         lo *= sigma_near;
-        if k as f64 > sigma_far && term.norm_max() <= 1e-18 * sum.norm_max() {
+        if k as f64 > sigma_far && term.abs() <= 1e-18 * sum.norm_max() {
             break;
         }
     }
@@ -192,9 +234,26 @@ fn gauss_panels(
         let h = (w_x / lambda * width_factor).min(MAX_PANEL).min(remaining);
         let half = 0.5 * h;
         let mid = x.theta - half;
+        // Largest rate of ln ρ on the panel (at its right end for α ≤ 1, left for α > 1)
+        // and the distance from the panel to the singular point.
+        let w_far = if am1 > 0.0 {
+            w_x - am1 * lambda * h
+        } else {
+            w_x
+        };
+        let rate = lambda / w_far;
+        let distance = if beta * lambda > 0.0 {
+            w_far / (beta * lambda)
+        } else {
+            f64::INFINITY
+        };
+        let easy = half * rate.hypot(1.0) <= EASY && distance >= 3.0 * h;
+        let rule: &[(f64, f64)] = if easy { &GAUSS_8 } else { &GAUSS_16 };
         // Only a single panel spanning all of [a, b] has the cached nodes.
         let single = h >= remaining && x.theta == b.theta;
-        let cached = cache.filter(|c| single && c.theta == (a.theta, b.theta));
+        let cached = cache
+            .filter(|c| single && c.theta == (a.theta, b.theta))
+            .map(|c| c.table(rule));
         let e_mid = if cached.is_some() {
             Complex::ZERO
         } else {
@@ -202,7 +261,7 @@ fn gauss_panels(
         };
         let mut acc = Complex::ZERO;
         let mut dacc = Complex::ZERO;
-        for (i, &(xi, wgt)) in GAUSS_16.iter().enumerate() {
+        for (i, &(xi, wgt)) in rule.iter().enumerate() {
             for (j, side) in [-1.0, 1.0].into_iter().enumerate() {
                 let off = side * xi * half; // ψ − mid
                 let delta = off - half; // ψ − x.theta
@@ -210,7 +269,7 @@ fn gauss_panels(
                 let ln_rho = x.ln_rho + t * ln1p_ratio(am1 * t);
                 let f = wgt * ln_rho.exp();
                 let e = match cached {
-                    Some(c) => c.cis[2 * i + j],
+                    Some(c) => c[2 * i + j],
                     None => e_mid * Complex::cis(off),
                 };
                 acc += e.scale(f);

@@ -239,6 +239,7 @@ impl ChordAngle {
         let (g0, slope0) = self.at_circle();
         let (mut mu, mut g, mut slope) = (0.0, g0, slope0);
         let tolerance = 4.0 * f64::EPSILON * self.total;
+        let mut previous_step = f64::INFINITY;
         for _ in 0..200 {
             let newton = mu - g / slope;
             let next = if slope > 0.0 && newton > lo && newton < hi {
@@ -265,10 +266,22 @@ impl ChordAngle {
                 hi = next;
             }
             (mu, g, slope) = (next, e.g, e.slope);
-            // Newton converges quadratically: after a step of 1e-9 the error is ~1e-18.
+            // Newton converges quadratically, e_{k+1} ≈ C e_k² with e_k ≈ |step_k|: estimate
+            // C from the last two steps and stop once the predicted error of `next` is below
+            // 1e-16 (relative), which saves the evaluation that would only confirm it.
+            let newton_step = newton == next && next != mu_max;
+            let predicted = step.abs() / (previous_step * previous_step) * step * step;
             let converged = g.abs() <= tolerance
-                || (next != mu_max && step.abs() <= 1e-9 * mu.max(1.0) && newton == next)
+                || (newton_step && step.abs() <= 1e-9 * mu.max(1.0))
+                || (newton_step
+                    && step.abs() <= 1e-3 * mu.max(1.0)
+                    && predicted <= 1e-16 * mu.max(1.0))
                 || hi - lo <= 1e-15 * hi.max(1.0);
+            previous_step = if newton_step {
+                step.abs()
+            } else {
+                f64::INFINITY
+            };
             if converged {
                 return Ok(e.pieces);
             }

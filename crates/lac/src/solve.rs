@@ -240,8 +240,18 @@ impl ChordAngle {
         let (mut mu, mut g, mut slope) = (0.0, g0, slope0);
         let tolerance = 4.0 * f64::EPSILON * self.total;
         let mut previous_step = f64::INFINITY;
+        let mut previous = (mu, slope);
         for _ in 0..200 {
-            let newton = mu - g / slope;
+            // Halley's correction with g″ from the last two slopes (no extra evaluation);
+            // plain Newton when that correction is large (far from the root).
+            let curvature = (slope - previous.1) / (mu - previous.0);
+            let halley = 1.0 - g * curvature / (2.0 * slope * slope);
+            let newton = if curvature.is_finite() && (0.7..1.4).contains(&halley) {
+                mu - g / (slope * halley)
+            } else {
+                mu - g / slope
+            };
+            previous = (mu, slope);
             let next = if slope > 0.0 && newton > lo && newton < hi {
                 newton
             } else if !top_known && hi == mu_max {

@@ -204,6 +204,7 @@ impl CompoundCurve {
                 chord: piece_chord,
                 origin,
                 rot,
+                scale: rot.norm(),
                 mirrored,
                 left: input.left,
                 theta_first,

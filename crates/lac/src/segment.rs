@@ -100,6 +100,8 @@ pub struct Segment {
     pub(crate) origin: Point,
     /// caller = origin + M(rot · (P − P(first))), M = conjugation when `mirrored`.
     pub(crate) rot: Complex,
+    /// |rot|: standard-form lengths to the caller's.
+    pub(crate) scale: f64,
     pub(crate) mirrored: bool,
     /// The caller's curve turns left (positive curvature).
     pub(crate) left: bool,
@@ -158,6 +160,7 @@ impl Segment {
         let mirrored = left == reversed;
         let c = p2 - p0;
         let c = Complex::new(c.x, if mirrored { -c.y } else { c.y });
+        let rot = c.div(chord);
         Segment {
             alpha,
             form: piece.form,
@@ -165,7 +168,8 @@ impl Segment {
             last,
             chord,
             origin: p0,
-            rot: c.div(chord),
+            rot,
+            scale: rot.norm(),
             mirrored,
             left,
             theta_first,
@@ -201,7 +205,7 @@ impl Segment {
     /// Scale factor from standard-form lengths to the caller's.
     #[inline]
     pub(crate) fn scale(&self) -> f64 {
-        self.rot.norm()
+        self.scale
     }
 
     /// Arc length from the first to the last control point.

@@ -1,8 +1,9 @@
-//! `lac segment --batch`: one JSON object per input line in, one JSON line per input line out.
+//! `--batch` of `lac segment` and `lac compound`: one JSON object per input line in, one
+//! JSON line per input line out.
 //!
 //! Lines are read in chunks, each chunk is solved in parallel (rayon keeps the order), and
 //! the results are written before the next chunk is read, so memory stays bounded and a
-//! pipe sees output as it goes. A line that fails (bad JSON, a blank line, a segment that
+//! pipe sees output as it goes. A line that fails (bad JSON, a blank line, a curve that
 //! does not exist) gives `{"error":{"kind":…,"message":…}}` in its place, so the output
 //! can be zipped with the input.
 
@@ -11,42 +12,36 @@ use std::io::{self, BufRead, BufReader, Write};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::Path;
 
-use kurbo::Point;
 use rayon::prelude::*;
-use serde::Deserialize;
+use serde::de::DeserializeOwned;
 
 use crate::failure::Failure;
-use crate::report::SegmentReport;
 
 /// Lines solved in parallel before their results are written.
 const CHUNK: usize = 1024;
 
-/// One input line: `{"points":[[x,y],[x,y],[x,y]],"alpha":A}`; other fields are ignored.
-/// Numbers are read correctly rounded (serde_json's `float_roundtrip`).
-#[derive(Debug, Deserialize)]
-struct Job {
-    points: [[f64; 2]; 3],
-    alpha: f64,
-}
-
-/// Solve every line of `reader` (opened from `input`) with `samples` samples and write one
-/// line per input line to `out`.
+/// Solve every line of `reader` (opened from `input`) with `solve` and write one line per
+/// input line to `out`: what `solve` returned, or its failure as `{"error":…}`.
 ///
-/// Fails only when the input cannot be read or the output cannot be written; a read error
-/// comes back as an [`io::Error`] that carries its [`Failure`] (see [`crate::output`]).
-pub(crate) fn run(
+/// `solve` gets the line's text (possibly blank; see [`parse_job`]). Fails only when the
+/// input cannot be read or the output cannot be written; a read error comes back as an
+/// [`io::Error`] that carries its [`Failure`] (see [`crate::output`]).
+pub(crate) fn run<F>(
     mut reader: Box<dyn BufRead>,
     input: &Path,
-    samples: usize,
     out: &mut dyn Write,
-) -> io::Result<()> {
+    solve: F,
+) -> io::Result<()>
+where
+    F: Fn(&str) -> Result<String, Failure> + Sync,
+{
     let read_error = |e: io::Error| io::Error::other(Failure::io("read", Some(input), &e));
     loop {
         let lines = read_chunk(&mut *reader).map_err(read_error)?;
         if lines.is_empty() {
             return Ok(());
         }
-        let results: Vec<String> = lines.par_iter().map(|l| solve_line(l, samples)).collect();
+        let results: Vec<String> = lines.par_iter().map(|l| solve_line(l, &solve)).collect();
         for line in &results {
             writeln!(out, "{line}")?;
         }
@@ -60,6 +55,19 @@ pub(crate) fn open(input: &Path) -> Result<Box<dyn BufRead>, Failure> {
     }
     let file = File::open(input).map_err(|e| Failure::io("read", Some(input), &e))?;
     Ok(Box::new(BufReader::with_capacity(1 << 16, file)))
+}
+
+/// Read one input line as a `T`, or say what was wrong and that `shape` was expected.
+///
+/// Numbers are read correctly rounded (serde_json's `float_roundtrip`); fields that `T`
+/// does not name are ignored.
+pub(crate) fn parse_job<T: DeserializeOwned>(text: &str, shape: &str) -> Result<T, Failure> {
+    if text.trim().is_empty() {
+        return Err(Failure::invalid_input(format!(
+            "blank line; expected {shape}"
+        )));
+    }
+    serde_json::from_str(text).map_err(|e| Failure::invalid_input(format!("{e}; expected {shape}")))
 }
 
 /// Up to [`CHUNK`] raw lines, without their line endings; empty at the end of the input.
@@ -81,19 +89,21 @@ fn read_chunk(reader: &mut dyn BufRead) -> io::Result<Vec<Vec<u8>>> {
     Ok(lines)
 }
 
-/// The output line for one input line: the report or the error, as JSON.
+/// The output line for one input line: what `solve` made of it, or the error, as JSON.
 ///
 /// A panic inside the library is caught and reported as kind "internal" for this line, so
 /// one bad line cannot lose the rest of the batch.
-fn solve_line(line: &[u8], samples: usize) -> String {
+fn solve_line<F>(line: &[u8], solve: &F) -> String
+where
+    F: Fn(&str) -> Result<String, Failure>,
+{
     let solved = catch_unwind(AssertUnwindSafe(|| {
-        parse_job(line).and_then(|job| {
-            let points = job.points.map(|[x, y]| Point::new(x, y));
-            SegmentReport::solve(points, job.alpha, samples)
-        })
+        std::str::from_utf8(line)
+            .map_err(|_| Failure::invalid_input("the line is not valid UTF-8"))
+            .and_then(solve)
     }));
     match solved {
-        Ok(Ok(report)) => report.to_json_line(),
+        Ok(Ok(report)) => report,
         Ok(Err(failure)) => failure.to_json_line(),
         Err(_) => Failure {
             kind: "internal",
@@ -103,27 +113,14 @@ fn solve_line(line: &[u8], samples: usize) -> String {
     }
 }
 
-fn parse_job(line: &[u8]) -> Result<Job, Failure> {
-    let text = std::str::from_utf8(line)
-        .map_err(|_| Failure::invalid_input("the line is not valid UTF-8"))?;
-    if text.trim().is_empty() {
-        return Err(Failure::invalid_input(
-            "blank line; expected {\"points\":[[x,y],[x,y],[x,y]],\"alpha\":A}",
-        ));
-    }
-    serde_json::from_str(text).map_err(|e| {
-        Failure::invalid_input(format!(
-            "{e}; expected {{\"points\":[[x,y],[x,y],[x,y]],\"alpha\":A}}"
-        ))
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn kind_of(line: &str) -> String {
-        let v: serde_json::Value = serde_json::from_str(&solve_line(line.as_bytes(), 5)).unwrap();
+        let solve = |text: &str| crate::segment::solve_job(text, 5);
+        let v: serde_json::Value =
+            serde_json::from_str(&solve_line(line.as_bytes(), &solve)).unwrap();
         v["error"]["kind"].as_str().unwrap_or("ok").to_string()
     }
 

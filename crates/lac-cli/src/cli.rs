@@ -4,10 +4,13 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
-/// Log-aesthetic curves: segments from three control points, and drawable regions.
+use crate::failure::Failure;
+
+/// Log-aesthetic curves: segments from three control points, compound-rhythm curves of two
+/// pieces, and drawable regions.
 ///
 /// Errors go to standard error as one line of JSON, {"error":{"kind":…,"message":…}}, with
-/// exit code 2 for invalid input, 3 when the points and alpha admit no segment, 1 for I/O.
+/// exit code 2 for invalid input, 3 when the points and slopes admit no curve, 1 for I/O.
 #[derive(Debug, Parser)]
 #[command(name = "lac", version, max_term_width = 100)]
 pub(crate) struct Cli {
@@ -25,7 +28,22 @@ pub(crate) enum Command {
                                 lac segment --batch FILE.jsonl [--samples N] [-o FILE]"
     )]
     Segment(SegmentArgs),
-    /// Map where the middle control point gives a segment (seed 000 Fig. 9), as PNG or JSON
+    /// Solve a compound-rhythm curve (two pieces, slopes alpha0 then alpha1, joined with G3
+    /// continuity) for three points and a turning ratio, or four control points
+    #[command(
+        override_usage = "lac compound --points \"x0,y0 x1,y1 x2,y2\" --alpha0 A --alpha1 B --ratio R \
+                                [OPTIONS]\n       \
+                                lac compound --points \"x0,y0 x1,y1 x2,y2 x3,y3\" --alpha0 A --alpha1 B \
+                                [OPTIONS]\n       \
+                                lac compound --batch FILE.jsonl [--samples N] [-o FILE]"
+    )]
+    Compound(CompoundArgs),
+    /// Map where the middle control point gives a segment (seed 000 Fig. 9), or a compound
+    /// curve, as PNG or JSON
+    #[command(
+        override_usage = "lac region --alpha A [--size PIXELS] [--format png|json] [-o FILE]\n       \
+                                lac region --alpha A --alpha1 B --ratio R [OPTIONS]"
+    )]
     Region(RegionArgs),
 }
 
@@ -56,6 +74,67 @@ pub(crate) struct SegmentArgs {
     #[arg(long, value_name = "FILE.jsonl", conflicts_with_all = ["points", "alpha"])]
     pub(crate) batch: Option<PathBuf>,
 
+    /// What to print and where.
+    #[command(flatten)]
+    pub(crate) output: CurveOutput,
+}
+
+/// Arguments of `lac compound`.
+#[derive(Debug, Args)]
+pub(crate) struct CompoundArgs {
+    /// Three points "x0,y0 x1,y1 x2,y2" (the ends and the intersection of the end tangents;
+    /// give --ratio) or four control points "x0,y0 x1,y1 x2,y2 x3,y3" (the joint's tangent is
+    /// parallel to the middle leg), separated by spaces and/or semicolons
+    #[arg(
+        long,
+        value_name = "POINTS",
+        allow_hyphen_values = true,
+        required_unless_present = "batch"
+    )]
+    pub(crate) points: Option<String>,
+
+    /// Slope of the logarithmic curvature graph of the piece from the first point to the joint
+    #[arg(
+        long,
+        value_name = "A",
+        allow_hyphen_values = true,
+        required_unless_present = "batch"
+    )]
+    pub(crate) alpha0: Option<f64>,
+
+    /// Slope of the piece from the joint to the last point (alpha0 < alpha1: a "valley" in the
+    /// curvature graph; alpha0 > alpha1: a "mountain")
+    #[arg(
+        long,
+        value_name = "B",
+        allow_hyphen_values = true,
+        required_unless_present = "batch"
+    )]
+    pub(crate) alpha1: Option<f64>,
+
+    /// Three points only: the share of the total turning made by the alpha0 piece, strictly
+    /// between 0 and 1
+    #[arg(long, value_name = "R", allow_hyphen_values = true)]
+    pub(crate) ratio: Option<f64>,
+
+    /// Read one JSON object per line ("-" for standard input), {"points":[[x,y],[x,y],[x,y]],
+    /// "alpha0":A,"alpha1":B,"ratio":R} or {"points":[[x,y],[x,y],[x,y],[x,y]],"alpha0":A,
+    /// "alpha1":B}, and write one JSON line per input line: the result or {"error":…}
+    #[arg(
+        long,
+        value_name = "FILE.jsonl",
+        conflicts_with_all = ["points", "alpha0", "alpha1", "ratio"]
+    )]
+    pub(crate) batch: Option<PathBuf>,
+
+    /// What to print and where.
+    #[command(flatten)]
+    pub(crate) output: CurveOutput,
+}
+
+/// The output options shared by `lac segment` and `lac compound`.
+#[derive(Debug, Args)]
+pub(crate) struct CurveOutput {
     /// Number of samples, equally spaced in arc length from the first to the last point (the
     /// number of comb teeth in SVG)
     #[arg(
@@ -67,12 +146,12 @@ pub(crate) struct SegmentArgs {
     pub(crate) samples: u32,
 
     /// Output format
-    #[arg(long, value_enum, default_value_t = SegmentFormat::Json)]
-    pub(crate) format: SegmentFormat,
+    #[arg(long, value_enum, default_value_t = CurveFormat::Json)]
+    pub(crate) format: CurveFormat,
 
     /// Write to FILE instead of standard output
-    #[arg(short, long, value_name = "FILE")]
-    pub(crate) output: Option<PathBuf>,
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub(crate) file: Option<PathBuf>,
 
     /// SVG: draw the curvature comb (normals scaled by curvature, on the convex side)
     #[arg(long)]
@@ -83,23 +162,58 @@ pub(crate) struct SegmentArgs {
     pub(crate) evolute: bool,
 }
 
-/// Output formats of `lac segment`.
+impl CurveOutput {
+    /// Reject combinations of flags that would be silently ignored; `batch`: is `--batch`
+    /// given?
+    pub(crate) fn check(&self, batch: bool) -> Result<(), Failure> {
+        if batch && self.format != CurveFormat::Json {
+            return Err(Failure::usage(
+                "--batch writes JSON lines; --format csv and svg need --points",
+            ));
+        }
+        if (self.comb || self.evolute) && self.format != CurveFormat::Svg {
+            return Err(Failure::usage(
+                "--comb and --evolute draw; add --format svg",
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// Output formats of `lac segment` and `lac compound`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub(crate) enum SegmentFormat {
-    /// One line: alpha, lambda, arc_length, curvature_start/end, samples [{s,x,y,theta,kappa}]
+pub(crate) enum CurveFormat {
+    /// One line: the slope(s), lambda, arc_length, curvature_start/end (compound curves also
+    /// joint_s, curvature_joint, joint, lcg), samples [{s,x,y,theta,kappa}]
     Json,
     /// A header s,x,y,theta,kappa and one row per sample
     Csv,
-    /// A drawing of the curve and its control polygon
+    /// A drawing of the curve and its control polygon (and the joint of a compound curve)
     Svg,
 }
 
 /// Arguments of `lac region`.
 #[derive(Debug, Args)]
 pub(crate) struct RegionArgs {
-    /// Slope of the logarithmic curvature graph
+    /// Slope of the logarithmic curvature graph (with --alpha1 and --ratio: alpha0, the slope
+    /// of the compound curve's piece from the first point)
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub(crate) alpha: f64,
+
+    /// Map compound-rhythm curves instead of segments: the slope of the piece that ends at the
+    /// last point (give --ratio too)
+    #[arg(long, value_name = "B", allow_hyphen_values = true, requires = "ratio")]
+    pub(crate) alpha1: Option<f64>,
+
+    /// Compound curves: the share of the turning made by the --alpha piece, strictly between
+    /// 0 and 1 (give --alpha1 too)
+    #[arg(
+        long,
+        value_name = "R",
+        allow_hyphen_values = true,
+        requires = "alpha1"
+    )]
+    pub(crate) ratio: Option<f64>,
 
     /// Width and height of the map in pixels, 1 to 8192; the map covers [-1,1]² with the
     /// first point at (-1,0) and the last at (1,0)
@@ -126,6 +240,7 @@ pub(crate) struct RegionArgs {
 pub(crate) enum RegionFormat {
     /// 8-bit grayscale: white where drawable, black where not; row 0 is y = +1
     Png,
-    /// {"alpha","size","extent","first","last","drawable_fraction","drawable":[[bool…]…]}
+    /// {"alpha","size","extent","first","last","drawable_fraction","drawable":[[bool…]…]},
+    /// with "alpha1" and "ratio" after "alpha" for compound curves
     Json,
 }

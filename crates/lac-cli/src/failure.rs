@@ -90,7 +90,7 @@ impl From<lac::Error> for Failure {
 pub(crate) fn from_clap(err: &clap::Error) -> Failure {
     if err.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
         return Failure::usage(
-            "no subcommand given: use 'lac segment' or 'lac region'; see 'lac --help'",
+            "no subcommand given: use 'lac segment', 'lac compound' or 'lac region'; see 'lac --help'",
         );
     }
     let text = err.render().to_string();

@@ -1,13 +1,17 @@
-//! The `lac` command: log-aesthetic curve segments and drawable regions.
+//! The `lac` command: log-aesthetic curve segments, compound-rhythm curves and drawable
+//! regions.
 //!
-//! `lac segment` solves a segment from three control points and α and prints its samples
-//! as JSON, CSV or SVG, one at a time or in batches of JSON lines; `lac region` maps the
-//! drawable region of seed 000 Fig. 9. Failures are one line of JSON on standard error:
+//! `lac segment` solves a segment from three control points and α, `lac compound` a
+//! compound-rhythm curve (two pieces, slopes α0 and α1) from three points and a turning
+//! ratio or from four control points; both print samples as JSON, CSV or SVG, one at a time
+//! or in batches of JSON lines. `lac region` maps the drawable region of seed 000 Fig. 9,
+//! for segments or compound curves. Failures are one line of JSON on standard error:
 //! `{"error":{"kind":…,"message":…}}`, exit code 2 for invalid input, 3 for
 //! "not drawable", 1 for I/O. See `lac --help`.
 
 mod batch;
 mod cli;
+mod compound;
 mod failure;
 mod output;
 mod points;
@@ -40,6 +44,7 @@ fn main() -> ExitCode {
     };
     let result = match &cli.command {
         Command::Segment(args) => segment::run(args),
+        Command::Compound(args) => compound::run(args),
         Command::Region(args) => region::run(args),
     };
     match result {

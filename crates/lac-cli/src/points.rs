@@ -1,4 +1,4 @@
-//! Parsing the `--points` argument: three points "x,y" separated by spaces and/or semicolons.
+//! Parsing the `--points` argument: points "x,y" separated by spaces and/or semicolons.
 
 use kurbo::Point;
 
@@ -10,18 +10,36 @@ use crate::failure::Failure;
 /// Numbers are read by Rust's `f64` parser, so "nan" and "inf" parse and are rejected later
 /// by the library with the name of the coordinate.
 pub(crate) fn parse_points(text: &str) -> Result<[Point; 3], Failure> {
+    let points = parse_point_list(text, &[3])?;
+    Ok([points[0], points[1], points[2]])
+}
+
+/// Parse as many points as one of `counts` (ascending) allows, as [`parse_points`] does.
+pub(crate) fn parse_point_list(text: &str, counts: &[usize]) -> Result<Vec<Point>, Failure> {
     let tight = tighten_commas(text);
     let tokens: Vec<&str> = tight
         .split(|c: char| c == ';' || c.is_whitespace())
         .filter(|t| !t.is_empty())
         .collect();
-    let [a, b, c] = tokens[..] else {
+    if !counts.contains(&tokens.len()) {
+        let expected = match counts {
+            [n] => format!("exactly {n}"),
+            _ => {
+                let names: Vec<String> = counts.iter().map(usize::to_string).collect();
+                names.join(" or ")
+            }
+        };
         return Err(Failure::invalid_input(format!(
-            "expected exactly 3 points \"x,y\" separated by spaces or semicolons, got {} in {text:?}",
+            "expected {expected} points \"x,y\" separated by spaces or semicolons, got {} in \
+             {text:?}",
             tokens.len()
         )));
-    };
-    Ok([parse_point(a, 0)?, parse_point(b, 1)?, parse_point(c, 2)?])
+    }
+    tokens
+        .iter()
+        .enumerate()
+        .map(|(i, token)| parse_point(token, i))
+        .collect()
 }
 
 /// Remove whitespace on either side of each comma, so "1 , 2" reads as one point.
@@ -90,6 +108,17 @@ mod tests {
                 "{text:?}"
             );
         }
+    }
+
+    #[test]
+    fn a_list_takes_any_of_the_allowed_counts_and_names_them_when_wrong() {
+        assert_eq!(parse_point_list("0,0 1,0 1,1", &[3, 4]).unwrap().len(), 3);
+        assert_eq!(
+            parse_point_list("0,0 1,0 1,1 0,1", &[3, 4]).unwrap().len(),
+            4
+        );
+        let err = parse_point_list("0,0 1,0", &[3, 4]).unwrap_err();
+        assert!(err.message.contains("expected 3 or 4 points"), "{err}");
     }
 
     #[test]

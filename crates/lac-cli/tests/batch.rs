@@ -108,3 +108,73 @@ fn batch_excludes_points_alpha_and_drawing_formats() {
         "usage",
     );
 }
+
+#[test]
+fn compound_batches_mix_three_and_four_point_lines_and_keep_errors_in_place() {
+    let lines_in = [
+        r#"{"points":[[0,0],[2,0],[2.6,1.2]],"alpha0":-1,"alpha1":2,"ratio":0.5}"#,
+        r#"{"points":[[0,0],[2,0],[2.5,2],[0,1.5]],"alpha0":-1,"alpha1":2}"#,
+        r#"{"points":[[0,0],[2,0],[2.5,2],[4,2.2]],"alpha0":0.5,"alpha1":1}"#,
+        r#"{"points":[[0,0],[2,0],[2.6,1.2]],"alpha0":-1,"alpha1":2}"#,
+        r#"{"points":[[0,0],[2,0],[2.5,2],[0,1.5]],"alpha0":-1,"alpha1":2,"ratio":0.5}"#,
+        r#"{"points":[[-1,0],[0.9,0.9],[1,0]],"alpha0":-1,"alpha1":2,"ratio":0.5}"#,
+        r#"{"points":[[0,0],[2,0]],"alpha0":-1,"alpha1":2,"ratio":0.5}"#,
+        "",
+        r#"{"points":[[0,0],[2,0],[2.6,1.2]],"alpha":-1}"#,
+    ];
+    let run = lac_with_input(
+        &["compound", "--batch", "-", "--samples", "5"],
+        lines_in.join("\n").as_bytes(),
+    );
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let out = lines(&run.stdout);
+    assert_eq!(out.len(), lines_in.len());
+    let kinds: Vec<&str> = out
+        .iter()
+        .map(|v| v["error"]["kind"].as_str().unwrap_or("ok"))
+        .collect();
+    assert_eq!(
+        kinds,
+        [
+            "ok",
+            "ok",
+            "inflected_polygon",
+            "invalid_input",
+            "invalid_input",
+            "not_drawable",
+            "invalid_input",
+            "invalid_input",
+            "invalid_input",
+        ]
+    );
+    assert!(out[3]["error"]["message"]
+        .as_str()
+        .unwrap()
+        .contains("three points need \"ratio\""));
+    // The good lines are exactly what single mode prints.
+    let single = |points: &str, ratio: &[&str]| {
+        let mut args = vec![
+            "compound",
+            "--points",
+            points,
+            "--alpha0",
+            "-1",
+            "--alpha1",
+            "2",
+            "--samples",
+            "5",
+        ];
+        args.extend_from_slice(ratio);
+        lac(&args).stdout
+    };
+    let mut printed = run.stdout.lines();
+    assert_eq!(
+        printed.next().unwrap(),
+        single("0,0 2,0 2.6,1.2", &["--ratio", "0.5"]).trim_end()
+    );
+    assert_eq!(
+        printed.next().unwrap(),
+        single("0,0 2,0 2.5,2 0,1.5", &[]).trim_end()
+    );
+    assert!(out[1].get("ratio").is_none());
+}

@@ -107,3 +107,63 @@ fn size_and_alpha_are_checked() {
     );
     assert_failure(&lac(&["region"]), 2, "usage");
 }
+
+#[test]
+fn compound_regions_are_16_by_16_and_a_mountain_mirrors_the_valley() {
+    let grid = |alpha0: &str, alpha1: &str, ratio: &str| {
+        let run = lac(&[
+            "region", "--alpha", alpha0, "--alpha1", alpha1, "--ratio", ratio, "--size", "16",
+            "--format", "json",
+        ]);
+        assert_eq!(run.code, 0, "{}", run.stderr);
+        json(&run)
+    };
+    let valley = grid("-1", "2", "0.25");
+    assert_eq!(valley["alpha"], -1.0);
+    assert_eq!(valley["alpha1"], 2.0);
+    assert_eq!(valley["ratio"], 0.25);
+    assert_eq!(valley["size"], 16);
+    let rows: Vec<Vec<bool>> = serde_json::from_value(valley["drawable"].clone()).unwrap();
+    assert_eq!(rows.len(), 16);
+    assert!(rows.iter().all(|r| r.len() == 16));
+    let fraction = valley["drawable_fraction"].as_f64().unwrap();
+    assert!(fraction > 0.2 && fraction < 0.95, "{fraction}");
+    // Not the segment map of either slope.
+    for alpha in ["-1", "2"] {
+        let segment = json(&lac(&[
+            "region", "--alpha", alpha, "--size", "16", "--format", "json",
+        ]));
+        assert_ne!(segment["drawable"], valley["drawable"], "alpha {alpha}");
+    }
+    // Swapping the ends swaps α0 ↔ α1 and r ↔ 1 − r: the map is mirrored left to right.
+    let mountain = grid("2", "-1", "0.75");
+    let mirrored: Vec<Vec<bool>> =
+        serde_json::from_value::<Vec<Vec<bool>>>(mountain["drawable"].clone())
+            .unwrap()
+            .into_iter()
+            .map(|r| r.into_iter().rev().collect())
+            .collect();
+    assert_eq!(mirrored, rows);
+}
+
+#[test]
+fn compound_region_flags_come_together_and_are_checked() {
+    let base = ["region", "--alpha", "-1", "--size", "4", "--format", "json"];
+    let with = |extra: &[&str]| lac(&[&base[..], extra].concat());
+    assert_failure(&with(&["--alpha1", "2"]), 2, "usage");
+    assert_failure(&with(&["--ratio", "0.5"]), 2, "usage");
+    for ratio in ["0", "1", "1.5"] {
+        assert_failure(
+            &with(&["--alpha1", "2", "--ratio", ratio]),
+            2,
+            "out_of_range",
+        );
+    }
+    assert_failure(
+        &with(&["--alpha1", "nan", "--ratio", "0.5"]),
+        2,
+        "non_finite",
+    );
+    let v = json(&with(&[]));
+    assert!(v.get("alpha1").is_none() && v.get("ratio").is_none());
+}

@@ -76,3 +76,35 @@ fn a_circular_arc_marks_its_centre_as_the_evolute() {
     assert!(doc.contains("Λ = 0"));
     assert!(doc.contains("h10"), "cross at the centre");
 }
+
+#[test]
+fn a_long_caption_widens_a_narrow_drawing() {
+    let run = lac(&[
+        "compound",
+        "--points",
+        "0,0 0.4,3 0,4",
+        "--alpha0",
+        "0.123456789",
+        "--alpha1",
+        "0.75",
+        "--ratio",
+        "0.3",
+        "--format",
+        "svg",
+        "--comb",
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let doc = &run.stdout;
+    let start = doc.find("<svg ").unwrap();
+    let width: f64 = doc[start..]
+        .split("width=\"")
+        .nth(1)
+        .and_then(|w| w.split('"').next())
+        .unwrap()
+        .parse()
+        .unwrap();
+    // The caption "α0 = 0.123456789  α1 = 0.75  Λ = …  ● joint s = …  arc length = …
+    // ▬ curvature comb" is about 640 px wide in Liberation Sans at 13 px; the drawing itself
+    // would need only 560.
+    assert!(width >= 680.0, "canvas width {width}");
+}

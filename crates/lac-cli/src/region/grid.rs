@@ -5,16 +5,19 @@ use std::io::IsTerminal;
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 
-/// Rows top (y = +1) to bottom of a `size`×`size` map: `true` where a segment of slope
-/// `alpha` exists for the pixel's centre as middle control point.
+/// Rows top (y = +1) to bottom of a `size`×`size` map, `row(r)` computing row `r`
+/// (`lac::region::row` or `lac::region::compound_row`).
 ///
 /// Shows a progress bar on standard error when it is a terminal, never in pipes or CI.
-pub(crate) fn drawable_rows(alpha: f64, size: usize) -> Vec<Vec<bool>> {
+pub(crate) fn drawable_rows<F>(size: usize, row: F) -> Vec<Vec<bool>>
+where
+    F: Fn(usize) -> Vec<bool> + Sync,
+{
     let progress = progress_bar(size);
     let rows = (0..size)
         .into_par_iter()
-        .map(|row| {
-            let pixels = lac::region::row(alpha, size, row);
+        .map(|r| {
+            let pixels = row(r);
             progress.inc(1);
             pixels
         })

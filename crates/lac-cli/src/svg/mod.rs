@@ -1,5 +1,6 @@
-//! `lac segment --format svg`: a standalone drawing of a segment, its control polygon and,
-//! on request, its curvature comb and evolute.
+//! `--format svg` of `lac segment` and `lac compound`: a standalone drawing of a curve made
+//! of log-aesthetic pieces, its control polygon, the joints between pieces and, on request,
+//! its curvature comb and evolute.
 
 mod comb;
 mod evolute;
@@ -8,7 +9,7 @@ mod view;
 use std::fmt::Write as _;
 
 use kurbo::{Point, Rect};
-use lac::Segment;
+use lac::{Sample, Segment};
 
 use crate::failure::Failure;
 use comb::Comb;
@@ -18,7 +19,7 @@ use view::{View, CAPTION};
 const TOLERANCE: f64 = 1e-4;
 /// Longest comb tooth, relative to the drawing size.
 const COMB_LENGTH: f64 = 0.25;
-/// Points on the evolute.
+/// Points on the evolute of each piece.
 const EVOLUTE_POINTS: usize = 1024;
 /// How far the evolute is drawn beyond the curve's bounding box, in drawing sizes.
 const EVOLUTE_REACH: f64 = 1.0;
@@ -27,69 +28,81 @@ const CURVE: &str = "#111";
 const POLYGON: &str = "#888";
 const COMB: &str = "#d0342c";
 const EVOLUTE: &str = "#1f6fd1";
+const JOINT: &str = "#e07b00";
 
 /// What to draw besides the curve and its control polygon.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub(crate) struct Extras {
-    /// Draw the curvature comb with this many teeth (`None`: no comb).
-    pub(crate) comb_teeth: Option<usize>,
+    /// Draw the curvature comb with a tooth at each of these samples (`None`: no comb).
+    pub(crate) comb: Option<Vec<Sample>>,
     /// Draw the evolute.
     pub(crate) evolute: bool,
 }
 
 /// The layers of a drawing, in drawing coordinates.
 struct Layers {
-    points: [Point; 3],
+    points: Vec<Point>,
     curve: Vec<Point>,
+    /// Where one piece ends and the next begins.
+    joints: Vec<Point>,
     comb: Option<Comb>,
     evolute: Vec<Vec<Point>>,
     /// The evolute of a circular arc is its centre.
-    centre: Option<Point>,
+    centres: Vec<Point>,
 }
 
-/// The SVG document for `segment` with control points `points`.
+/// The SVG document for the curve made of `pieces` (one for a segment, two for a compound
+/// curve, in order) with control polygon `points`.
 pub(crate) fn render(
-    segment: &Segment,
-    points: [Point; 3],
+    pieces: &[Segment],
+    points: &[Point],
     extras: Extras,
 ) -> Result<String, Failure> {
-    let layers = Layers::new(segment, points, extras)?;
-    let view = View::fit(layers.bounds());
+    let layers = Layers::new(pieces, points, &extras)?;
+    let caption = caption(pieces, &layers, extras.evolute);
+    let view = View::fit(layers.bounds(), caption_width(&caption));
     let mut svg = String::new();
-    open(&mut svg, &view, segment);
+    open(&mut svg, &view, pieces);
     layers.draw(&mut svg, &view);
-    caption(&mut svg, &view, segment, &layers, extras);
+    write_caption(&mut svg, &view, &caption);
     svg.push_str("</svg>\n");
     Ok(svg)
 }
 
 impl Layers {
-    fn new(segment: &Segment, points: [Point; 3], extras: Extras) -> Result<Layers, Failure> {
-        let tolerance = TOLERANCE * drawing_size(&bounding_box(&points));
-        let curve: Vec<Point> = segment
-            .sample_adaptive(tolerance)?
-            .iter()
-            .map(|s| s.point)
-            .collect();
-        let base = bounding_box(&points).union(bounding_box(&curve));
+    fn new(pieces: &[Segment], points: &[Point], extras: &Extras) -> Result<Layers, Failure> {
+        let tolerance = TOLERANCE * drawing_size(&bounding_box(points));
+        let mut curve: Vec<Point> = Vec::new();
+        let mut joints = Vec::new();
+        for (i, piece) in pieces.iter().enumerate() {
+            let samples = piece.sample_adaptive(tolerance)?;
+            if i > 0 {
+                // Where this piece starts, the previous one ended: draw that point once.
+                joints.push(samples[0].point);
+                curve.pop();
+            }
+            curve.extend(samples.iter().map(|s| s.point));
+        }
+        let base = bounding_box(points).union(bounding_box(&curve));
         let size = drawing_size(&base);
         let comb = extras
-            .comb_teeth
-            .map(|n| segment.sample_by_arc_length(n))
-            .transpose()?
-            .map(|samples| Comb::new(&samples, COMB_LENGTH * size));
+            .comb
+            .as_deref()
+            .map(|samples| Comb::new(samples, COMB_LENGTH * size));
         let window = base.inflate(EVOLUTE_REACH * size, EVOLUTE_REACH * size);
-        let (evolute, centre) = if extras.evolute {
-            evolute_layer(segment, window)?
-        } else {
-            (Vec::new(), None)
-        };
+        let (mut evolute, mut centres) = (Vec::new(), Vec::new());
+        if extras.evolute {
+            for piece in pieces {
+                evolute_layer(piece, window, &mut evolute, &mut centres)?;
+            }
+        }
         Ok(Layers {
-            points,
+            points: points.to_vec(),
             curve,
+            joints,
             comb,
             evolute,
-            centre,
+            centres,
         })
     }
 
@@ -102,8 +115,8 @@ impl Layers {
         for run in &self.evolute {
             bounds = bounds.union(bounding_box(run));
         }
-        if let Some(c) = self.centre {
-            bounds = bounds.union_pt(c);
+        for c in &self.centres {
+            bounds = bounds.union_pt(*c);
         }
         bounds
     }
@@ -116,8 +129,8 @@ impl Layers {
         for run in &self.evolute {
             polyline(svg, &pixels(run), EVOLUTE, 1.5, "");
         }
-        if let Some(c) = self.centre {
-            cross(svg, view.px(c), EVOLUTE);
+        for c in &self.centres {
+            cross(svg, view.px(*c), EVOLUTE);
         }
         if let Some(comb) = &self.comb {
             let teeth: Vec<(Point, Point)> =
@@ -126,23 +139,33 @@ impl Layers {
             polyline(svg, &pixels(&comb.envelope()), COMB, 1.25, "");
         }
         polyline(svg, &pixels(&self.curve), CURVE, 2.0, "");
+        for p in &self.joints {
+            dot(svg, view.px(*p), JOINT);
+        }
         for (i, p) in polygon.iter().enumerate() {
             marker(svg, *p, i);
         }
     }
 }
 
-/// The evolute's runs inside `window`, or for a circular arc its centre (if inside).
+/// Add the evolute of `piece` inside `window` to `runs`, or for a circular arc its centre
+/// (if inside) to `centres`.
 fn evolute_layer(
-    segment: &Segment,
+    piece: &Segment,
     window: Rect,
-) -> Result<(Vec<Vec<Point>>, Option<Point>), Failure> {
-    if segment.is_circle() {
-        let centre = segment.evolute(2)?[0];
-        return Ok((Vec::new(), window.contains(centre).then_some(centre)));
+    runs: &mut Vec<Vec<Point>>,
+    centres: &mut Vec<Point>,
+) -> Result<(), Failure> {
+    if piece.is_circle() {
+        let centre = piece.evolute(2)?[0];
+        centres.extend(window.contains(centre).then_some(centre));
+    } else {
+        runs.extend(evolute::clip_polyline(
+            &piece.evolute(EVOLUTE_POINTS)?,
+            window,
+        ));
     }
-    let points = segment.evolute(EVOLUTE_POINTS)?;
-    Ok((evolute::clip_polyline(&points, window), None))
+    Ok(())
 }
 
 /// The larger side of `bounds`, or 1 for a degenerate box so that scaling stays finite.
@@ -160,18 +183,23 @@ fn bounding_box(points: &[Point]) -> Rect {
     points.iter().fold(first, |r, p| r.union_pt(*p))
 }
 
-fn open(svg: &mut String, view: &View, segment: &Segment) {
+fn open(svg: &mut String, view: &View, pieces: &[Segment]) {
     let (w, h) = (view.width, view.height);
     let _ = writeln!(svg, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
     let _ = writeln!(
         svg,
         r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0}" height="{h:.0}" viewBox="0 0 {w:.0} {h:.0}" fill="none" stroke-linecap="round" stroke-linejoin="round">"#
     );
+    let what = if pieces.len() == 1 {
+        "Log-aesthetic segment"
+    } else {
+        "Compound-rhythm log-aesthetic curve"
+    };
     let _ = writeln!(
         svg,
-        "<title>Log-aesthetic segment, α = {}, Λ = {}</title>",
-        as_given(segment.alpha()),
-        short(segment.lambda())
+        "<title>{what}, {}, Λ = {}</title>",
+        slopes(pieces).join(", "),
+        short(pieces[0].lambda())
     );
     let _ = writeln!(svg, r#"<rect width="100%" height="100%" fill="white"/>"#);
 }
@@ -222,35 +250,89 @@ fn cross(svg: &mut String, p: Point, colour: &str) {
     );
 }
 
-/// "α = …  Λ = …  arc length = …" and a colour key for the comb and the evolute, separated
-/// by em spaces (`&#8195;`), which SVG does not collapse.
-fn caption(svg: &mut String, view: &View, segment: &Segment, layers: &Layers, extras: Extras) {
-    let _ = write!(
+/// A filled dot, for a joint.
+fn dot(svg: &mut String, p: Point, colour: &str) {
+    let _ = writeln!(
         svg,
-        r#"<text x="12" y="{:.0}" fill="{CURVE}" font-family="sans-serif" font-size="13">α = {}&#8195;Λ = {}&#8195;arc length = {}"#,
-        view.height - 0.5 * CAPTION + 4.0,
-        as_given(segment.alpha()),
-        short(segment.lambda()),
-        short(segment.arc_length())
+        r#"<circle class="joint" cx="{:.2}" cy="{:.2}" r="4.5" fill="{colour}" stroke="white" stroke-width="1.25"/>"#,
+        p.x, p.y
     );
-    if extras.comb_teeth.is_some() {
-        let _ = write!(
-            svg,
-            r#"<tspan fill="{COMB}">&#8195;▬ curvature comb</tspan>"#
-        );
+}
+
+/// The caption: "α = …  Λ = …  arc length = …" (a compound curve: "α0 = …  α1 = …  Λ = …
+/// joint s = …  arc length = …") and a colour key for the joints, the comb and the evolute,
+/// as (colour, text) runs. Runs are separated by em spaces (`&#8195;`), which SVG does not
+/// collapse.
+fn caption(pieces: &[Segment], layers: &Layers, evolute: bool) -> Vec<(&'static str, String)> {
+    let mut runs = vec![(
+        CURVE,
+        format!(
+            "{}&#8195;Λ = {}",
+            slopes(pieces).join("&#8195;"),
+            short(pieces[0].lambda())
+        ),
+    )];
+    let mut s = 0.0;
+    for piece in &pieces[..pieces.len() - 1] {
+        s += piece.arc_length();
+        runs.push((JOINT, format!("&#8195;● joint s = {}", short(s))));
     }
-    if extras.evolute {
-        let note = if layers.evolute.is_empty() && layers.centre.is_none() {
+    let length: f64 = pieces.iter().map(Segment::arc_length).sum();
+    runs.push((CURVE, format!("&#8195;arc length = {}", short(length))));
+    if layers.comb.is_some() {
+        runs.push((COMB, "&#8195;▬ curvature comb".into()));
+    }
+    if evolute {
+        let note = if layers.evolute.is_empty() && layers.centres.is_empty() {
             " (beyond the view)"
         } else {
             ""
         };
-        let _ = write!(
-            svg,
-            r#"<tspan fill="{EVOLUTE}">&#8195;▬ evolute{note}</tspan>"#
-        );
+        runs.push((EVOLUTE, format!("&#8195;▬ evolute{note}")));
+    }
+    runs
+}
+
+/// A generous estimate of the caption's width in pixels, margins included, so that the
+/// canvas can be made wide enough: 13 px sans-serif averages about 6 px a character (7 in
+/// wide fonts such as DejaVu Sans), an em space is 13 px.
+fn caption_width(runs: &[(&str, String)]) -> f64 {
+    let (mut chars, mut ems) = (0, 0);
+    for (_, text) in runs {
+        ems += text.matches("&#8195;").count();
+        chars += text.replace("&#8195;", "").chars().count();
+    }
+    24.0 + 7.0 * chars as f64 + 13.0 * ems as f64
+}
+
+/// Write the caption `runs` in the band under the drawing; runs in the curve's colour are
+/// plain text, the others `<tspan>`s.
+fn write_caption(svg: &mut String, view: &View, runs: &[(&str, String)]) {
+    let _ = write!(
+        svg,
+        r#"<text x="12" y="{:.0}" fill="{CURVE}" font-family="sans-serif" font-size="13">"#,
+        view.height - 0.5 * CAPTION + 4.0,
+    );
+    for (colour, text) in runs {
+        if *colour == CURVE {
+            svg.push_str(text);
+        } else {
+            let _ = write!(svg, r#"<tspan fill="{colour}">{text}</tspan>"#);
+        }
     }
     svg.push_str("</text>\n");
+}
+
+/// "α = …" for one piece, "α0 = …", "α1 = …" for several.
+fn slopes(pieces: &[Segment]) -> Vec<String> {
+    if let [piece] = pieces {
+        return vec![format!("α = {}", as_given(piece.alpha()))];
+    }
+    pieces
+        .iter()
+        .enumerate()
+        .map(|(i, piece)| format!("α{i} = {}", as_given(piece.alpha())))
+        .collect()
 }
 
 /// α as the user typed it when that is short (0.999999999 must not read as 1), else [`short`].

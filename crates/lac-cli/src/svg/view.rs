@@ -31,11 +31,12 @@ pub(crate) struct View {
 
 impl View {
     /// The view that shows `bounds` (non-empty, finite) as large as [`CONTENT`] allows,
-    /// centred, with the y axis pointing up.
-    pub(crate) fn fit(bounds: Rect) -> View {
+    /// centred, with the y axis pointing up, on a canvas at least `min_width` pixels wide
+    /// (for the caption).
+    pub(crate) fn fit(bounds: Rect, min_width: f64) -> View {
         let scale = CONTENT / bounds.width().max(bounds.height());
         let (w, h) = (bounds.width() * scale, bounds.height() * scale);
-        let width = (w + 2.0 * MARGIN).max(MIN_WIDTH);
+        let width = (w + 2.0 * MARGIN).max(MIN_WIDTH).max(min_width);
         let height = (h + 2.0 * MARGIN).max(MIN_HEIGHT) + CAPTION;
         View {
             bounds,
@@ -63,7 +64,7 @@ mod tests {
     #[test]
     fn a_tiny_box_far_from_the_origin_fills_the_canvas_with_y_up() {
         let (lo, hi) = (Point::new(1e7, -1e7), Point::new(1e7 + 2e-6, -1e7 + 1e-6));
-        let view = View::fit(Rect::from_points(lo, hi));
+        let view = View::fit(Rect::from_points(lo, hi), 0.0);
         let (a, b) = (view.px(lo), view.px(hi));
         assert!(
             ((b.x - a.x) - CONTENT).abs() < 1e-3 * CONTENT,

@@ -171,7 +171,22 @@ impl CompoundCurve {
         } else {
             (input.alpha, input.theta, input.theta_e)
         };
-        let parts = ChordAngle::new(alpha, theta, theta_e).solve()?.parts;
+        let parts = ChordAngle::new(alpha, theta, theta_e)
+            .solve()
+            .map_err(|e| match e {
+                // Say it in the caller's terms: both slopes, and at which end the angle is.
+                Error::NotDrawable(NotDrawable::ChordAngleTooLarge { theta_e, max, .. }) => {
+                    Error::NotDrawable(NotDrawable::CompoundChordAngleTooLarge {
+                        alpha0: input.alpha[0],
+                        alpha1: input.alpha[1],
+                        at_first: !reversed,
+                        theta_e,
+                        max,
+                    })
+                }
+                other => other,
+            })?
+            .parts;
         // Caller-order pieces as (standard-form piece, traversed forward?).
         let order = if reversed {
             [(1, false), (0, false)]

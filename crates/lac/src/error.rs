@@ -108,13 +108,31 @@ pub enum NotDrawable {
         /// Total turning of the control polygon, radians.
         turning: f64,
     },
-    /// A segment exists in theory, but the radius of curvature would vary by more than
-    /// `e^max_log_ratio` along it, which floating point cannot represent.
+    /// A compound curve of these slopes and this turning split cannot make the angle the
+    /// control points need between the tangent at an end and the chord.
+    CompoundChordAngleTooLarge {
+        /// Slope of the piece at the first control point.
+        alpha0: f64,
+        /// Slope of the piece at the last control point.
+        alpha1: f64,
+        /// Whether the angle is the one at the first control point (else at the last).
+        at_first: bool,
+        /// The required angle, radians.
+        theta_e: f64,
+        /// The largest angle these slopes can make, radians.
+        max: f64,
+    },
+    /// The radius of curvature would have to vary by more than `e^max_log_ratio` along the
+    /// curve, beyond floating point (or the required angle is not reached at all).
     CurvatureRatioTooLarge {
-        /// The slope of the logarithmic curvature graph.
+        /// The slope of the piece that limits the search.
         alpha: f64,
         /// The natural logarithm of the largest supported ratio.
         max_log_ratio: f64,
+        /// The required angle between the tangent at the sharper end and the chord, radians.
+        theta_e: f64,
+        /// The largest angle reached within that ratio, radians.
+        reached: f64,
     },
 }
 
@@ -142,14 +160,36 @@ impl fmt::Display for NotDrawable {
                 theta_e.to_degrees(),
                 turning.to_degrees()
             ),
+            NotDrawable::CompoundChordAngleTooLarge {
+                alpha0,
+                alpha1,
+                at_first,
+                theta_e,
+                max,
+            } => write!(
+                f,
+                "with alpha0 = {alpha0}, alpha1 = {alpha1} and this split of the turning, the \
+                 chord can make at most {:.4} deg with the tangent at the {} point, but the \
+                 control points need {:.4} deg; make the control polygon more symmetric, move \
+                 the joint (ratio) toward the {} point, or use slopes closer to the range 0..1",
+                max.to_degrees(),
+                if at_first { "first" } else { "last" },
+                theta_e.to_degrees(),
+                if at_first { "last" } else { "first" },
+            ),
             NotDrawable::CurvatureRatioTooLarge {
                 alpha,
                 max_log_ratio,
+                theta_e,
+                reached,
             } => write!(
                 f,
-                "with alpha = {alpha} the radius of curvature would vary by more than \
-                 e^{max_log_ratio} along the segment, beyond floating point; make the control \
-                 triangle more isosceles"
+                "with alpha = {alpha} the curve would need its radius of curvature to vary by more \
+                 than e^{max_log_ratio} (it reaches an angle of {:.6} deg between the sharper end's \
+                 tangent and the chord there, and the control points need {:.6} deg); make the \
+                 control polygon more symmetric",
+                reached.to_degrees(),
+                theta_e.to_degrees()
             ),
         }
     }

@@ -228,8 +228,14 @@ impl ChordAngle {
                 }
             } else {
                 NotDrawable::CurvatureRatioTooLarge {
-                    alpha: self.alpha[1],
+                    alpha: if self.bound[0] > self.bound[1] {
+                        self.alpha[0]
+                    } else {
+                        self.alpha[1]
+                    },
                     max_log_ratio: MAX_LOG_RATIO,
+                    theta_e: self.theta_e,
+                    reached: self.theta_e + top.g,
                 }
             })
         };

@@ -52,3 +52,8 @@ pub use lcg::LcgLine;
 pub use sampling::Sample;
 pub use segment::Segment;
 pub use standard_form::{Classification, InfiniteRadiusEnd, StandardForm, ZeroRadiusEnd};
+
+/// The README's Rust examples, compiled and run as doc tests.
+#[cfg(doctest)]
+#[doc = include_str!("../../../README.md")]
+pub struct ReadmeDoctests;

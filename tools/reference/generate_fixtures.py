@@ -17,7 +17,14 @@ segments.json -- SPEC section 3, a segment from control points (Pa, Pb, Pc) and 
 ends), theta_d in (0, pi) (unsigned), arc_length, signed end curvatures (+ = left turn),
 and samples at arc-length fractions u from the caller's first point: s, x, y, theta (the
 tangent direction, atan2(Pb - Pa) at u = 0 and continuous), kappa.  Not-drawable cases
-have "drawable": false and a "reason".  "kind" says how the case was made.
+have "drawable": false and a "reason".  "kind" says how the case was made: base
+(Pa = (-1, 0), Pc = (1, 0), Pb random in [-1, 1] x [0.02, 1], drawn again when outside
+the drawable region), similar (random scale, rotation, offset), left (mirrored), reversed
+(points in reverse order), near-isosceles, boundary-inside (lambda = (1 - 1e-7)
+lambda_max), boundary-outside (theta_e 1e-6 theta_d above the largest chord angle),
+outside (random Pb outside the region), degenerate (collinear or coincident).  Cases
+whose lambda is within 1e-12 of lambda_max, or lambda theta_d > 1000, would be unfair
+to double precision and are left out (the script reports how many).
 
 All mathematics runs in mpmath at 40 digits; inputs are doubles (written exactly as
 used) and outputs are rounded to the nearest double.  Random choices use fixed seeds;
@@ -105,8 +112,9 @@ def as_doubles(points):
 
 def quick_drawable(alpha, pb):
     """Cheap 15-digit prefilter for Pa = (-1, 0), Pc = (1, 0): theta_e below the largest
-    chord angle by a margin (only alpha < 0 and alpha > 1 have a finite largest one)."""
-    if 0 <= alpha <= 1:
+    chord angle by a margin (only alpha < 0 and alpha > 1 have a finite largest one; as
+    in solve_lambda it is only computed away from alpha = 0 and 1)."""
+    if -0.01 < alpha < 1.01:
         return True
     with mp.workdps(15):
         v1, v2 = pb - PA, PC - pb
@@ -163,7 +171,7 @@ def segment_configs():
 
     for alpha in SEG_ALPHAS:
         draw(alpha, VARIANTS)
-    for _ in range(12):
+    for _ in range(16):
         draw(rng.uniform(-6, 6), [rng.choice(VARIANTS) for _ in range(5)])
     # near-isosceles (lambda tiny) and exactly isosceles (lambda = 0)
     for i, alpha in enumerate([-1, 0, 0.5, 1, 2, 10, -3, 1.5]):

@@ -10,14 +10,15 @@ LAC(alpha, lam): reference point at the origin with tangent +x, rho = 1 and s = 
 Every closed form is written with expm1/log1p, so alpha near 0 or 1 and lam near 0 lose
 no digits; alpha = 0, alpha = 1 and lam = 0 (unit circle) use the limits.
 
-Quadrature: the only singularity of either integrand is where rho = 0 or rho = inf, at
-theta* = 1/(lam (1 - alpha)) (s* = -1/(lam alpha)).  The interval is split into pieces no
-longer than 1 rad of turning and no longer than their distance to theta*, i.e. graded
-geometrically toward theta* when the end point is close to it, so every piece is analytic
-on a neighbourhood of its own size and tanh-sinh converges to full precision.  A
-singularity exactly at an end point (lam at its bound) is left to tanh-sinh, which handles
-integrable end-point singularities.  P is computed both ways (theta form and arc-length
-form on the same pieces) so each can check the other.
+Quadrature (Gauss-Legendre on graded pieces): the only singularity of the theta-form
+integrand is where rho = 0 or inf, at theta* = 1/(lam (1 - alpha)); the arc-length
+integrand is singular at s* = -1/(lam alpha) (also when theta* is at infinity, e.g. the
+rho -> 0 end of alpha = 1).  Pieces are at most 1 rad and 2/lam of turning and no longer
+than their distance to the singularity (bisection makes that a geometric grading toward
+a nearby end), so each piece is analytic on a neighbourhood of its own size.  A piece
+that runs exactly into the bound (lam = lam_max) uses the form whose integrand stays
+bounded there, with tanh-sinh.  P is computed in both forms, which must agree; alpha = 1
+uses its closed form, checked against both quadratures.
 """
 
 from mpmath import mp, mpf, mpc, exp, expm1, log1p, expj, quad, inf, gammainc
@@ -64,6 +65,10 @@ class StandardForm:
             return -log1p(-lam * theta) / lam
         if a == 1:
             return expm1(lam * theta) / lam
+        if theta == self.theta_singular():
+            # exactly s*: 1 + (a-1) lam theta rounds to ~1e-40, not 0, and
+            # s* - s ~ (theta* - theta)^(a/(a-1)) magnifies that hugely for a near 0
+            return self.s_singular()
         return expm1(a / (a - 1) * log1p((a - 1) * lam * theta)) / (lam * a)
 
     def theta_of_s(self, s):
@@ -84,8 +89,11 @@ class StandardForm:
 
     # ---- points ---------------------------------------------------------------------
     def theta_grid(self, t0, t1):
-        """Break points from t0 to t1 (in that order), graded toward theta_singular."""
-        return graded([t0, t1], self.theta_singular(), MAX_PIECE)
+        """Break points from t0 to t1 (in that order), graded toward theta_singular.
+        Pieces are also at most 2/lam long: rho ~ exp(lam theta) near alpha = 1 varies
+        by at most e^2 on a piece (the grading alone would allow far more)."""
+        max_len = MAX_PIECE if self.lam == 0 else min(MAX_PIECE, 2 / self.lam)
+        return graded([t0, t1], self.theta_singular(), max_len)
 
     def s_grid(self, t0, t1):
         """The theta grid mapped to s, then graded toward s_singular as well: the
@@ -118,30 +126,36 @@ class StandardForm:
             if self.alpha < 1:
                 return self.point_by_s(t1, t0, method="tanh-sinh")
             return self.point_by_theta(t1, t0, method="tanh-sinh")
-        p = self.point_by_theta(t1, t0)
+        if self.alpha == 1:  # closed form; the quadratures are only checks
+            p = self.point_closed_alpha1(t1) - self.point_closed_alpha1(t0)
+            if check:
+                q = self.point_by_theta(t1, t0)
+                assert abs(p - q) <= mpf("1e-25") * max(1, abs(p)), (self.lam, t0, t1, p, q)
+        else:
+            p = self.point_by_theta(t1, t0)
         if check:
             q = self.point_by_s(t1, t0)
-            scale = max(1, abs(p))
-            assert abs(p - q) <= mpf("1e-25") * scale, (self.alpha, self.lam, t0, t1, p, q)
+            assert abs(p - q) <= mpf("1e-25") * max(1, abs(p)), (self.alpha, self.lam, t0, t1, p, q)
         return p
 
     def point_gamma(self, theta):
         """P(theta) by upper incomplete gamma functions (SPEC section 2), for checks only.
 
         Needs alpha != 1 and lam > 0; computed with 40 extra digits because it cancels
-        badly as alpha -> 1 or lam -> 0.
+        badly as alpha -> 1 or lam -> 0.  theta = theta_singular() means u = 0 exactly.
         """
+        at_bound = theta == self.theta_singular()
         with mp.extradps(40):
-            a, lam, theta = self.alpha, self.lam, mpf(theta)
+            a, lam = self.alpha, self.lam
             k = 1 / (lam * (a - 1))
             g = a / (a - 1)
-            u = (a - 1) * lam * theta + 1
+            u = 0 if at_bound else (a - 1) * lam * mpf(theta) + 1
             mik = mpc(0, -k)
             p = k * expj(-k) * mik ** (-g) * (gammainc(g, mik) - gammainc(g, mik * u))
         return +p
 
     def point_closed_alpha1(self, theta):
-        """alpha = 1 closed form (exp((lam + i) theta) - 1) / (lam + i), for tests."""
+        """alpha = 1 closed form (exp((lam + i) theta) - 1) / (lam + i)."""
         z = mpc(self.lam, 1)
         return expm1(z * theta) / z
 
@@ -164,4 +178,6 @@ def graded(points, sing, max_len):
                 todo += [(m, q), (p, m)]
             else:
                 out.append(q)
+                if len(out) > 100000:
+                    raise ValueError("more than 1e5 quadrature pieces")
     return out

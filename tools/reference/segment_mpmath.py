@@ -25,8 +25,9 @@ class NotDrawable(Exception):
 
 
 class IllConditioned(Exception):
-    """Drawable in exact arithmetic, but lam is within 1e-12 (relative) of its bound,
-    or the verdict is within 1e-9 rad of the drawable boundary: unfit for a fixture."""
+    """Drawable in exact arithmetic, but lam is within 1e-12 (relative) of its bound or
+    lam theta_d > 1000, or the verdict is within 1e-9 rad of the drawable boundary:
+    unfit for a fixture."""
 
 
 def cross(u, v):
@@ -52,11 +53,13 @@ def chord_angle_at_bound(alpha, theta_d):
 
 
 def bracket_candidates(alpha, theta_d):
-    if alpha == 1:
-        return [mpf(10) ** m for m in range(-2, 17)]
-    lam_max = 1 / (theta_d * fabs(1 - alpha))
-    grow = [mpf(10) ** m for m in range(-2, 20) if mpf(10) ** m <= lam_max / 100]
-    return grow + [lam_max * (1 - mpf(10) ** -k) for k in range(1, 13)]
+    """Increasing trial values of lam: powers of ten, then toward lam_max.  Capped at
+    lam theta_d = 1000 (rho changes by e^1000 along the piece for alpha = 1)."""
+    cap = 1000 / theta_d
+    lam_max = cap if alpha == 1 else 1 / (theta_d * fabs(1 - alpha))
+    grow = [mpf(10) ** m for m in range(-2, 20) if mpf(10) ** m <= min(lam_max / 100, cap)]
+    near = [lam_max * (1 - mpf(10) ** -k) for k in range(1, 13)] if lam_max <= cap else []
+    return grow + near + ([cap] if alpha == 1 else [])
 
 
 def illinois(f, a, fa, b, fb, tol):
@@ -102,7 +105,7 @@ def solve_lambda(alpha, theta_d, theta_e):
             gap = theta_e - chord_angle_at_bound(alpha, theta_d)
             if gap > 1e-9:
                 raise NotDrawable("theta_e exceeds the largest chord angle for this alpha")
-        raise IllConditioned("lambda within 1e-12 of its bound")
+        raise IllConditioned("lambda within 1e-12 of its bound or lambda theta_d > 1000")
     with mp.workdps(20):
         lam = illinois(f, lo, flo, hi, fhi, mpf("1e-18"))
     # secant steps at full precision from the 20-digit root
@@ -169,14 +172,14 @@ def solve_segment(pa, pb, pc, alpha, fractions):
         points[t], prev = acc, t
     samples = []
     for u, t in zip(fractions, thetas):
-        z = to_caller(points.get(t, mpc(0)))
+        # the ends are the control points exactly (to_caller is checked against them below)
+        z = pa if u == 0 else pc if u == 1 else to_caller(points[t])
         samples.append({
             "u": u, "s": mpf(u) * length, "x": z.real, "y": z.imag,
             "theta": theta0 + sigma * fabs(t - t_first),
             "kappa": sigma / (scale * sf.rho(t)),
         })
-    end = to_caller(points[t_end])
-    assert abs(end - c) <= mpf("1e-25") * abs(c - a)
+    assert abs(to_caller(points[t_end]) - c) <= mpf("1e-25") * abs(c - a)
     return {
         "lambda": lam, "theta_d": theta_d, "arc_length": length,
         "curvature_start": sigma / (scale * sf.rho(t_first)),

@@ -291,7 +291,24 @@ impl CompoundCurve {
         if s <= joint {
             Ok((&self.pieces[0], s))
         } else {
-            Ok((&self.pieces[1], s - joint))
+            Ok((&self.pieces[1], self.second_piece_s(s)))
+        }
+    }
+
+    /// Arc length within the second piece, measured from whichever of its ends is nearer:
+    /// when that piece is much shorter than the first, `s − joint_s` would lose the digits
+    /// of its position to the rounding of the whole length.
+    fn second_piece_s(&self, s: f64) -> f64 {
+        let (joint, total, len) = (
+            self.joint_s(),
+            self.arc_length(),
+            self.pieces[1].arc_length(),
+        );
+        let from_end = total - s;
+        if from_end < 0.5 * len {
+            (len - from_end).clamp(0.0, len)
+        } else {
+            (s - joint).clamp(0.0, len)
         }
     }
 

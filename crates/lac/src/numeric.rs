@@ -88,11 +88,6 @@ impl Complex {
         self.re.hypot(self.im)
     }
 
-    #[inline]
-    pub(crate) fn norm_sqr(self) -> f64 {
-        self.re * self.re + self.im * self.im
-    }
-
     /// max(|re|, |im|): a norm that cannot overflow, within √2 of |z|.
     #[inline]
     pub(crate) fn norm_max(self) -> f64 {

@@ -173,15 +173,35 @@ impl ChordAngle {
         }
     }
 
-    /// g and dg/dμ at μ = 0 (both pieces arcs of the unit circle) in closed form.
-    fn at_circle(&self) -> (f64, f64) {
+    /// g and dg/dμ at μ = 0 (both pieces arcs of the unit circle) in closed form, and a
+    /// first iterate from the saturating model g ≈ g₀ + aμ/(1 + bμ) matched to g′(0) and
+    /// g″(0): near the circle ρ = 1 + Λψ + (2 − α)Λ²ψ²/2 + O(Λ³), so P, P′ and P″ in Λ
+    /// are integrals of e^{iψ} times 1, ψ and (2 − α)ψ².
+    fn at_circle(&self) -> (f64, f64, f64) {
         let (a, b) = (-self.theta[0], self.theta[1]);
-        // ∫ e^{iψ} = −i[e^{iψ}], ∫ ψ e^{iψ} = [e^{iψ}(1 − iψ)].
-        let p = (Complex::cis(b) - Complex::cis(a)).mul_i().scale(-1.0);
-        let prim = |x: f64| Complex::cis(x) * Complex::new(1.0, -x);
-        let dp = prim(b) - prim(a);
-        let slope = (p.conj() * dp).im / p.norm_sqr() / self.total;
-        (0.5 * self.total - self.theta_e, slope)
+        // Antiderivatives of e^{iψ}, ψe^{iψ} and ψ²e^{iψ}.
+        let p0 = |x: f64| Complex::cis(x).mul_i().scale(-1.0);
+        let p1 = |x: f64| Complex::cis(x) * Complex::new(1.0, -x);
+        let p2 = |x: f64| Complex::cis(x) * Complex::new(2.0 * x, 2.0 - x * x);
+        let p = p0(b) - p0(a);
+        let dp = p1(b) - p1(a);
+        let ddp = (p2(0.0) - p2(a)).scale(2.0 - self.alpha[0])
+            + (p2(b) - p2(0.0)).scale(2.0 - self.alpha[1]);
+        let (r1, r2) = (dp.div(p), ddp.div(p));
+        let (phi1, phi2) = (r1.im, (r2 - r1 * r1).im);
+        // Λ(μ) = μ E(−kμ)/Θ: Λ′(0) = 1/Θ, Λ″(0) = −k/Θ.
+        let k = self.d / self.total;
+        let slope = phi1 / self.total;
+        let curvature = phi2 / (self.total * self.total) - phi1 * k / self.total;
+        let g0 = 0.5 * self.total - self.theta_e;
+        let rate = -curvature / (2.0 * slope);
+        let denominator = slope + rate * g0;
+        let first = if denominator > 0.0 {
+            -g0 / denominator
+        } else {
+            -g0 / slope
+        };
+        (g0, slope, first)
     }
 
     /// Where the search may stop growing μ, and whether that is a limit of the family
@@ -242,8 +262,9 @@ impl ChordAngle {
         // Newton from the circle end. g is increasing; the bracket [lo, hi] only shrinks and
         // its top is evaluated only if an iterate wants to go there.
         let (mut lo, mut hi, mut top_known) = (0.0, mu_max, false);
-        let (g0, slope0) = self.at_circle();
+        let (g0, slope0, first) = self.at_circle();
         let (mut mu, mut g, mut slope) = (0.0, g0, slope0);
+        let mut first = Some(first);
         let tolerance = 4.0 * f64::EPSILON * self.total;
         let mut previous_step = f64::INFINITY;
         let mut previous = (mu, slope);
@@ -252,7 +273,9 @@ impl ChordAngle {
             // plain Newton when that correction is large (far from the root).
             let curvature = (slope - previous.1) / (mu - previous.0);
             let halley = 1.0 - g * curvature / (2.0 * slope * slope);
-            let newton = if curvature.is_finite() && (0.7..1.4).contains(&halley) {
+            let newton = if let Some(guess) = first.take() {
+                guess
+            } else if curvature.is_finite() && (0.7..1.4).contains(&halley) {
                 mu - g / (slope * halley)
             } else {
                 mu - g / slope
@@ -286,7 +309,12 @@ impl ChordAngle {
             // C from the last two steps and stop once the predicted error of `next` is below
             // 1e-16 (relative), which saves the evaluation that would only confirm it.
             let newton_step = newton == next && next != mu_max;
-            let predicted = step.abs() / (previous_step * previous_step) * step * step;
+            // (Needs two Newton steps: after the first there is no estimate of C.)
+            let predicted = if previous_step.is_finite() {
+                step.abs() / (previous_step * previous_step) * step * step
+            } else {
+                f64::INFINITY
+            };
             let converged = g.abs() <= tolerance
                 || (newton_step && step.abs() <= 1e-9 * mu.max(1.0))
                 || (newton_step

@@ -257,3 +257,23 @@ proptest! {
         }
     }
 }
+
+/// Near a circle the first Newton step is small; the solver once stopped after it because
+/// its convergence estimate needs two steps (found by the 40-digit compound fixtures).
+#[test]
+fn near_circles_converge_fully() {
+    let p = [
+        Point::new(18.355_573_376_593_092, -4.103_424_522_260_902_5),
+        Point::new(18.318_987_487_307_86, -4.168_665_707_204_79),
+        Point::new(18.366_831_693_312_832, -4.226_179_966_007_010_5),
+    ];
+    let c = CompoundCurve::from_three_points(p, 0.5, -1.0, 0.422_304_407_413_060_2).unwrap();
+    // mpmath at 40 digits: Λ = 5.00000000035264662e-4, κ0 = 9.19692838237197741. Λ is set
+    // by θe − Θ/2 ≈ 6e-5, known to ~1e-16 absolute, so to ~1e-11 relative (the bug: 1.3e-8).
+    assert!(
+        (c.lambda() - 5.000_000_000_352_647e-4).abs() < 1e-10 * 5e-4,
+        "{}",
+        c.lambda()
+    );
+    assert!((c.curvature_start() - 9.196_928_382_371_977).abs() < 1e-13 * 9.2);
+}

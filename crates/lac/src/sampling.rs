@@ -50,17 +50,15 @@ impl Segment {
         check_count(n)?;
         let len = self.arc_length();
         let step = len / (n - 1) as f64;
-        let at: Vec<f64> = (0..n)
-            .map(|i| if i == n - 1 { len } else { i as f64 * step })
-            .collect();
-        self.samples_at_arc_lengths(&at)
+        let at = (0..n).map(|i| if i == n - 1 { len } else { i as f64 * step });
+        self.samples_at_arc_lengths(at)
     }
 
     /// Samples at the given ascending arc lengths (caller's units, within [0, arc_length]).
-    pub(crate) fn samples_at_arc_lengths(&self, at: &[f64]) -> Result<Vec<Sample>> {
-        if at.is_empty() {
-            return Ok(Vec::new());
-        }
+    pub(crate) fn samples_at_arc_lengths(
+        &self,
+        at: impl ExactSizeIterator<Item = f64>,
+    ) -> Result<Vec<Sample>> {
         // Each sample is placed from the nearer end, where ρ is known exactly (see
         // `Segment::station_at_s`), in standard-form arc length.
         let (len, k) = (self.arc_length(), self.dir() / self.scale());
@@ -68,22 +66,19 @@ impl Segment {
             Anchor::new(&self.form, self.first),
             Anchor::new(&self.form, self.last),
         );
-        let nodes: Vec<Node> = at
-            .iter()
-            .map(|&s| {
-                let node = if s <= 0.5 * len {
-                    head.advance_s(&self.form, k * s)
-                } else {
-                    tail.advance_s(&self.form, -k * (len - s))
-                };
-                node.ok_or(Error::OutOfRange {
-                    name: "s",
-                    value: s,
-                    expected: "arc lengths between 0 and arc_length()",
-                })
+        let nodes = at.map(|s| {
+            let node = if s <= 0.5 * len {
+                head.advance_s(&self.form, k * s)
+            } else {
+                tail.advance_s(&self.form, -k * (len - s))
+            };
+            node.ok_or(Error::OutOfRange {
+                name: "s",
+                value: s,
+                expected: "arc lengths between 0 and arc_length()",
             })
-            .collect::<Result<_>>()?;
-        Ok(self.samples_at_nodes(&nodes))
+        });
+        self.samples_at_nodes(nodes)
     }
 
     /// `n ≥ 2` samples equally spaced in tangent angle, ends included.
@@ -185,27 +180,34 @@ impl Segment {
 
     /// Samples at `stations`, positions accumulated from the first one.
     pub(crate) fn samples_at(&self, stations: &[Station]) -> Vec<Sample> {
-        let nodes: Vec<Node> = stations
-            .iter()
-            .map(|st| Node::new(&self.form, *st))
-            .collect();
-        self.samples_at_nodes(&nodes)
+        let nodes = stations.iter().map(|st| Ok(Node::new(&self.form, *st)));
+        self.samples_at_nodes(nodes)
+            .expect("stations are inside the curve")
     }
 
-    fn samples_at_nodes(&self, nodes: &[Node]) -> Vec<Sample> {
-        let mut z = self.offset_of(&nodes[0].st);
+    /// Samples at `nodes`, positions accumulated from the first one, streamed so that no
+    /// intermediate list is built.
+    fn samples_at_nodes(
+        &self,
+        mut nodes: impl ExactSizeIterator<Item = Result<Node>>,
+    ) -> Result<Vec<Sample>> {
         let mut out = Vec::with_capacity(nodes.len());
-        let mut prev = &nodes[0];
-        let mut prev_jet = self.jet_of(prev);
-        out.push(self.sample_from(prev, z));
-        for node in &nodes[1..] {
-            let jet = self.jet_of(node);
-            z += self.hermite(prev, node, &prev_jet, &jet, 0);
-            out.push(self.sample_from(node, z));
+        let Some(first) = nodes.next() else {
+            return Ok(out);
+        };
+        let mut prev = first?;
+        let mut z = self.offset_of(&prev.st);
+        let mut prev_jet = self.jet_of(&prev);
+        out.push(self.sample_from(&prev, z));
+        for node in nodes {
+            let node = node?;
+            let jet = self.jet_of(&node);
+            z += self.hermite(&prev, &node, &prev_jet, &jet, 0);
+            out.push(self.sample_from(&node, z));
             prev = node;
             prev_jet = jet;
         }
-        out
+        Ok(out)
     }
 
     fn sample_from(&self, node: &Node, z: Complex) -> Sample {
@@ -228,30 +230,16 @@ impl Segment {
     }
 
     fn jet_of(&self, node: &Node) -> Jet {
-        const BINOMIAL: [[f64; 5]; 5] = [
-            [1.0, 0.0, 0.0, 0.0, 0.0],
-            [1.0, 1.0, 0.0, 0.0, 0.0],
-            [1.0, 2.0, 1.0, 0.0, 0.0],
-            [1.0, 3.0, 3.0, 1.0, 0.0],
-            [1.0, 4.0, 6.0, 4.0, 1.0],
-        ];
         let alpha = self.form.alpha;
         let r = self.form.lambda * node.q; // −κ′/κ
-                                           // κ⁽ʲ⁾ for j = 0..4.
-        let mut k = [node.kappa; 5];
-        for j in 1..5 {
-            k[j] = k[j - 1] * r * -(1.0 + (j - 1) as f64 * alpha);
-        }
-        // f⁽ⁿ⁾ = g[n]·e^{iθ} with g[n+1] = i Σⱼ C(n, j) κ⁽ʲ⁾ g[n−j].
-        let mut g = [Complex::new(1.0, 0.0); 6];
-        for n in 0..5 {
-            let mut sum = Complex::ZERO;
-            for j in 0..=n {
-                sum += g[n - j].scale(BINOMIAL[n][j] * k[j]);
-            }
-            g[n + 1] = sum.mul_i();
-        }
+                                           // κ⁽ʲ⁾ = κ (−r)ʲ Πᵢ₍ᵢ<ⱼ₎ (1 + iα), j = 0..4.
+        let k0 = node.kappa;
+        let k1 = -k0 * r;
+        let k2 = -k1 * r * (1.0 + alpha);
+        let k3 = -k2 * r * (1.0 + 2.0 * alpha);
+        let k4 = -k3 * r * (1.0 + 3.0 * alpha);
         let f = Complex::cis(node.st.theta);
+        let g = derivative_factors([k0, k1, k2, k3, k4]);
         g.map(|gn| f * gn)
     }
 
@@ -325,6 +313,27 @@ fn check_count(n: usize) -> Result<()> {
     }
 }
 
+/// g₀..g₅ with f⁽ⁿ⁾ = gₙ·e^{iθ} for f = e^{iθ(s)}, θ′ = κ, given κ⁽ʲ⁾ for j = 0..4: the
+/// expansion of gₙ₊₁ = i Σⱼ C(n, j) κ⁽ʲ⁾ gₙ₋ⱼ, written out.
+#[inline]
+fn derivative_factors([k0, k1, k2, k3, k4]: [f64; 5]) -> [Complex; 6] {
+    let k00 = k0 * k0;
+    [
+        Complex::new(1.0, 0.0),
+        Complex::new(0.0, k0),
+        Complex::new(-k00, k1),
+        Complex::new(-3.0 * k0 * k1, k2 - k00 * k0),
+        Complex::new(
+            k00 * k00 - 4.0 * k0 * k2 - 3.0 * k1 * k1,
+            k3 - 6.0 * k00 * k1,
+        ),
+        Complex::new(
+            10.0 * k00 * k0 * k1 - 5.0 * k0 * k3 - 10.0 * k1 * k2,
+            k00 * k00 * k0 - 10.0 * k00 * k2 - 15.0 * k0 * k1 * k1 + k4,
+        ),
+    ]
+}
+
 /// f = e^{iθ} and its derivatives of orders 0 to 5 at a station.
 pub(crate) type Jet = [Complex; 6];
 
@@ -392,5 +401,39 @@ impl Anchor {
             kappa,
             q: 1.0 / (self.v + l * a * d_s),
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The written-out factors against the recursion gₙ₊₁ = i Σⱼ C(n, j) κ⁽ʲ⁾ gₙ₋ⱼ.
+    #[test]
+    fn derivative_factors_follow_the_leibniz_recursion() {
+        const BINOMIAL: [[f64; 5]; 5] = [
+            [1.0, 0.0, 0.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0, 0.0, 0.0],
+            [1.0, 2.0, 1.0, 0.0, 0.0],
+            [1.0, 3.0, 3.0, 1.0, 0.0],
+            [1.0, 4.0, 6.0, 4.0, 1.0],
+        ];
+        for k in [
+            [0.7, -1.3, 0.4, 2.2, -0.9],
+            [1.0, 0.0, 0.0, 0.0, 0.0],
+            [-2.0, 0.5, 3.0, -1.0, 4.0],
+        ] {
+            let mut g = [Complex::new(1.0, 0.0); 6];
+            for n in 0..5 {
+                let mut sum = Complex::ZERO;
+                for j in 0..=n {
+                    sum += g[n - j].scale(BINOMIAL[n][j] * k[j]);
+                }
+                g[n + 1] = sum.mul_i();
+            }
+            for (a, b) in derivative_factors(k).iter().zip(g) {
+                assert!((*a - b).norm() < 1e-13 * (1.0 + b.norm()), "{a:?} vs {b:?}");
+            }
+        }
     }
 }

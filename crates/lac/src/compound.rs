@@ -349,10 +349,12 @@ impl CompoundCurve {
         let step = len / (n - 1) as f64;
         let at = |i: usize| if i == n - 1 { len } else { i as f64 * step };
         let split = (0..n).take_while(|&i| at(i) <= joint).count();
-        let mut out = self.pieces[0].samples_at_arc_lengths((0..split).map(at))?;
+        let first: Vec<f64> = (0..split).map(at).collect();
+        let second: Vec<f64> = (split..n).map(|i| self.second_piece_s(at(i))).collect();
+        let mut out = self.pieces[0].samples_at_arc_lengths(&first)?;
         out.extend(
             self.pieces[1]
-                .samples_at_arc_lengths((split..n).map(|i| self.second_piece_s(at(i))))?
+                .samples_at_arc_lengths(&second)?
                 .into_iter()
                 .map(|s| Sample {
                     s: s.s + joint,

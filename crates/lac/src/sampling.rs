@@ -50,15 +50,17 @@ impl Segment {
         check_count(n)?;
         let len = self.arc_length();
         let step = len / (n - 1) as f64;
-        let at = (0..n).map(|i| if i == n - 1 { len } else { i as f64 * step });
-        self.samples_at_arc_lengths(at)
+        let at: Vec<f64> = (0..n)
+            .map(|i| if i == n - 1 { len } else { i as f64 * step })
+            .collect();
+        self.samples_at_arc_lengths(&at)
     }
 
     /// Samples at the given ascending arc lengths (caller's units, within [0, arc_length]).
-    pub(crate) fn samples_at_arc_lengths(
-        &self,
-        at: impl ExactSizeIterator<Item = f64>,
-    ) -> Result<Vec<Sample>> {
+    pub(crate) fn samples_at_arc_lengths(&self, at: &[f64]) -> Result<Vec<Sample>> {
+        if at.is_empty() {
+            return Ok(Vec::new());
+        }
         // Each sample is placed from the nearer end, where ρ is known exactly (see
         // `Segment::station_at_s`), in standard-form arc length.
         let (len, k) = (self.arc_length(), self.dir() / self.scale());
@@ -66,19 +68,22 @@ impl Segment {
             Anchor::new(&self.form, self.first),
             Anchor::new(&self.form, self.last),
         );
-        let nodes = at.map(|s| {
-            let node = if s <= 0.5 * len {
-                head.advance_s(&self.form, k * s)
-            } else {
-                tail.advance_s(&self.form, -k * (len - s))
-            };
-            node.ok_or(Error::OutOfRange {
-                name: "s",
-                value: s,
-                expected: "arc lengths between 0 and arc_length()",
+        let nodes: Vec<Node> = at
+            .iter()
+            .map(|&s| {
+                let node = if s <= 0.5 * len {
+                    head.advance_s(&self.form, k * s)
+                } else {
+                    tail.advance_s(&self.form, -k * (len - s))
+                };
+                node.ok_or(Error::OutOfRange {
+                    name: "s",
+                    value: s,
+                    expected: "arc lengths between 0 and arc_length()",
+                })
             })
-        });
-        self.samples_at_nodes(nodes)
+            .collect::<Result<_>>()?;
+        Ok(self.samples_at_nodes(&nodes))
     }
 
     /// `n ≥ 2` samples equally spaced in tangent angle, ends included.
@@ -180,34 +185,27 @@ impl Segment {
 
     /// Samples at `stations`, positions accumulated from the first one.
     pub(crate) fn samples_at(&self, stations: &[Station]) -> Vec<Sample> {
-        let nodes = stations.iter().map(|st| Ok(Node::new(&self.form, *st)));
-        self.samples_at_nodes(nodes)
-            .expect("stations are inside the curve")
+        let nodes: Vec<Node> = stations
+            .iter()
+            .map(|st| Node::new(&self.form, *st))
+            .collect();
+        self.samples_at_nodes(&nodes)
     }
 
-    /// Samples at `nodes`, positions accumulated from the first one, streamed so that no
-    /// intermediate list is built.
-    fn samples_at_nodes(
-        &self,
-        mut nodes: impl ExactSizeIterator<Item = Result<Node>>,
-    ) -> Result<Vec<Sample>> {
+    fn samples_at_nodes(&self, nodes: &[Node]) -> Vec<Sample> {
+        let mut z = self.offset_of(&nodes[0].st);
         let mut out = Vec::with_capacity(nodes.len());
-        let Some(first) = nodes.next() else {
-            return Ok(out);
-        };
-        let mut prev = first?;
-        let mut z = self.offset_of(&prev.st);
-        let mut prev_jet = self.jet_of(&prev);
-        out.push(self.sample_from(&prev, z));
-        for node in nodes {
-            let node = node?;
-            let jet = self.jet_of(&node);
-            z += self.hermite(&prev, &node, &prev_jet, &jet, 0);
-            out.push(self.sample_from(&node, z));
+        let mut prev = &nodes[0];
+        let mut prev_jet = self.jet_of(prev);
+        out.push(self.sample_from(prev, z));
+        for node in &nodes[1..] {
+            let jet = self.jet_of(node);
+            z += self.hermite(prev, node, &prev_jet, &jet, 0);
+            out.push(self.sample_from(node, z));
             prev = node;
             prev_jet = jet;
         }
-        Ok(out)
+        out
     }
 
     fn sample_from(&self, node: &Node, z: Complex) -> Sample {
@@ -401,39 +399,5 @@ impl Anchor {
             kappa,
             q: 1.0 / (self.v + l * a * d_s),
         })
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The written-out factors against the recursion gₙ₊₁ = i Σⱼ C(n, j) κ⁽ʲ⁾ gₙ₋ⱼ.
-    #[test]
-    fn derivative_factors_follow_the_leibniz_recursion() {
-        const BINOMIAL: [[f64; 5]; 5] = [
-            [1.0, 0.0, 0.0, 0.0, 0.0],
-            [1.0, 1.0, 0.0, 0.0, 0.0],
-            [1.0, 2.0, 1.0, 0.0, 0.0],
-            [1.0, 3.0, 3.0, 1.0, 0.0],
-            [1.0, 4.0, 6.0, 4.0, 1.0],
-        ];
-        for k in [
-            [0.7, -1.3, 0.4, 2.2, -0.9],
-            [1.0, 0.0, 0.0, 0.0, 0.0],
-            [-2.0, 0.5, 3.0, -1.0, 4.0],
-        ] {
-            let mut g = [Complex::new(1.0, 0.0); 6];
-            for n in 0..5 {
-                let mut sum = Complex::ZERO;
-                for j in 0..=n {
-                    sum += g[n - j].scale(BINOMIAL[n][j] * k[j]);
-                }
-                g[n + 1] = sum.mul_i();
-            }
-            for (a, b) in derivative_factors(k).iter().zip(g) {
-                assert!((*a - b).norm() < 1e-13 * (1.0 + b.norm()), "{a:?} vs {b:?}");
-            }
-        }
     }
 }

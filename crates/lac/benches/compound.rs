@@ -6,18 +6,8 @@ use kurbo::Point;
 use lac::CompoundCurve;
 use std::hint::black_box;
 
-/// SplitMix64, so the sets never change.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
+mod common;
+use common::Rng;
 
 const PAIRS: [(f64, f64); 4] = [(-1.0, 2.0), (2.0, -1.0), (0.5, 1.0), (-0.5, -0.5)];
 

@@ -10,20 +10,10 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use kurbo::Point;
 use lac::Segment;
 use std::hint::black_box;
+
+mod common;
+use common::Rng;
 use std::time::{Duration, Instant};
-
-/// A small deterministic generator (SplitMix64), so the benchmark set never changes.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
 
 /// 256 drawable configurations with P0 = (−1, 0), P2 = (1, 0) and P1 uniform in the
 /// upper half of the square [−1, 1]², as in seed 000's Fig. 9 and Table 3.

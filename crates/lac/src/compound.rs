@@ -382,7 +382,7 @@ impl CompoundCurve {
         Ok(self
             .sample_by_arc_length(n)?
             .iter()
-            .map(|s| s.point + s.tangent().turn_90() * (1.0 / s.kappa))
+            .map(Sample::center_of_curvature)
             .collect())
     }
 }

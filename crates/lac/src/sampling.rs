@@ -38,6 +38,11 @@ impl Sample {
     pub fn tangent(&self) -> Vec2 {
         Vec2::from_angle(self.theta)
     }
+
+    /// The centre of curvature, `P + N/κ` with N the left normal: a point of the evolute.
+    pub fn center_of_curvature(&self) -> Point {
+        self.point + self.tangent().turn_90() * (1.0 / self.kappa)
+    }
 }
 
 /// Largest number of samples any sampling call returns.
@@ -147,7 +152,7 @@ impl Segment {
         Ok(self
             .sample_by_arc_length(n)?
             .iter()
-            .map(|s| s.point + s.tangent().turn_90() * (1.0 / s.kappa))
+            .map(Sample::center_of_curvature)
             .collect())
     }
 

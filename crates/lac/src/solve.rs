@@ -174,34 +174,61 @@ impl ChordAngle {
     }
 
     /// g and dg/dμ at μ = 0 (both pieces arcs of the unit circle) in closed form, and a
-    /// first iterate from the saturating model g ≈ g₀ + aμ/(1 + bμ) matched to g′(0) and
-    /// g″(0): near the circle ρ = 1 + Λψ + (2 − α)Λ²ψ²/2 + O(Λ³), so P, P′ and P″ in Λ
-    /// are integrals of e^{iψ} times 1, ψ and (2 − α)ψ².
+    /// first iterate from a saturating Padé model of g at μ = 0: near the circle
+    /// ρ = 1 + Λψ + (2 − α)Λ²ψ²/2 + (2 − α)(3 − 2α)Λ³ψ³/6 + O(Λ⁴), so the derivatives of P
+    /// in Λ are integrals of ψⁿe^{iψ}.
     fn at_circle(&self) -> (f64, f64, f64) {
         let (a, b) = (-self.theta[0], self.theta[1]);
-        // Antiderivatives of e^{iψ}, ψe^{iψ} and ψ²e^{iψ}.
+        // Antiderivatives of ψⁿe^{iψ}, n = 0..3.
         let p0 = |x: f64| Complex::cis(x).mul_i().scale(-1.0);
         let p1 = |x: f64| Complex::cis(x) * Complex::new(1.0, -x);
         let p2 = |x: f64| Complex::cis(x) * Complex::new(2.0 * x, 2.0 - x * x);
-        let p = p0(b) - p0(a);
-        let dp = p1(b) - p1(a);
-        let ddp = (p2(0.0) - p2(a)).scale(2.0 - self.alpha[0])
-            + (p2(b) - p2(0.0)).scale(2.0 - self.alpha[1]);
-        let (r1, r2) = (dp.div(p), ddp.div(p));
-        let (phi1, phi2) = (r1.im, (r2 - r1 * r1).im);
-        // Λ(μ) = μ E(−kμ)/Θ: Λ′(0) = 1/Θ, Λ″(0) = −k/Θ.
-        let k = self.d / self.total;
-        let slope = phi1 / self.total;
-        let curvature = phi2 / (self.total * self.total) - phi1 * k / self.total;
-        let g0 = 0.5 * self.total - self.theta_e;
-        let rate = -curvature / (2.0 * slope);
-        let denominator = slope + rate * g0;
-        let first = if denominator > 0.0 {
-            -g0 / denominator
-        } else {
-            -g0 / slope
+        let p3 = |x: f64| Complex::cis(x) * Complex::new(3.0 * x * x - 6.0, 6.0 * x - x * x * x);
+        // ∂ⁿP/∂Λⁿ at Λ = 0: ρ = 1 + Λψ + (2−α)Λ²ψ²/2 + (2−α)(3−2α)Λ³ψ³/6 + O(Λ⁴).
+        let piecewise = |f: &dyn Fn(f64) -> Complex, c: &dyn Fn(f64) -> f64| {
+            (f(0.0) - f(a)).scale(c(self.alpha[0])) + (f(b) - f(0.0)).scale(c(self.alpha[1]))
         };
-        (g0, slope, first)
+        let p = p0(b) - p0(a);
+        let r1 = (p1(b) - p1(a)).div(p);
+        let r2 = piecewise(&p2, &|al| 2.0 - al).div(p);
+        let r3 = piecewise(&p3, &|al| (2.0 - al) * (3.0 - 2.0 * al)).div(p);
+        // Derivatives of φ = Im ln P in Λ.
+        let phi1 = r1.im;
+        let phi2 = (r2 - r1 * r1).im;
+        let phi3 = (r3 - (r1 * r2).scale(3.0) + (r1 * r1 * r1).scale(2.0)).im;
+        // Λ(μ) = μ E(−kμ)/Θ: Λ′ = 1/Θ, Λ″ = −k/Θ, Λ‴ = k²/Θ at μ = 0.
+        let (k, t) = (self.d / self.total, self.total);
+        let (l1, l2, l3) = (1.0 / t, -k / t, k * k / t);
+        let g1 = phi1 * l1;
+        let g2 = phi2 * l1 * l1 + phi1 * l2;
+        let g3 = phi3 * l1 * l1 * l1 + 3.0 * phi2 * l1 * l2 + phi1 * l3;
+        let g0 = 0.5 * self.total - self.theta_e;
+        // The root of the Padé model g ≈ g₀ + aμ/(1 + bμ + cμ²), which saturates like the
+        // chord angle does; matched to g′, g″, g‴ at 0: a = g′, b = −g″/(2a),
+        // c = b² − g‴/(6a). Its root solves g₀cμ² + (g₀b + a)μ + g₀ = 0; kept only if it is
+        // within a factor 3 of the Newton step.
+        let linear = -g0 / g1;
+        let (pa, pb) = (g1, -g2 / (2.0 * g1));
+        let pc = pb * pb - g3 / (6.0 * g1);
+        let (qa, qb, qc) = (g0 * pc, g0 * pb + pa, g0);
+        let first = if qa.abs() <= 1e-12 * qb.abs() {
+            -qc / qb
+        } else {
+            let disc = qb * qb - 4.0 * qa * qc;
+            // The root that tends to −qc/qb as qa → 0.
+            let q = -0.5 * (qb + qb.signum() * disc.max(0.0).sqrt());
+            if disc >= 0.0 && q != 0.0 {
+                qc / q
+            } else {
+                linear
+            }
+        };
+        let first = if first.is_finite() && first > linear / 3.0 && first < 3.0 * linear {
+            first
+        } else {
+            linear
+        };
+        (g0, g1, first)
     }
 
     /// Where the search may stop growing μ, and whether that is a limit of the family

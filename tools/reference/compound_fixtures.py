@@ -71,6 +71,7 @@ sys.path.insert(0, HERE)
 from mpmath import mp, mpf, mpc, arg, atan2, conj, expj, expm1, fabs, inf, log, pi  # noqa: E402
 
 from lac_mpmath import StandardForm  # noqa: E402
+from segment_mpmath import illinois  # noqa: E402
 import segment_mpmath  # noqa: E402
 
 DPS = 40
@@ -206,29 +207,6 @@ class Std:
         if self.lmax < inf and x1 >= self.lmax * (1 - mpf("1e-12")):
             raise IllConditioned("Lambda within 1e-12 of its bound")
         return x1
-
-
-def illinois(f, a, fa, b, fb, tol):
-    side = 0
-    c = a
-    for _ in range(400):
-        c = (a * fb - b * fa) / (fb - fa)
-        fc = f(c)
-        if fabs(fc) < tol:
-            return c
-        if fc > 0:
-            b, fb = c, fc
-            if side == -1:
-                fa /= 2
-            side = -1
-        else:
-            a, fa = c, fc
-            if side == 1:
-                fb /= 2
-            side = 1
-        if b - a <= tol * b:
-            return c
-    raise RuntimeError("Illinois did not converge")
 
 
 # ---------------------------------------------------------------------------------------

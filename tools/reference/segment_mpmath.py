@@ -66,7 +66,7 @@ def illinois(f, a, fa, b, fb, tol):
     """Root of increasing f in [a, b], fa < 0 < fb, to |f| < tol or width tol * b."""
     side = 0
     c = a
-    for _ in range(300):
+    for _ in range(400):
         c = (a * fb - b * fa) / (fb - fa)
         fc = f(c)
         if fabs(fc) < tol:

@@ -5,7 +5,7 @@ use kurbo::{Point, Vec2};
 
 use crate::error::{finite, Error, NotDrawable, Result};
 use crate::lcg::LcgLine;
-use crate::sampling::Sample;
+use crate::sampling::{check_count, Sample};
 use crate::segment::{control_triangle, Segment};
 use crate::solve::ChordAngle;
 use crate::standard_form::Station;
@@ -287,6 +287,15 @@ impl CompoundCurve {
     /// The piece holding arc length `s` and the arc length within it.
     fn locate(&self, s: f64) -> Result<(&Segment, f64)> {
         finite("s", s)?;
+        let len = self.arc_length();
+        let slack = 1e-12 * len;
+        if !(s >= -slack && s <= len + slack) {
+            return Err(Error::OutOfRange {
+                name: "s",
+                value: s,
+                expected: "an arc length between 0 and arc_length()",
+            });
+        }
         let joint = self.joint_s();
         if s <= joint {
             Ok((&self.pieces[0], s))
@@ -338,13 +347,7 @@ impl CompoundCurve {
 
     /// `n ≥ 2` samples equally spaced in arc length over the whole curve, ends included.
     pub fn sample_by_arc_length(&self, n: usize) -> Result<Vec<Sample>> {
-        if !(2..=10_000_000).contains(&n) {
-            return Err(Error::OutOfRange {
-                name: "samples",
-                value: n as f64,
-                expected: "between 2 and 10000000 samples",
-            });
-        }
+        check_count(n)?;
         let (len, joint) = (self.arc_length(), self.joint_s());
         let step = len / (n - 1) as f64;
         let at = |i: usize| if i == n - 1 { len } else { i as f64 * step };

@@ -304,7 +304,7 @@ fn span(seg: &Segment, a: &Station, b: &Station) -> Complex {
     }
 }
 
-fn check_count(n: usize) -> Result<()> {
+pub(crate) fn check_count(n: usize) -> Result<()> {
     if (2..=MAX_SAMPLES).contains(&n) {
         Ok(())
     } else {

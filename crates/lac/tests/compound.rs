@@ -185,6 +185,15 @@ fn errors_name_the_problem() {
             second: "right"
         })
     ));
+    // Arc lengths outside the curve are refused, not clamped to an end.
+    let c = CompoundCurve::from_three_points(three(), 0.5, -1.0, 0.5).unwrap();
+    for s in [-0.1, 1.5 * c.arc_length(), f64::INFINITY, f64::NAN] {
+        assert!(
+            c.point_at_s(s).is_err() && c.curvature_at_s(s).is_err(),
+            "s = {s}"
+        );
+    }
+    assert!(c.point_at_s(c.arc_length()).is_ok() && c.sample_by_arc_length(1).is_err());
     for ratio in [0.0, 1.0, 1.5, f64::NAN] {
         assert!(CompoundCurve::from_three_points(three(), 0.5, 0.5, ratio).is_err());
     }

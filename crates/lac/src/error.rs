@@ -69,6 +69,25 @@ pub enum Error {
     /// The control points and α admit no log-aesthetic segment.
     #[error("not drawable: {0}")]
     NotDrawable(NotDrawable),
+    /// No cubic with the curve's end points, end tangents and end curvatures follows it
+    /// (the least-squares fit left the admissible region, or the G2 Hermite system has no
+    /// admissible root): the curve changes curvature too much for one piece.
+    #[error(
+        "no single cubic with the curve's end points, tangents and curvatures follows it \
+         (its curvature changes too much); give a tolerance so that it can be split"
+    )]
+    FitFailed,
+    /// Pieces within the requested tolerance could not be found.
+    #[error(
+        "no chain of cubics with monotone curvature meets the tolerance {tolerance:e} (best \
+         deviation reached {reached:e}, relative to the arc length); use a larger tolerance"
+    )]
+    ToleranceNotMet {
+        /// The requested maximum deviation, relative to the arc length.
+        tolerance: f64,
+        /// The smallest deviation reached for the piece that failed, relative.
+        reached: f64,
+    },
 }
 
 impl Error {
@@ -81,6 +100,8 @@ impl Error {
             Error::InflectedPolygon { .. } => "inflected_polygon",
             Error::OutOfRange { .. } => "out_of_range",
             Error::NotDrawable(_) => "not_drawable",
+            Error::FitFailed => "fit_failed",
+            Error::ToleranceNotMet { .. } => "tolerance_not_met",
         }
     }
 }

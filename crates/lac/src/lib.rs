@@ -32,23 +32,33 @@
 //! assert!(seg.curvature_start() < 0.0);
 //! ```
 
+mod analysis;
+mod bezier;
 mod compound;
 mod error;
 mod gauss;
 mod integrate;
 mod kurbo_impl;
 mod lcg;
+mod monotone;
 mod numeric;
+mod quasi;
 pub mod region;
 mod sampling;
 mod segment;
 mod solve;
 mod standard_form;
 
+pub use analysis::{
+    curvature_plot, log_curvature_graph, CurvaturePoint, LcgFit, LogCurvatureGraph,
+};
+pub use bezier::RationalCubic;
 pub use compound::CompoundCurve;
 pub use error::{Error, NotDrawable, Result};
 pub use kurbo_impl::SegmentDerivative;
 pub use lcg::LcgLine;
+pub use monotone::{Monotonicity, MonotonicityReport};
+pub use quasi::{QuasiCurve, QuasiPiece};
 pub use sampling::Sample;
 pub use segment::Segment;
 pub use standard_form::{Classification, InfiniteRadiusEnd, StandardForm, ZeroRadiusEnd};

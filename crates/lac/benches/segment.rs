@@ -12,8 +12,7 @@ use lac::Segment;
 use std::hint::black_box;
 
 mod common;
-use common::Rng;
-use std::time::{Duration, Instant};
+use common::{median_per_call, Rng};
 
 /// 256 drawable configurations with P0 = (−1, 0), P2 = (1, 0) and P1 uniform in the
 /// upper half of the square [−1, 1]², as in seed 000's Fig. 9 and Table 3.
@@ -62,21 +61,6 @@ fn bench_solve_and_sample(c: &mut Criterion) {
         });
     }
     group.finish();
-}
-
-/// Time each call on its own and report the median over the calls, i.e. over the
-/// configurations of the set, as criterion's time per iteration (the groups above report the
-/// mean over the set instead). Includes ~20 ns of `Instant::now` per call.
-fn median_per_call<T>(iters: u64, set: &[T], mut f: impl FnMut(&T)) -> Duration {
-    let mut times: Vec<Duration> = (0..iters as usize)
-        .map(|k| {
-            let start = Instant::now();
-            f(&set[k % set.len()]);
-            start.elapsed()
-        })
-        .collect();
-    times.sort_unstable();
-    times[times.len() / 2] * iters as u32
 }
 
 fn bench_medians(c: &mut Criterion) {

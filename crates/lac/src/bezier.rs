@@ -194,7 +194,11 @@ pub(crate) fn power_basis(q: &[Hom; 4]) -> [Hom; 4] {
 }
 
 pub(crate) fn hom_jet(q: &[Hom; 4], t: f64) -> HomJet {
-    let c = power_basis(q);
+    power_jet(&power_basis(q), t)
+}
+
+/// P and its derivatives at `t` from the power-basis coefficients `c`.
+pub(crate) fn power_jet(c: &[Hom; 4], t: f64) -> HomJet {
     let p = std::array::from_fn(|i| c[0][i] + t * (c[1][i] + t * (c[2][i] + t * c[3][i])));
     let d1 = std::array::from_fn(|i| c[1][i] + t * (2.0 * c[2][i] + 3.0 * t * c[3][i]));
     let d2 = std::array::from_fn(|i| 2.0 * c[2][i] + 6.0 * t * c[3][i]);

@@ -21,7 +21,7 @@
 
 use kurbo::{Point, Vec2};
 
-use crate::bezier::{hom_jet, numerator, RationalCubic};
+use crate::bezier::{numerator, power_basis, power_jet, RationalCubic};
 use crate::error::{Error, Result};
 
 /// How the signed curvature κ of a curve varies with its parameter (SPEC §5).
@@ -491,25 +491,44 @@ fn decide(n: &Poly<Bounded>, curve: &RationalCubic) -> MonotonicityReport {
 
 /// Bisection for a sign change of dκ/ds between `t0` (where its sign is `s0`) and `t1`.
 fn sign_change(curve: &RationalCubic, t0: f64, t1: f64, s0: Sign) -> f64 {
-    let q = curve.homogeneous();
-    let (mut lo, mut hi) = (t0, t1);
-    for _ in 0..64 {
-        let m = 0.5 * (lo + hi);
-        if m <= lo.min(hi) || m >= lo.max(hi) {
-            break;
+    let c = power_basis(&curve.homogeneous());
+    let sign = if s0 == Sign::Positive { 1.0 } else { -1.0 };
+    // f > 0 at t0 and < 0 at t1 (certified by the Bernstein bounds).
+    let f = |t: f64| sign * numerator(&power_jet(&c, t));
+    let (mut a, mut fa, mut b, mut fb) = (t0, f(t0), t1, f(t1));
+    if !(fa > 0.0 && fb < 0.0) {
+        // Pointwise rounding disagrees with the certified signs: plain bisection.
+        (fa, fb) = (1.0, -1.0);
+    }
+    // Illinois: regula falsi that halves the stale end's value.
+    let mut stale = 0;
+    for _ in 0..100 {
+        let mut m = (a * fb - b * fa) / (fb - fa);
+        if !(m > a && m < b) {
+            m = 0.5 * (a + b);
         }
-        let value = numerator(&hom_jet(&q, m));
-        if value == 0.0 {
+        let fm = f(m);
+        if fm == 0.0 {
             return m;
         }
-        let same = (value > 0.0) == (s0 == Sign::Positive);
-        if same {
-            lo = m;
+        if fm < 0.0 {
+            (b, fb) = (m, fm);
+            if stale == -1 {
+                fa *= 0.5;
+            }
+            stale = -1;
         } else {
-            hi = m;
+            (a, fa) = (m, fm);
+            if stale == 1 {
+                fb *= 0.5;
+            }
+            stale = 1;
+        }
+        if b - a <= 4.0 * f64::EPSILON * b {
+            break;
         }
     }
-    0.5 * (lo + hi)
+    0.5 * (a + b)
 }
 
 #[cfg(test)]
@@ -537,7 +556,7 @@ mod tests {
                     w[k] = (1.0 - t) * w[k] + t * w[k + 1];
                 }
             }
-            let want = numerator(&hom_jet(&qf, t));
+            let want = numerator(&crate::bezier::hom_jet(&qf, t));
             assert!(
                 (w[0] - want).abs() < 1e-12 * want.abs().max(1e-3),
                 "{t}: {} {want}",

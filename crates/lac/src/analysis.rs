@@ -161,7 +161,7 @@ fn fit_line(points: &[(f64, f64)]) -> Option<LcgFit> {
         sx += w * x;
         sy += w * y;
     }
-    if !(sw > 0.0) {
+    if !sw.is_finite() || sw <= 0.0 {
         return None;
     }
     let (mx, my) = (sx / sw, sy / sw);
@@ -177,7 +177,10 @@ fn fit_line(points: &[(f64, f64)]) -> Option<LcgFit> {
             (lo.min(p.0), hi.max(p.0))
         });
     // ln ρ must vary by more than its rounding for a slope to mean anything.
-    if !(sxx > 0.0) || range.1 - range.0 <= 1e-12 * range.0.abs().max(range.1.abs()).max(1.0) {
+    if !sxx.is_finite()
+        || sxx <= 0.0
+        || range.1 - range.0 <= 1e-12 * range.0.abs().max(range.1.abs()).max(1.0)
+    {
         return None;
     }
     let alpha = sxy / sxx;

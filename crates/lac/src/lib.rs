@@ -13,7 +13,14 @@
 //! * [`CompoundCurve`]: two pieces of slopes α0 and α1 joined with G3 continuity, from
 //!   three control points and a turning ratio (seed 004) or from four control points
 //!   (seed 002), with the logarithmic curvature graph of each piece ([`LcgLine`]);
-//! * [`region`]: the drawable region of seed 000 Fig. 9, and of compound curves.
+//! * [`region`]: the drawable region of seed 000 Fig. 9, and of compound curves;
+//! * [`RationalCubic`]: rational cubic Bézier curves, with a curvature-monotonicity test
+//!   whose verdict is a proof ([`RationalCubic::curvature_monotonicity`], seed 001 §5);
+//! * [`QuasiCurve`]: quasi-aesthetic curves (seed 001 §4), one rational cubic fitted as in
+//!   the seed ([`Segment::to_rational_cubic`]) or G2 chains of rational or plain cubics
+//!   within a tolerance ([`Segment::to_rational_cubics`], [`Segment::to_cubics`]);
+//! * [`curvature_plot`] and [`log_curvature_graph`]: the curvature plot and logarithmic
+//!   curvature graph of any chain of Bézier pieces, with a least-squares α ([`LcgFit`]).
 //!
 //! The crate does no I/O. Signed curvature is positive for left turns.
 //!

@@ -273,8 +273,8 @@ impl Poly<Bounded> {
         let n = value.n;
         let mut c = [Bounded::default(); MAX_DEGREE + 1];
         let mut binomial = 1.0;
-        for k in 0..=n {
-            c[k] = Bounded {
+        for (k, ck) in c[..=n].iter_mut().enumerate() {
+            *ck = Bounded {
                 v: value.c[k] / binomial,
                 e: NUMERATOR_ROUNDING * magnitude.c[k].0 / binomial + ETA,
             };
@@ -306,7 +306,10 @@ impl Poly<Bounded> {
 /// The homogeneous control points relative to b₀, scaled by powers of two (exact) so that
 /// coordinates and weights are at most 1 in magnitude, as values and as magnitudes; the
 /// rounding of b − b₀ is the first of the K roundings.
-fn scaled_homogeneous(b: [Point; 4], w: [f64; 4]) -> Result<([[f64; 3]; 4], [[Mag; 3]; 4])> {
+/// Four homogeneous control points.
+type Homogeneous<T> = [[T; 3]; 4];
+
+fn scaled_homogeneous(b: [Point; 4], w: [f64; 4]) -> Result<(Homogeneous<f64>, Homogeneous<Mag>)> {
     let d: [Vec2; 4] = std::array::from_fn(|i| b[i] - b[0]);
     let size = d
         .iter()
@@ -320,7 +323,7 @@ fn scaled_homogeneous(b: [Point; 4], w: [f64; 4]) -> Result<([[f64; 3]; 4], [[Ma
     }
     let ks = power_of_two_below(size);
     let kw = power_of_two_below(w[0].max(w[1]).max(w[2]).max(w[3]));
-    let q: [[f64; 3]; 4] = std::array::from_fn(|i| {
+    let q: Homogeneous<f64> = std::array::from_fn(|i| {
         let wi = w[i] * kw;
         [d[i].x * ks * wi, d[i].y * ks * wi, wi]
     });

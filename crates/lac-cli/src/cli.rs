@@ -7,10 +7,11 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use crate::failure::Failure;
 
 /// Log-aesthetic curves: segments from three control points, compound-rhythm curves of two
-/// pieces, and drawable regions.
+/// pieces, drawable regions, their cubic Bézier replacements, and curvature analysis.
 ///
 /// Errors go to standard error as one line of JSON, {"error":{"kind":…,"message":…}}, with
-/// exit code 2 for invalid input, 3 when the points and slopes admit no curve, 1 for I/O.
+/// exit code 2 for invalid input, 3 when the points and slopes admit no curve (or no Bézier
+/// fit meets the request), 1 for I/O.
 #[derive(Debug, Parser)]
 #[command(name = "lac", version, max_term_width = 100)]
 pub(crate) struct Cli {
@@ -45,6 +46,44 @@ pub(crate) enum Command {
                                 lac region --alpha A --alpha1 B --ratio R [OPTIONS]"
     )]
     Region(RegionArgs),
+    /// Replace a segment or compound curve by rational (or plain) cubic Bézier pieces with its
+    /// end points, tangents and curvatures (seed 001): one piece, or as many as a tolerance
+    /// needs; print them as JSON or draw them over the curve
+    ///
+    /// Each piece has its control points and weights, its curvature verdict ("monotone", with
+    /// "proven" true when it is a proof, and "t" where dκ/ds changes sign if not monotone), the
+    /// turning of the curve at its ends (radians from the first point) and its largest
+    /// deviation from the curve in the points' units; "rms" and "max" are relative to the arc
+    /// length.
+    #[command(
+        override_usage = "lac quasi --points \"x0,y0 x1,y1 x2,y2\" --alpha A [--tolerance T [--cubic]] \
+                                [--format json|svg] [-o FILE]\n       \
+                                lac quasi --points \"x0,y0 x1,y1 x2,y2\" --alpha0 A --alpha1 B --ratio R \
+                                [OPTIONS]\n       \
+                                lac quasi --points \"x0,y0 x1,y1 x2,y2 x3,y3\" --alpha0 A --alpha1 B \
+                                [OPTIONS]"
+    )]
+    Quasi(QuasiArgs),
+    /// Decide, with a proof, whether the curvature of a (rational) cubic Bézier curve is
+    /// monotone
+    ///
+    /// Prints one line, {"verdict":"increasing"|"decreasing"|"constant"|"not_monotone",
+    /// "proven":true|false}, with "t", a parameter where dκ/ds changes sign, when not monotone.
+    /// "proven" is false where dκ/ds is zero within rounding (always for a circular arc).
+    #[command(
+        override_usage = "lac monotone --points \"x0,y0 x1,y1 x2,y2 x3,y3\" [--weights \"w0,w1,w2,w3\"]"
+    )]
+    Monotone(MonotoneArgs),
+    /// Curvature plot and logarithmic curvature graph, with its fitted slope alpha, of Bézier
+    /// pieces (lac quasi output) or of a lac segment or lac compound result
+    ///
+    /// The graph plots ln ρ against ln(ρ |ds/dρ|) with the exact dκ/ds of each piece; its line
+    /// is fitted by least squares weighted along ln ρ, so a log-aesthetic curve gives its own
+    /// alpha back.
+    #[command(
+        override_usage = "lac lcg [FILE|-] [--samples N] [--format json|csv|svg|png] [-o FILE]"
+    )]
+    Lcg(LcgArgs),
 }
 
 /// Arguments of `lac segment`.
@@ -243,4 +282,137 @@ pub(crate) enum RegionFormat {
     /// {"alpha","size","extent","first","last","drawable_fraction","drawable":[[bool…]…]},
     /// with "alpha1" and "ratio" after "alpha" for compound curves
     Json,
+}
+
+/// Arguments of `lac quasi`.
+#[derive(Debug, Args)]
+pub(crate) struct QuasiArgs {
+    /// The control points, separated by spaces and/or semicolons: three with --alpha (a
+    /// segment), three with --alpha0, --alpha1 and --ratio, or four with --alpha0 and --alpha1
+    /// (a compound curve, as in lac compound)
+    #[arg(long, value_name = "POINTS", allow_hyphen_values = true)]
+    pub(crate) points: String,
+
+    /// A segment: the slope of its logarithmic curvature graph
+    #[arg(
+        long,
+        value_name = "A",
+        allow_hyphen_values = true,
+        conflicts_with_all = ["alpha0", "alpha1", "ratio"]
+    )]
+    pub(crate) alpha: Option<f64>,
+
+    /// A compound curve: the slope of the piece from the first point to the joint
+    #[arg(
+        long,
+        value_name = "A",
+        allow_hyphen_values = true,
+        requires = "alpha1"
+    )]
+    pub(crate) alpha0: Option<f64>,
+
+    /// A compound curve: the slope of the piece from the joint to the last point
+    #[arg(
+        long,
+        value_name = "B",
+        allow_hyphen_values = true,
+        requires = "alpha0"
+    )]
+    pub(crate) alpha1: Option<f64>,
+
+    /// A compound curve from three points: the share of the turning made by the alpha0
+    /// piece, strictly between 0 and 1
+    #[arg(
+        long,
+        value_name = "R",
+        allow_hyphen_values = true,
+        requires = "alpha0"
+    )]
+    pub(crate) ratio: Option<f64>,
+
+    /// Use as many pieces as needed for a maximum deviation of T times the arc length (1e-12
+    /// to 1), each with curvature proven monotone, joined with continuous curvature. Without
+    /// it: the single rational cubic of seed 001
+    #[arg(long, value_name = "T")]
+    pub(crate) tolerance: Option<f64>,
+
+    /// Plain cubic Bézier pieces (all weights 1) instead of rational ones, for consumers that
+    /// only take cubics (needs --tolerance)
+    #[arg(long, requires = "tolerance")]
+    pub(crate) cubic: bool,
+
+    /// Output format
+    #[arg(long, value_enum, default_value_t = QuasiFormat::Json)]
+    pub(crate) format: QuasiFormat,
+
+    /// Write to FILE instead of standard output
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub(crate) file: Option<PathBuf>,
+}
+
+/// Output formats of `lac quasi`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum QuasiFormat {
+    /// One line: pieces [{points, weights, monotone, proven, turning, max_deviation}], rms,
+    /// max (relative to the arc length), arc_length, tolerance, kind ("rational" or "cubic")
+    Json,
+    /// The Bézier pieces over the log-aesthetic curve, their control polygons and joints, and
+    /// the curvature combs of both
+    Svg,
+}
+
+/// Arguments of `lac monotone`.
+#[derive(Debug, Args)]
+pub(crate) struct MonotoneArgs {
+    /// The four control points "x0,y0 x1,y1 x2,y2 x3,y3", separated by spaces and/or
+    /// semicolons
+    #[arg(long, value_name = "POINTS", allow_hyphen_values = true)]
+    pub(crate) points: String,
+
+    /// The four weights "w0,w1,w2,w3", all positive (default 1,1,1,1: a plain cubic)
+    #[arg(long, value_name = "WEIGHTS")]
+    pub(crate) weights: Option<String>,
+}
+
+/// Arguments of `lac lcg`.
+#[derive(Debug, Args)]
+pub(crate) struct LcgArgs {
+    /// The JSON to analyse ("-" or nothing: standard input): {"pieces":[{"points":[[x,y],…],
+    /// "weights":[…]},…]} with four points a piece and optional weights (the output of lac
+    /// quasi), or one result of lac segment or lac compound
+    #[arg(value_name = "FILE")]
+    pub(crate) input: Option<PathBuf>,
+
+    /// Curvature points: for Bézier pieces, per piece, equally spaced in t (default 64); for a
+    /// log-aesthetic curve, in all, equally spaced in arc length (default 257)
+    #[arg(
+        long,
+        value_name = "N",
+        value_parser = clap::value_parser!(u32).range(2..=1_000_000)
+    )]
+    pub(crate) samples: Option<u32>,
+
+    /// Output format
+    #[arg(long, value_enum, default_value_t = LcgFormat::Json)]
+    pub(crate) format: LcgFormat,
+
+    /// Write to FILE instead of standard output (PNG goes to standard output only when it is
+    /// not a terminal)
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub(crate) file: Option<PathBuf>,
+}
+
+/// Output formats of `lac lcg`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum LcgFormat {
+    /// One line: points [{s, kappa, dkappa_ds, log_rho, log_lcg}] and fit {alpha, intercept,
+    /// rms_residual, max_residual, log_rho} (null when there is no line)
+    Json,
+    /// A header s,kappa,dkappa_ds,log_rho,log_lcg and one row per point (empty where there is
+    /// no graph point)
+    Csv,
+    /// Two panels: the curvature plot and the logarithmic curvature graph with its line
+    Svg,
+    /// The same picture as svg, rendered
+    Png,
 }

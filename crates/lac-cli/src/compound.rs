@@ -44,11 +44,7 @@ pub(crate) fn run(args: &CompoundArgs) -> Result<(), Failure> {
             "give --points, --alpha0 and --alpha1 (and --ratio for three points), or --batch FILE",
         ));
     };
-    let points = parse_point_list(text, &[3, 4])?;
-    let curve = solve(&points, alpha0, alpha1, args.ratio, "--ratio").map_err(|e| match e {
-        Misfit::Form(message) => Failure::usage(message),
-        Misfit::Solver(failure) => failure,
-    })?;
+    let (curve, points) = from_arguments(text, alpha0, alpha1, args.ratio)?;
     let document = match output.format {
         CurveFormat::Json => {
             CompoundReport::new(&curve, &points, args.ratio, samples)?.to_json_line() + "\n"
@@ -84,8 +80,24 @@ pub(crate) fn solve_job(text: &str, samples: usize) -> Result<String, Failure> {
     Ok(CompoundReport::new(&curve, &points, job.ratio, samples)?.to_json_line())
 }
 
+/// The compound curve for the command-line arguments `--points` (`text`), `--alpha0`,
+/// `--alpha1` and `--ratio`, and the points it was solved from.
+pub(crate) fn from_arguments(
+    text: &str,
+    alpha0: f64,
+    alpha1: f64,
+    ratio: Option<f64>,
+) -> Result<(CompoundCurve, Vec<Point>), Failure> {
+    let points = parse_point_list(text, &[3, 4])?;
+    let curve = solve(&points, alpha0, alpha1, ratio, "--ratio").map_err(|e| match e {
+        Misfit::Form(message) => Failure::usage(message),
+        Misfit::Solver(failure) => failure,
+    })?;
+    Ok((curve, points))
+}
+
 /// Why [`solve`] gave no curve.
-enum Misfit {
+pub(crate) enum Misfit {
     /// The number of points and the presence of a ratio do not make one of the two forms
     /// (a usage error on the command line, invalid input in a batch).
     Form(String),
@@ -95,7 +107,7 @@ enum Misfit {
 
 /// The compound curve for three points and `ratio` (seed 004) or four control points and no
 /// ratio (seed 002); `ratio_name` is what the caller calls the ratio, for messages.
-fn solve(
+pub(crate) fn solve(
     points: &[Point],
     alpha0: f64,
     alpha1: f64,

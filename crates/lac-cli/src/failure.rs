@@ -7,8 +7,9 @@ use serde::Serialize;
 
 /// A failure reported as `{"error":{"kind":…,"message":…}}`.
 ///
-/// Exit codes: 2 for invalid input and usage errors, 3 for [`lac::Error::NotDrawable`],
-/// 1 for I/O errors.
+/// Exit codes: 2 for invalid input and usage errors, 3 when the numbers are valid but admit
+/// no result ([`lac::Error::NotDrawable`], [`lac::Error::FitFailed`],
+/// [`lac::Error::ToleranceNotMet`]), 1 for I/O errors.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub(crate) struct Failure {
     /// A snake_case name: the library's [`lac::Error::kind`], or "usage", "invalid_input",
@@ -57,7 +58,7 @@ impl Failure {
     pub(crate) fn exit_code(&self) -> u8 {
         match self.kind {
             "io" => 1,
-            "not_drawable" => 3,
+            "not_drawable" | "fit_failed" | "tolerance_not_met" => 3,
             _ => 2,
         }
     }
@@ -90,7 +91,8 @@ impl From<lac::Error> for Failure {
 pub(crate) fn from_clap(err: &clap::Error) -> Failure {
     if err.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
         return Failure::usage(
-            "no subcommand given: use 'lac segment', 'lac compound' or 'lac region'; see 'lac --help'",
+            "no subcommand given: use 'lac segment', 'lac compound', 'lac region', 'lac quasi', \
+             'lac monotone' or 'lac lcg'; see 'lac --help'",
         );
     }
     let text = err.render().to_string();

@@ -5,16 +5,25 @@
 //! compound-rhythm curve (two pieces, slopes α0 and α1) from three points and a turning
 //! ratio or from four control points; both print samples as JSON, CSV or SVG, one at a time
 //! or in batches of JSON lines. `lac region` maps the drawable region of seed 000 Fig. 9,
-//! for segments or compound curves. Failures are one line of JSON on standard error:
-//! `{"error":{"kind":…,"message":…}}`, exit code 2 for invalid input, 3 for
-//! "not drawable", 1 for I/O. See `lac --help`.
+//! for segments or compound curves. `lac quasi` replaces either curve by rational or plain
+//! cubic Bézier pieces (seed 001), `lac monotone` decides whether the curvature of a
+//! rational cubic is monotone, and `lac lcg` plots the curvature and the logarithmic
+//! curvature graph of Bézier pieces or of a curve and fits its slope. Failures are one line
+//! of JSON on standard error: `{"error":{"kind":…,"message":…}}`, exit code 2 for invalid
+//! input, 3 for "not drawable" (and a Bézier fit that fails or misses its tolerance), 1 for
+//! I/O. See `lac --help`.
 
 mod batch;
 mod cli;
 mod compound;
+mod curve;
 mod failure;
+mod lcg;
+mod monotone;
 mod output;
 mod points;
+mod quasi;
+mod raster;
 mod region;
 mod report;
 mod segment;
@@ -46,6 +55,9 @@ fn main() -> ExitCode {
         Command::Segment(args) => segment::run(args),
         Command::Compound(args) => compound::run(args),
         Command::Region(args) => region::run(args),
+        Command::Quasi(args) => quasi::run(args),
+        Command::Monotone(args) => monotone::run(args),
+        Command::Lcg(args) => lcg::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -42,6 +42,29 @@ pub(crate) fn parse_point_list(text: &str, counts: &[usize]) -> Result<Vec<Point
         .collect()
 }
 
+/// Parse the four weights "w0,w1,w2,w3" of a rational cubic, separated by commas, spaces
+/// and/or semicolons. Whether they are positive and finite is the library's to say.
+pub(crate) fn parse_weights(text: &str) -> Result<[f64; 4], Failure> {
+    let tokens: Vec<&str> = text
+        .split(|c: char| c == ',' || c == ';' || c.is_whitespace())
+        .filter(|t| !t.is_empty())
+        .collect();
+    let [w0, w1, w2, w3] = tokens[..] else {
+        return Err(Failure::invalid_input(format!(
+            "expected 4 weights \"w0,w1,w2,w3\", got {} in {text:?}",
+            tokens.len()
+        )));
+    };
+    let parse = |i: usize, token: &str| {
+        token.parse::<f64>().map_err(|_| {
+            Failure::invalid_input(format!(
+                "weight w{i} {token:?} is not a number; write the weights as \"w0,w1,w2,w3\""
+            ))
+        })
+    };
+    Ok([parse(0, w0)?, parse(1, w1)?, parse(2, w2)?, parse(3, w3)?])
+}
+
 /// Remove whitespace on either side of each comma, so "1 , 2" reads as one point.
 fn tighten_commas(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
@@ -119,6 +142,19 @@ mod tests {
         );
         let err = parse_point_list("0,0 1,0", &[3, 4]).unwrap_err();
         assert!(err.message.contains("expected 3 or 4 points"), "{err}");
+    }
+
+    #[test]
+    fn weights_take_commas_or_spaces_and_exactly_four_numbers() {
+        assert_eq!(parse_weights("1,0.5, 2 ;3").unwrap(), [1.0, 0.5, 2.0, 3.0]);
+        assert_eq!(parse_weights("1 1 1 1").unwrap(), [1.0; 4]);
+        for text in ["", "1,1,1", "1,1,1,1,1", "1,x,1,1"] {
+            assert_eq!(
+                parse_weights(text).unwrap_err().kind,
+                "invalid_input",
+                "{text:?}"
+            );
+        }
     }
 
     #[test]

@@ -596,23 +596,13 @@ mod tests {
     }
 
     #[test]
-    fn a_spiral_arc_is_proven_monotone() {
-        // A polynomial cubic with the middle control points pulled toward the sharp end.
-        let c = curve([(0.0, 0.0), (1.0, 0.0), (1.6, 0.3), (1.9, 0.9)], [1.0; 4]);
+    fn a_spiral_arc_is_proven_increasing() {
+        // A polynomial cubic whose legs shorten toward the sharp end.
+        let c = curve([(0.0, 0.0), (1.2, 0.0), (2.0, 0.4), (2.4, 1.0)], [1.0; 4]);
         let r = c.curvature_monotonicity().unwrap();
+        assert_eq!(r.verdict, Monotonicity::Increasing);
         assert!(r.proven);
-        let dense: Vec<f64> = (0..=1000)
-            .map(|i| c.curvature_derivative(i as f64 / 1000.0))
-            .collect();
-        let want = if dense.iter().all(|&d| d >= 0.0) {
-            Monotonicity::Increasing
-        } else if dense.iter().all(|&d| d <= 0.0) {
-            Monotonicity::Decreasing
-        } else {
-            assert!(matches!(r.verdict, Monotonicity::NotMonotone { .. }));
-            return;
-        };
-        assert_eq!(r.verdict, want);
+        assert!((0..=1000).all(|i| c.curvature_derivative(i as f64 / 1000.0) > 0.0));
     }
 
     #[test]

@@ -16,15 +16,16 @@ impl Comb {
     /// The comb of `samples`, scaled so that the longest tooth is `longest` long. Empty when
     /// no sample has a finite non-zero curvature.
     pub(crate) fn new(samples: &[Sample], longest: f64) -> Comb {
-        let k_max = samples
-            .iter()
-            .map(|s| s.kappa.abs())
-            .filter(|k| k.is_finite())
-            .fold(0.0, f64::max);
+        let k_max = max_curvature(samples);
         if k_max <= 0.0 {
             return Comb { teeth: Vec::new() };
         }
-        let scale = longest / k_max;
+        Comb::scaled(samples, longest / k_max)
+    }
+
+    /// The comb of `samples` with teeth |κ|·`scale` long, so that combs of several curves
+    /// can be drawn to one scale.
+    pub(crate) fn scaled(samples: &[Sample], scale: f64) -> Comb {
         let teeth = samples
             .iter()
             .filter(|s| s.kappa.is_finite())
@@ -41,6 +42,15 @@ impl Comb {
     pub(crate) fn envelope(&self) -> Vec<Point> {
         self.teeth.iter().map(|&(_, tip)| tip).collect()
     }
+}
+
+/// The largest finite |κ| of `samples`, 0 when there is none.
+pub(crate) fn max_curvature(samples: &[Sample]) -> f64 {
+    samples
+        .iter()
+        .map(|s| s.kappa.abs())
+        .filter(|k| k.is_finite())
+        .fold(0.0, f64::max)
 }
 
 #[cfg(test)]

@@ -4,6 +4,9 @@
 
 mod comb;
 mod evolute;
+pub(crate) mod lcg;
+mod plot;
+pub(crate) mod quasi;
 mod view;
 
 use std::fmt::Write as _;
@@ -308,10 +311,15 @@ fn caption_width(runs: &[(&str, String)]) -> f64 {
 /// Write the caption `runs` in the band under the drawing; runs in the curve's colour are
 /// plain text, the others `<tspan>`s.
 fn write_caption(svg: &mut String, view: &View, runs: &[(&str, String)]) {
+    write_runs(svg, view.height - 0.5 * CAPTION + 4.0, runs);
+}
+
+/// Write `runs` as one line of text from the left edge with its baseline at `y` (see
+/// [`write_caption`]).
+fn write_runs(svg: &mut String, y: f64, runs: &[(&str, String)]) {
     let _ = write!(
         svg,
-        r#"<text x="12" y="{:.0}" fill="{CURVE}" font-family="sans-serif" font-size="13">"#,
-        view.height - 0.5 * CAPTION + 4.0,
+        r#"<text x="12" y="{y:.0}" fill="{CURVE}" font-family="sans-serif" font-size="13">"#,
     );
     for (colour, text) in runs {
         if *colour == CURVE {

@@ -1,0 +1,87 @@
+//! Rendering one of our SVG documents to PNG with resvg (usvg to parse, tiny-skia to
+//! paint), pixel for pixel at the document's size.
+//!
+//! Text is drawn with the system's fonts (fontdb reads the fontconfig setup); where there
+//! are none, the picture is still produced, without its text.
+
+use std::io;
+use std::sync::Arc;
+
+use resvg::tiny_skia::{Color, Pixmap, Transform};
+use resvg::usvg::{fontdb, Options, Tree};
+
+use crate::failure::Failure;
+
+/// The PNG of `svg`, with the system's fonts.
+pub(crate) fn png(svg: &str) -> Result<Vec<u8>, Failure> {
+    render_png(svg, system_fonts())
+}
+
+/// The fonts installed on this machine, with "sans-serif" mapped to one that exists.
+fn system_fonts() -> Arc<fontdb::Database> {
+    let mut fonts = fontdb::Database::new();
+    fonts.load_system_fonts();
+    let sans = [fontdb::Family::SansSerif];
+    let query = fontdb::Query {
+        families: &sans,
+        ..Default::default()
+    };
+    if fonts.query(&query).is_none() {
+        // No fontconfig alias to a font that is there: any font beats no text.
+        let first = fonts.faces().next().and_then(|f| f.families.first());
+        if let Some(name) = first.map(|family| family.0.clone()) {
+            fonts.set_sans_serif_family(name);
+        }
+    }
+    Arc::new(fonts)
+}
+
+/// The PNG of `svg` with text in `fonts`, on white.
+fn render_png(svg: &str, fonts: Arc<fontdb::Database>) -> Result<Vec<u8>, Failure> {
+    let failed = |what: &str, e: &dyn std::fmt::Display| {
+        Failure::io(what, None, &io::Error::other(e.to_string()))
+    };
+    let options = Options {
+        fontdb: fonts,
+        ..Options::default()
+    };
+    let tree = Tree::from_str(svg, &options).map_err(|e| failed("render the picture", &e))?;
+    let size = tree.size().to_int_size();
+    let mut pixmap = Pixmap::new(size.width(), size.height()).ok_or_else(|| {
+        failed(
+            "render the picture",
+            &format!("{}×{} pixels", size.width(), size.height()),
+        )
+    })?;
+    pixmap.fill(Color::WHITE);
+    resvg::render(&tree, Transform::identity(), &mut pixmap.as_mut());
+    pixmap
+        .encode_png()
+        .map_err(|e| failed("encode the PNG", &e))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const DOC: &str = r##"<svg xmlns="http://www.w3.org/2000/svg" width="40" height="30"><rect x="10" y="10" width="10" height="10" fill="#ff0000"/><text x="2" y="28" font-family="sans-serif" font-size="10">α = 1</text></svg>"##;
+
+    fn decode(bytes: &[u8]) -> (u32, u32, Vec<u8>) {
+        let mut reader = png::Decoder::new(io::Cursor::new(bytes))
+            .read_info()
+            .unwrap();
+        let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+        let info = reader.next_frame(&mut buf).unwrap();
+        (info.width, info.height, buf)
+    }
+
+    #[test]
+    fn a_picture_is_produced_without_any_font() {
+        let bytes = render_png(DOC, Arc::new(fontdb::Database::new())).unwrap();
+        let (w, h, rgba) = decode(&bytes);
+        assert_eq!((w, h), (40, 30));
+        let at = |x: usize, y: usize| &rgba[4 * (y * 40 + x)..4 * (y * 40 + x) + 4];
+        assert_eq!(at(15, 15), [255, 0, 0, 255], "the square is painted");
+        assert_eq!(at(35, 5), [255, 255, 255, 255], "on white");
+    }
+}

@@ -408,7 +408,7 @@ fn fit_span(curve: &impl TurningCurve, phi_a: f64, phi_b: f64, kind: Kind) -> Re
                         t.piece.max_deviation,
                     )
                 };
-                if best.as_ref().map_or(true, |b| rank(&trial) < rank(b)) {
+                if best.as_ref().is_none_or(|b| rank(&trial) < rank(b)) {
                     best = Some(trial);
                 }
             }
@@ -425,6 +425,7 @@ struct Span {
     rot: Vec2,
     mirror: bool,
     phi_a: f64,
+    phi_b: f64,
     turning: f64,
     end: Vec2,
     /// |κ| at the two ends.
@@ -476,6 +477,7 @@ impl Span {
             rot: Vec2::from_angle(a.theta),
             mirror,
             phi_a,
+            phi_b,
             turning,
             end: Vec2::ZERO,
             kappa: [a.kappa.abs(), b.kappa.abs()],
@@ -628,7 +630,7 @@ impl Span {
                 &mut Vec::new(),
                 Solve::Converge,
             ) {
-                if best.map_or(true, |b| f < b.1) {
+                if best.is_none_or(|b| f < b.1) {
                     best = Some((guess, f));
                 }
             }
@@ -744,7 +746,7 @@ impl Span {
                         [self.end.x, self.end.y, 1.0],
                     ];
                     if let Some((err, _)) = self.integral(&Candidate::new(q)) {
-                        if best.as_ref().map_or(true, |(b, _)| err < *b) {
+                        if best.as_ref().is_none_or(|(b, _)| err < *b) {
                             best = Some((err, q));
                         }
                     }
@@ -815,7 +817,8 @@ impl Span {
                 piece: QuasiPiece {
                     curve: curve_q,
                     monotonicity,
-                    turning: (self.phi_a, self.phi_a + self.turning),
+                    // The ends exactly as asked: the next piece starts where this one ends.
+                    turning: (self.phi_a, self.phi_b),
                     max_deviation,
                 },
                 integral,

@@ -237,3 +237,32 @@ fn tolerances_outside_the_supported_range_are_refused() {
         assert!(matches!(s.to_cubics(tol), Err(Error::OutOfRange { .. })));
     }
 }
+
+#[test]
+fn every_tolerance_down_to_1e_9_is_met() {
+    // Including near-limit triangles, where a piece ends exactly at the curve's end.
+    for p in [
+        [(0.0, 0.0), (3.0, 0.0), (4.0, 1.5)],
+        [(0.0, 0.0), (3.0, 0.0), (3.8, 2.5)],
+        [(0.0, 0.0), (1.0, 0.0), (1.0, 0.6)],
+    ] {
+        for alpha in [-1.0, 0.0, 0.5, 1.0, 2.0] {
+            let Ok(s) = Segment::from_control_points(p.map(|(x, y)| Point::new(x, y)), alpha)
+            else {
+                continue;
+            };
+            for k in 3..=9 {
+                let tol = 10f64.powi(-k);
+                for q in [s.to_rational_cubics(tol), s.to_cubics(tol)] {
+                    let q = q.unwrap_or_else(|e| panic!("{p:?} {alpha} {tol}: {e}"));
+                    assert!(q.max <= tol);
+                    let ends = q
+                        .pieces
+                        .windows(2)
+                        .all(|w| w[0].turning.1 == w[1].turning.0);
+                    assert!(ends && q.pieces.last().unwrap().turning.1 == s.turning_angle());
+                }
+            }
+        }
+    }
+}

@@ -598,7 +598,7 @@ impl Span {
         self.nodes.iter().map(|n| n.phi / self.turning).collect()
     }
 
-    /// Levenberg–Marquardt on (u, v) from the circular arc's values.
+    /// The seed's rational cubic: (u, v) minimising F by Levenberg–Marquardt.
     fn fit_rational(&self) -> Result<[Hom; 4]> {
         let c = (0.5 * self.turning).cos();
         let p = [2.0 * c / (1.0 + 2.0 * c); 2];
@@ -619,7 +619,7 @@ impl Span {
             ]
         });
         let grid = (1..=3).flat_map(|i| (1..=3).map(move |j| [0.25 * i as f64, 0.25 * j as f64]));
-        let mut best: Option<([f64; 2], f64)> = None;
+        let mut starts: Vec<([f64; 2], f64)> = Vec::with_capacity(11);
         for guess in std::iter::once(p).chain(g2).chain(grid) {
             if !guess.iter().all(|&x| x > 0.0 && x < 1.0) {
                 continue;
@@ -630,17 +630,36 @@ impl Span {
                 &mut Vec::new(),
                 Solve::Converge,
             ) {
-                if best.is_none_or(|b| f < b.1) {
-                    best = Some((guess, f));
+                starts.push((guess, f));
+            }
+        }
+        starts.sort_by(|a, b| a.1.total_cmp(&b.1));
+        let first = *starts.first().ok_or_else(unfittable)?;
+        // Descend from the best start and from the best one that lies apart from it, and
+        // keep the lower end: the best start may sit in the valley of a local minimum.
+        let other = starts
+            .iter()
+            .find(|s| (s.0[0] - first.0[0]).abs().max((s.0[1] - first.0[1]).abs()) > 0.2);
+        let mut best: Option<([f64; 2], f64)> = None;
+        for start in std::iter::once(&first).chain(other) {
+            if let Some(end) = self.levenberg_marquardt(start.0) {
+                if best.is_none_or(|b| end.1 < b.1) {
+                    best = Some(end);
                 }
             }
         }
-        let (p0, mut ts0, mut r0) = (
-            best.ok_or_else(unfittable)?.0,
-            self.initial_ts(),
-            Vec::new(),
-        );
-        let f0 = eval(p0, &mut ts0, &mut r0, Solve::Converge).ok_or_else(unfittable)?;
+        let p = best.ok_or_else(unfittable)?.0;
+        self.rational(p[0], p[1]).ok_or_else(unfittable)
+    }
+
+    /// Levenberg–Marquardt on (u, v) from `p0`: the parameters reached and F there.
+    fn levenberg_marquardt(&self, p0: [f64; 2]) -> Option<([f64; 2], f64)> {
+        let eval = |p: [f64; 2], ts: &mut Vec<f64>, r: &mut Vec<f64>, how: Solve| -> Option<f64> {
+            let q = self.rational(p[0], p[1])?;
+            self.residuals(&Candidate::new(q), ts, r, how)
+        };
+        let (mut ts0, mut r0) = (self.initial_ts(), Vec::new());
+        let f0 = eval(p0, &mut ts0, &mut r0, Solve::Converge)?;
         let (mut p, mut ts, mut r, mut f) = (p0, ts0, r0, f0);
         // An exact fit (the circular arc of an isosceles triangle) stays exact.
         let exact = (1e-15 * self.end.hypot()).powi(2) * self.turning;
@@ -712,7 +731,7 @@ impl Span {
                 break;
             }
         }
-        self.rational(p[0], p[1]).ok_or_else(unfittable)
+        Some((p, f))
     }
 
     /// The plain cubic of the G2 Hermite data with the smallest deviation.

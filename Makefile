@@ -21,13 +21,18 @@ $(VENV)/.installed: tools/reference/requirements.txt
 	$(VENV)/bin/pip install --quiet --disable-pip-version-check -r tools/reference/requirements.txt
 	touch $@
 
-# Regenerate the 40-digit reference fixtures (a few minutes; the output is committed).
+# Regenerate the 40-digit reference fixtures (about 15 minutes; the output is committed).
 fixtures: $(VENV)/.installed
 	$(PY) tools/reference/generate_fixtures.py
+	$(PY) tools/reference/compound_fixtures.py
+	$(PY) tools/reference/quasi_fixtures.py -j 2
+	$(PY) tools/reference/space_fixtures.py -j 2
 
 # Criterion benchmarks (medians quoted in issue notes); the Clothoids timing for comparison.
 bench: $(VENV)/.installed
 	cargo bench -p lac --bench segment
+	cargo bench -p lac --bench compound
+	cargo bench -p lac --bench quasi
 	$(PY) tools/reference/bench_clothoids.py
 
 # The main job: a clothoid-to-spiral segment drawn as SVG with its curvature comb.

@@ -382,6 +382,12 @@ impl std::ops::Deref for Trial {
     }
 }
 
+/// Levenberg–Marquardt stops once (u, v) are settled to ~1e-9 and F stops improving beyond
+/// its rounding; further steps only chase noise.
+const SETTLED: (f64, f64) = (1e-9, 1e-12);
+/// … or, for a probe of a second valley, once it is clear where the descent ends.
+const ROUGH: (f64, f64) = (1e-4, 1e-3);
+
 /// Deviation samples per piece for the maximum.
 const CHECK_STEPS: usize = 64;
 
@@ -618,19 +624,18 @@ impl Span {
                 (Vec2::new(q[2][0], q[2][1]) - self.end).hypot() / e,
             ]
         });
-        let grid = (1..=3).flat_map(|i| (1..=3).map(move |j| [0.25 * i as f64, 0.25 * j as f64]));
+        let grid = (1..=2).flat_map(|i| (1..=2).map(move |j| [i as f64 / 3.0, j as f64 / 3.0]));
         let mut starts: Vec<([f64; 2], f64)> = Vec::with_capacity(11);
+        let (mut warm, mut residuals) = (self.initial_ts(), Vec::new());
         for guess in std::iter::once(p).chain(g2).chain(grid) {
             if !guess.iter().all(|&x| x > 0.0 && x < 1.0) {
                 continue;
             }
-            if let Some(f) = eval(
-                guess,
-                &mut self.initial_ts(),
-                &mut Vec::new(),
-                Solve::Converge,
-            ) {
+            // The parameters of the previous start are a close first guess for this one's.
+            let mut trial_ts = warm.clone();
+            if let Some(f) = eval(guess, &mut trial_ts, &mut residuals, Solve::Converge) {
                 starts.push((guess, f));
+                warm = trial_ts;
             }
         }
         starts.sort_by(|a, b| a.1.total_cmp(&b.1));
@@ -640,11 +645,12 @@ impl Span {
         let other = starts
             .iter()
             .find(|s| (s.0[0] - first.0[0]).abs().max((s.0[1] - first.0[1]).abs()) > 0.2);
-        let mut best: Option<([f64; 2], f64)> = None;
-        for start in std::iter::once(&first).chain(other) {
-            if let Some(end) = self.levenberg_marquardt(start.0) {
-                if best.is_none_or(|b| end.1 < b.1) {
-                    best = Some(end);
+        let mut best = self.levenberg_marquardt(first.0, SETTLED);
+        if let Some(other) = other {
+            // A rough descent first; it is finished only if it gets below the first.
+            if let Some(probe) = self.levenberg_marquardt(other.0, ROUGH) {
+                if best.is_none_or(|b| probe.1 < b.1) {
+                    best = self.levenberg_marquardt(probe.0, SETTLED).or(Some(probe));
                 }
             }
         }
@@ -652,8 +658,9 @@ impl Span {
         self.rational(p[0], p[1]).ok_or_else(unfittable)
     }
 
-    /// Levenberg–Marquardt on (u, v) from `p0`: the parameters reached and F there.
-    fn levenberg_marquardt(&self, p0: [f64; 2]) -> Option<([f64; 2], f64)> {
+    /// Levenberg–Marquardt on (u, v) from `p0` until a step is below `settle.0` or improves
+    /// F by less than `settle.1` relative: the parameters reached and F there.
+    fn levenberg_marquardt(&self, p0: [f64; 2], settle: (f64, f64)) -> Option<([f64; 2], f64)> {
         let eval = |p: [f64; 2], ts: &mut Vec<f64>, r: &mut Vec<f64>, how: Solve| -> Option<f64> {
             let q = self.rational(p[0], p[1])?;
             self.residuals(&Candidate::new(q), ts, r, how)
@@ -715,7 +722,8 @@ impl Span {
                     Some(ft) if ft < f => {
                         // (u, v) are settled to ~1e-9 once F stops improving beyond its
                         // rounding; further steps only chase noise.
-                        small_step = d[0].abs().max(d[1].abs()) < 1e-9 || f - ft <= 1e-12 * f;
+                        small_step =
+                            d[0].abs().max(d[1].abs()) < settle.0 || f - ft <= settle.1 * f;
                         p = trial;
                         f = ft;
                         ts = tts;
@@ -940,7 +948,8 @@ impl Candidate {
             if !(t >= lo - 1e-9 && t <= 1.0 + 1e-9) {
                 break;
             }
-            if step.abs() <= 4.0 * f64::EPSILON {
+            // Newton converges quadratically: after a step below 1e-8 the error is ~1e-16.
+            if step.abs() <= 1e-8 {
                 if dir.dot(self.hodograph(t).0) > 0.0 {
                     return Some(t.clamp(0.0, 1.0));
                 }

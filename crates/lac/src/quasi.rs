@@ -15,8 +15,10 @@
 //!
 //! the squared distance between the points where the Bézier and the curve have turned by
 //! the same angle φ from their start tangents (the seed's correspondence), integrated by
-//! 16-point Gauss–Legendre in φ; Levenberg–Marquardt from the circular arc's
-//! u = v = 2c/(1 + 2c), c = cos(Θ/2), which is the exact answer for an isosceles triangle.
+//! 16-point Gauss–Legendre in φ, by Levenberg–Marquardt. F has several valleys: the starts
+//! are the circular arc's u = v = 2c/(1 + 2c), c = cos(Θ/2) (the exact answer for an
+//! isosceles triangle), the G2 plain cubic's leg fractions and a 2×2 grid; the best start is
+//! descended, and a rough descent from the best start lying apart is finished if it wins.
 //! t(φ) solves det(d_φ, V(t)) = 0 with V = p′w − pw′ (quartic in t) by safeguarded Newton.
 //!
 //! **Plain cubics** (all weights 1) have no freedom left once the ends, end tangents and end

@@ -33,27 +33,6 @@ fn lcg_json(input: &str, args: &[&str]) -> Value {
     json(&run)
 }
 
-/// Assert that `text` names `keys` (each as `"key":`), first occurrences in this order, and
-/// that `v` has exactly these keys.
-fn assert_keys(text: &str, v: &Value, keys: &[&str]) {
-    let at: Vec<usize> = keys
-        .iter()
-        .map(|k| {
-            text.find(&format!("\"{k}\":"))
-                .unwrap_or_else(|| panic!("{k} in {text}"))
-        })
-        .collect();
-    assert!(
-        at.windows(2).all(|w| w[0] < w[1]),
-        "{keys:?} in order: {text}"
-    );
-    let mut have: Vec<&str> = v.as_object().unwrap().keys().map(String::as_str).collect();
-    let mut want = keys.to_vec();
-    have.sort_unstable();
-    want.sort_unstable();
-    assert_eq!(have, want);
-}
-
 fn points(v: &Value) -> &Vec<Value> {
     v["points"].as_array().expect("points")
 }
@@ -64,11 +43,11 @@ fn a_segment_result_gives_back_its_alpha_to_1e_9() {
         let segment = stdout(&["segment", "--points", POINTS, "--alpha", alpha]);
         let line = lcg(&segment, &[]).stdout;
         let v = lcg_json(&segment, &[]);
-        assert_keys(&line, &v, &["points", "fit"]);
+        common::assert_keys(&line, &v, &["points", "fit"]);
         assert_eq!(points(&v).len(), 257, "default samples along a curve");
         let fit = &v["fit"];
         let fit_text = &line[line.find("\"fit\":").unwrap()..];
-        assert_keys(
+        common::assert_keys(
             fit_text,
             fit,
             &[
@@ -84,7 +63,7 @@ fn a_segment_result_gives_back_its_alpha_to_1e_9() {
         assert!(f(&fit["rms_residual"]) < 1e-9);
         // The segment's own LCG intercept, −ln Λ in its units, from `lac segment`.
         let first = &points(&v)[0];
-        assert_keys(
+        common::assert_keys(
             &line,
             first,
             &["s", "kappa", "dkappa_ds", "log_rho", "log_lcg"],

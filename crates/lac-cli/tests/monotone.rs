@@ -28,27 +28,6 @@ fn monotone(args: &[&str]) -> Value {
     monotone_line(args).1
 }
 
-/// Assert that `text` names `keys` (each as `"key":`), first occurrences in this order, and
-/// that `v` has exactly these keys.
-fn assert_keys(text: &str, v: &Value, keys: &[&str]) {
-    let at: Vec<usize> = keys
-        .iter()
-        .map(|k| {
-            text.find(&format!("\"{k}\":"))
-                .unwrap_or_else(|| panic!("{k} in {text}"))
-        })
-        .collect();
-    assert!(
-        at.windows(2).all(|w| w[0] < w[1]),
-        "{keys:?} in order: {text}"
-    );
-    let mut have: Vec<&str> = v.as_object().unwrap().keys().map(String::as_str).collect();
-    let mut want = keys.to_vec();
-    have.sort_unstable();
-    want.sort_unstable();
-    assert_eq!(have, want);
-}
-
 fn cubic(points: [(f64, f64); 4], weights: [f64; 4]) -> RationalCubic {
     RationalCubic::new(points.map(|(x, y)| Point::new(x, y)), weights).unwrap()
 }
@@ -56,7 +35,7 @@ fn cubic(points: [(f64, f64); 4], weights: [f64; 4]) -> RationalCubic {
 #[test]
 fn an_s_curve_is_not_monotone_and_dkappa_ds_changes_sign_at_t() {
     let (line, v) = monotone_line(&["--points", S_CURVE]);
-    assert_keys(&line, &v, &["verdict", "proven", "t"]);
+    common::assert_keys(&line, &v, &["verdict", "proven", "t"]);
     assert_eq!(v["verdict"], "not_monotone");
     assert_eq!(v["proven"], true);
     let t = v["t"].as_f64().unwrap();
@@ -70,7 +49,7 @@ fn an_s_curve_is_not_monotone_and_dkappa_ds_changes_sign_at_t() {
 #[test]
 fn a_spiral_like_cubic_is_proven_increasing_and_sampling_agrees() {
     let (line, v) = monotone_line(&["--points", SPIRAL]);
-    assert_keys(&line, &v, &["verdict", "proven"]);
+    common::assert_keys(&line, &v, &["verdict", "proven"]);
     assert_eq!(v["verdict"], "increasing");
     assert_eq!(v["proven"], true);
     let c = cubic(SPIRAL_POINTS, [1.0; 4]);

@@ -40,32 +40,11 @@ fn pieces(v: &Value) -> &Vec<Value> {
     v["pieces"].as_array().expect("pieces")
 }
 
-/// Assert that `text` names `keys` (each as `"key":`), first occurrences in this order, and
-/// that `v` has exactly these keys.
-fn assert_keys(text: &str, v: &Value, keys: &[&str]) {
-    let at: Vec<usize> = keys
-        .iter()
-        .map(|k| {
-            text.find(&format!("\"{k}\":"))
-                .unwrap_or_else(|| panic!("{k} in {text}"))
-        })
-        .collect();
-    assert!(
-        at.windows(2).all(|w| w[0] < w[1]),
-        "{keys:?} in order: {text}"
-    );
-    let mut have: Vec<&str> = v.as_object().unwrap().keys().map(String::as_str).collect();
-    let mut want = keys.to_vec();
-    have.sort_unstable();
-    want.sort_unstable();
-    assert_eq!(have, want);
-}
-
 #[test]
 fn an_isosceles_triangle_gives_one_exact_circular_piece() {
     let line = quasi_line(&["--points", ISOSCELES, "--alpha", "0.5"]);
     let v: Value = serde_json::from_str(&line).unwrap();
-    assert_keys(
+    common::assert_keys(
         &line,
         &v,
         &["pieces", "rms", "max", "arc_length", "tolerance", "kind"],
@@ -77,7 +56,7 @@ fn an_isosceles_triangle_gives_one_exact_circular_piece() {
     let [piece] = &pieces(&v)[..] else {
         panic!("one piece: {v}")
     };
-    assert_keys(
+    common::assert_keys(
         &line,
         piece,
         &[

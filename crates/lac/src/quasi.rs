@@ -396,13 +396,17 @@ const CHECK_STEPS: usize = 64;
 fn fit_span(curve: &impl TurningCurve, phi_a: f64, phi_b: f64, kind: Kind) -> Result<Trial> {
     let span = Span::new(curve, phi_a, phi_b)?;
     match kind {
-        Kind::Seed => span.trial(curve, &span.fit_rational()?),
+        Kind::Seed => {
+            let g2 = span.fit_polynomial().ok();
+            span.trial(curve, &span.fit_rational(g2.as_ref())?)
+        }
         Kind::Polynomial => span.trial(curve, &span.fit_polynomial()?),
         Kind::Rational => {
             // The least-squares fit weights the deviation by turning, not by length, so on
             // a short span near a sharp end the G2 cubic (also a rational cubic, with
             // equal weights) can be the closer of the two: take the better.
-            let fits = [span.fit_rational(), span.fit_polynomial()];
+            let g2 = span.fit_polynomial().ok();
+            let fits = [span.fit_rational(g2.as_ref()).ok(), g2];
             let mut best: Option<Trial> = None;
             for q in fits.iter().flatten() {
                 let Ok(trial) = span.trial(curve, q) else {
@@ -607,7 +611,8 @@ impl Span {
     }
 
     /// The seed's rational cubic: (u, v) minimising F by Levenberg–Marquardt.
-    fn fit_rational(&self) -> Result<[Hom; 4]> {
+    /// `g2`: the span's G2 plain cubic, when it has one (a starting point).
+    fn fit_rational(&self, g2: Option<&[Hom; 4]>) -> Result<[Hom; 4]> {
         let c = (0.5 * self.turning).cos();
         let p = [2.0 * c / (1.0 + 2.0 * c); 2];
         let eval = |p: [f64; 2], ts: &mut Vec<f64>, r: &mut Vec<f64>, how: Solve| -> Option<f64> {
@@ -618,7 +623,7 @@ impl Span {
         // 001 §6 reports them too). Start from the best of: the circular arc's fractions
         // (exact for an isosceles triangle), the leg fractions of the G2 plain cubic (often
         // in the global basin), and a coarse grid.
-        let g2 = self.fit_polynomial().ok().map(|q| {
+        let g2 = g2.map(|q| {
             let a = self.apex();
             let e = (self.end - Vec2::new(a, 0.0)).hypot();
             [

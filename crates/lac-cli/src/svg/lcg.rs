@@ -30,13 +30,7 @@ pub(crate) fn render(
     title: &str,
 ) -> String {
     let mut svg = String::new();
-    let _ = writeln!(svg, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
-    let _ = writeln!(
-        svg,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH:.0}" height="{HEIGHT:.0}" viewBox="0 0 {WIDTH:.0} {HEIGHT:.0}" fill="none" stroke-linecap="round" stroke-linejoin="round">"#
-    );
-    let _ = writeln!(svg, "<title>Curvature of {title}</title>");
-    let _ = writeln!(svg, r#"<rect width="100%" height="100%" fill="white"/>"#);
+    super::document(&mut svg, WIDTH, HEIGHT, &format!("Curvature of {title}"));
     let _ = writeln!(
         svg,
         r##"<text x="{:.0}" y="34" fill="#111" font-family="sans-serif" font-size="17">Curvature of {title}</text>"##,

@@ -187,23 +187,28 @@ fn bounding_box(points: &[Point]) -> Rect {
 }
 
 fn open(svg: &mut String, view: &View, pieces: &[Segment]) {
-    let (w, h) = (view.width, view.height);
-    let _ = writeln!(svg, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
-    let _ = writeln!(
-        svg,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0}" height="{h:.0}" viewBox="0 0 {w:.0} {h:.0}" fill="none" stroke-linecap="round" stroke-linejoin="round">"#
-    );
     let what = if pieces.len() == 1 {
         "Log-aesthetic segment"
     } else {
         "Compound-rhythm log-aesthetic curve"
     };
-    let _ = writeln!(
-        svg,
-        "<title>{what}, {}, Λ = {}</title>",
+    let title = format!(
+        "{what}, {}, Λ = {}",
         slopes(pieces).join(", "),
         short(pieces[0].lambda())
     );
+    document(svg, view.width, view.height, &title);
+}
+
+/// The XML header, the `<svg>` element of `width` × `height`, its `<title>` and a white
+/// background: how every drawing of `lac` starts.
+pub(crate) fn document(svg: &mut String, width: f64, height: f64, title: &str) {
+    let _ = writeln!(svg, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
+    let _ = writeln!(
+        svg,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{width:.0}" height="{height:.0}" viewBox="0 0 {width:.0} {height:.0}" fill="none" stroke-linecap="round" stroke-linejoin="round">"#
+    );
+    let _ = writeln!(svg, "<title>{title}</title>");
     let _ = writeln!(svg, r#"<rect width="100%" height="100%" fill="white"/>"#);
 }
 

@@ -308,24 +308,17 @@ fn square(svg: &mut String, p: Point, colour: &str) {
 }
 
 fn open(svg: &mut String, view: &View, pieces: &[Segment], count: usize, cubic: bool) {
-    let (w, h) = (view.width, view.height);
-    let _ = writeln!(svg, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
-    let _ = writeln!(
-        svg,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0}" height="{h:.0}" viewBox="0 0 {w:.0} {h:.0}" fill="none" stroke-linecap="round" stroke-linejoin="round">"#
-    );
     let what = if pieces.len() == 1 {
         "log-aesthetic segment"
     } else {
         "compound-rhythm log-aesthetic curve"
     };
-    let _ = writeln!(
-        svg,
-        "<title>Quasi-aesthetic curve: {} for a {what}, {}</title>",
+    let title = format!(
+        "Quasi-aesthetic curve: {} for a {what}, {}",
         count_of(count, cubic),
         super::slopes(pieces).join(", ")
     );
-    let _ = writeln!(svg, r#"<rect width="100%" height="100%" fill="white"/>"#);
+    super::document(svg, view.width, view.height, &title);
 }
 
 /// "1 rational cubic", "3 plain cubics", …

@@ -75,3 +75,24 @@ pub(crate) fn assert_failure(run: &Run, code: i32, kind: &str) -> String {
     assert!(!message.is_empty());
     message
 }
+
+/// Assert that `text` names `keys` (each as `"key":`), first occurrences in this order, and
+/// that `v` has exactly these keys.
+pub(crate) fn assert_keys(text: &str, v: &serde_json::Value, keys: &[&str]) {
+    let at: Vec<usize> = keys
+        .iter()
+        .map(|k| {
+            text.find(&format!("\"{k}\":"))
+                .unwrap_or_else(|| panic!("{k} in {text}"))
+        })
+        .collect();
+    assert!(
+        at.windows(2).all(|w| w[0] < w[1]),
+        "{keys:?} in order: {text}"
+    );
+    let mut have: Vec<&str> = v.as_object().unwrap().keys().map(String::as_str).collect();
+    let mut want = keys.to_vec();
+    have.sort_unstable();
+    want.sort_unstable();
+    assert_eq!(have, want);
+}

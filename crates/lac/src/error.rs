@@ -155,6 +155,20 @@ pub enum NotDrawable {
         /// The largest angle reached within that ratio, radians.
         reached: f64,
     },
+    /// The torsion parameter Ω is too large for these four points, α, β and type: a
+    /// segment exists for Ω up to `omega_max` (seed 003 §4).
+    TorsionTooLarge {
+        /// The Ω asked for.
+        omega: f64,
+        /// The largest Ω for which a segment was found.
+        omega_max: f64,
+    },
+    /// No log-aesthetic space segment of these α, β and type fits the four points, even
+    /// with Ω = 0.
+    NoSpaceSegment {
+        /// The Ω asked for.
+        omega: f64,
+    },
 }
 
 impl fmt::Display for NotDrawable {
@@ -211,6 +225,18 @@ impl fmt::Display for NotDrawable {
                  control polygon more symmetric",
                 reached.to_degrees(),
                 theta_e.to_degrees()
+            ),
+            NotDrawable::TorsionTooLarge { omega, omega_max } => write!(
+                f,
+                "omega = {omega} is too large for these points, alpha, beta and type: a space \
+                 segment exists for omega up to {omega_max:.6}; use a smaller omega"
+            ),
+            NotDrawable::NoSpaceSegment { omega } => write!(
+                f,
+                "no log-aesthetic space segment of these alpha, beta and type fits the four \
+                 points (omega = {omega}{}); make the end angles to the chord more alike \
+                 (theta0 close to theta1), or use alpha and beta nearer 0",
+                if omega > 0.0 { ", nor with omega = 0" } else { "" }
             ),
         }
     }

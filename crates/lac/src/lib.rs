@@ -54,6 +54,7 @@ pub mod region;
 mod sampling;
 mod segment;
 mod solve;
+mod space;
 mod standard_form;
 
 pub use analysis::{
@@ -68,6 +69,13 @@ pub use monotone::{Monotonicity, MonotonicityReport};
 pub use quasi::{QuasiCurve, QuasiPiece};
 pub use sampling::Sample;
 pub use segment::Segment;
+pub use space::{
+    BoundBy, EndBehaviour, RadiusCell, RadiusLimit, RatioLimit, SpaceClassification, SpaceEnd,
+    TurningCell,
+};
+pub use space::{
+    Frame, GraphPoint, Similarity3, SpaceForm, SpaceSegment, TorsionType, PLANAR_TOLERANCE,
+};
 pub use standard_form::{Classification, InfiniteRadiusEnd, StandardForm, ZeroRadiusEnd};
 
 /// The README's Rust examples, compiled and run as doc tests.

@@ -1,0 +1,766 @@
+//! A log-aesthetic space curve segment from four control points (seed 003 §4, SPEC §6).
+
+use kurbo::Point;
+
+use super::family::{SpaceForm, TorsionType};
+use super::shoot::{end_angles, shoot, Cone, Shot};
+use super::taylor::{Expansion, State};
+use super::vec3::{
+    axpy, cross, dot, from_columns, mat_mul, mat_vec, norm, scale, sub, transpose, unit, V3,
+};
+use super::Frame;
+use crate::error::{finite, Error, NotDrawable, Result};
+use crate::segment::Segment;
+
+/// Dihedral angles |θ2| below this (radians) count as coplanar: the planar segment is drawn.
+pub const PLANAR_TOLERANCE: f64 = 1e-9;
+
+/// Newton stops when both components of the end-tangent residual are below this (radians).
+const RESIDUAL_TOLERANCE: f64 = 1e-13;
+
+/// The similarity from the standard form to the caller's coordinates:
+/// `caller = translation + scale · rotation · M · standard`, with `M = diag(1, 1, −1)` when
+/// `mirror_z` and the identity otherwise.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Similarity3 {
+    /// Standard-form lengths to the caller's.
+    pub scale: f64,
+    /// A proper rotation, row-major.
+    pub rotation: [[f64; 3]; 3],
+    /// Where the standard form's origin lands: the first control point, or the last when
+    /// `reversed`.
+    pub translation: [f64; 3],
+    /// The standard form is mirrored in its xy plane first (a left-handed segment, τ < 0).
+    pub mirror_z: bool,
+    /// The standard form runs from the last control point to the first (seed 003 §4 swaps
+    /// the ends when θ0 < θ1).
+    pub reversed: bool,
+}
+
+impl Similarity3 {
+    /// A standard-form point in the caller's coordinates.
+    pub fn apply(&self, p: [f64; 3]) -> [f64; 3] {
+        axpy(self.translation, self.scale, self.apply_vector(p))
+    }
+
+    /// A standard-form direction in the caller's coordinates (rotation and mirror only).
+    pub fn apply_vector(&self, v: [f64; 3]) -> [f64; 3] {
+        let v = if self.mirror_z {
+            [v[0], v[1], -v[2]]
+        } else {
+            v
+        };
+        mat_vec(&self.rotation, v)
+    }
+}
+
+#[derive(Clone, Debug)]
+enum Shape {
+    Space {
+        form: SpaceForm,
+        s_end: f64,
+        transform: Similarity3,
+        /// Integrator states at the starts of the steps from 0 to `s_end`.
+        checkpoints: Vec<State>,
+    },
+    Planar {
+        segment: Segment,
+        /// The plane: origin P0 and orthonormal axes.
+        origin: V3,
+        e1: V3,
+        e2: V3,
+    },
+}
+
+/// A log-aesthetic space curve segment (seed 003 §4): it starts at `P0` tangent to
+/// `P1 − P0`, ends at `P3` tangent to `P3 − P2`, and is a similar copy of a piece
+/// `0 ≤ s ≤ s_end` of a [`SpaceForm`] with the given α, β, Ω and type, whose Λ and ν the
+/// solver finds.
+///
+/// Arc length `s` runs from 0 at `P0` to [`SpaceSegment::arc_length`] at `P3`. When the four
+/// points are coplanar (|θ2| < [`PLANAR_TOLERANCE`]) the space family has no member through
+/// them (ν = ∞) and the segment is the planar log-aesthetic segment of slope α through P0,
+/// the tangents' intersection and P3 ([`SpaceSegment::planar`]), with zero torsion.
+///
+/// ```
+/// use lac::{SpaceSegment, TorsionType};
+/// let p = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [2.0, 1.0, 0.5], [2.0, 2.0, 1.0]];
+/// let seg = SpaceSegment::from_control_points(p, 0.0, 0.0, 0.0, TorsionType::One)?;
+/// let end = seg.frame_at(seg.arc_length())?;
+/// assert!((end.point[1] - 2.0).abs() < 1e-9);
+/// # Ok::<(), lac::Error>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct SpaceSegment {
+    points: [V3; 4],
+    alpha: f64,
+    beta: f64,
+    omega: f64,
+    kind: TorsionType,
+    shape: Shape,
+    arc_length: f64,
+}
+
+/// A point of a logarithmic curvature or torsion graph.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GraphPoint {
+    /// Arc length from P0.
+    pub s: f64,
+    /// ln ρ (or ln μ).
+    pub x: f64,
+    /// ln(ρ |ds/dρ|) (or ln(μ |ds/dμ|)).
+    pub y: f64,
+}
+
+/// The required end geometry, after the end swap.
+#[derive(Clone, Copy, Debug)]
+struct Target {
+    theta0: f64,
+    theta1: f64,
+    theta2: f64,
+}
+
+impl Target {
+    /// The end-tangent mismatch in polar coordinates about the chord, smooth where θ1 → 0.
+    fn residual(&self, shot: &Shot) -> [f64; 2] {
+        let (a, b) = (shot.theta1, shot.theta2.abs());
+        let (c, d) = (self.theta1, self.theta2.abs());
+        [a * b.cos() - c * d.cos(), a * b.sin() - c * d.sin()]
+    }
+
+    fn cone(&self) -> Cone {
+        Cone::new(self.theta0, self.theta2.abs() > std::f64::consts::FRAC_PI_2)
+    }
+}
+
+/// One converged standard form.
+#[derive(Clone, Debug)]
+struct Solution {
+    lambda: f64,
+    ln_nu: f64,
+}
+
+impl SpaceSegment {
+    /// Solve for the segment through `points = [P0, P1, P2, P3]` with curvature slope
+    /// `alpha`, torsion slope `beta`, torsion parameter `omega ≥ 0` and torsion type.
+    ///
+    /// Errors: non-finite input, coincident points (P0 = P1, P2 = P3 or P0 = P3), a tangent
+    /// along the chord ([`Error::CollinearPoints`]), a coplanar S ([`Error::InflectedPolygon`]),
+    /// and [`Error::NotDrawable`]: [`NotDrawable::TorsionTooLarge`] with the largest Ω that
+    /// works when a smaller Ω would, [`NotDrawable::NoSpaceSegment`] when none does.
+    pub fn from_control_points(
+        points: [[f64; 3]; 4],
+        alpha: f64,
+        beta: f64,
+        omega: f64,
+        kind: TorsionType,
+    ) -> Result<SpaceSegment> {
+        for p in &points {
+            for &c in p {
+                finite("control point coordinate", c)?;
+            }
+        }
+        finite("alpha", alpha)?;
+        finite("beta", beta)?;
+        finite("omega", omega)?;
+        if omega < 0.0 {
+            return Err(Error::OutOfRange {
+                name: "omega",
+                value: omega,
+                expected: ">= 0 (the type sets the direction of the torsion radius)",
+            });
+        }
+        for (first, second) in [(0, 1), (2, 3), (0, 3)] {
+            if points[first] == points[second] {
+                return Err(Error::CoincidentPoints { first, second });
+            }
+        }
+        let [p0, p1, p2, p3] = points;
+        let t0 = unit(sub(p1, p0));
+        let t1 = unit(sub(p3, p2));
+        let chord = sub(p3, p0);
+        let (theta0, theta1, theta2) = end_angles(chord, t0, t1);
+        // A tangent along the chord line: no cone (seed 003 needs 0 < θ0, θ1 < π).
+        for th in [theta0, theta1] {
+            if !(1e-12..=std::f64::consts::PI - 1e-12).contains(&th) {
+                return Err(Error::CollinearPoints);
+            }
+        }
+        let mut seg = SpaceSegment {
+            points,
+            alpha,
+            beta,
+            omega,
+            kind,
+            shape: Shape::Planar {
+                segment: Segment::from_control_points(
+                    [Point::ZERO, Point::new(1.0, 0.0), Point::new(1.0, 1.0)],
+                    0.0,
+                )?,
+                origin: p0,
+                e1: t0,
+                e2: t0,
+            },
+            arc_length: 0.0,
+        };
+        if theta2.abs() < PLANAR_TOLERANCE || std::f64::consts::PI - theta2.abs() < PLANAR_TOLERANCE
+        {
+            seg.shape = planar(points, alpha, theta2)?;
+        } else {
+            seg.shape = solve_space(points, alpha, beta, omega, kind, [theta0, theta1, theta2])?;
+        }
+        seg.arc_length = match &seg.shape {
+            Shape::Space {
+                s_end, transform, ..
+            } => s_end * transform.scale,
+            Shape::Planar { segment, .. } => segment.arc_length(),
+        };
+        Ok(seg)
+    }
+
+    /// The control points `[P0, P1, P2, P3]`.
+    pub fn control_points(&self) -> [[f64; 3]; 4] {
+        self.points
+    }
+    /// Slope of the logarithmic curvature graph.
+    pub fn alpha(&self) -> f64 {
+        self.alpha
+    }
+    /// Slope of the logarithmic torsion graph.
+    pub fn beta(&self) -> f64 {
+        self.beta
+    }
+    /// The torsion parameter Ω asked for.
+    pub fn omega(&self) -> f64 {
+        self.omega
+    }
+    /// Type 1 or 2.
+    pub fn torsion_type(&self) -> TorsionType {
+        self.kind
+    }
+
+    /// The solved standard form (with Λ and ν), `None` for a coplanar (planar) segment.
+    pub fn standard_form(&self) -> Option<&SpaceForm> {
+        match &self.shape {
+            Shape::Space { form, .. } => Some(form),
+            Shape::Planar { .. } => None,
+        }
+    }
+
+    /// The standard-form arc length of the segment, `None` when planar.
+    pub fn s_end(&self) -> Option<f64> {
+        match &self.shape {
+            Shape::Space { s_end, .. } => Some(*s_end),
+            Shape::Planar { .. } => None,
+        }
+    }
+
+    /// The similarity from the standard form to the caller's coordinates, `None` when
+    /// planar.
+    pub fn transform(&self) -> Option<&Similarity3> {
+        match &self.shape {
+            Shape::Space { transform, .. } => Some(transform),
+            Shape::Planar { .. } => None,
+        }
+    }
+
+    /// The planar segment drawn instead when the four points are coplanar, in the plane's
+    /// coordinates: origin P0, x along `P1 − P0`, y toward the chord.
+    pub fn planar(&self) -> Option<&Segment> {
+        match &self.shape {
+            Shape::Planar { segment, .. } => Some(segment),
+            Shape::Space { .. } => None,
+        }
+    }
+
+    /// Is this the planar fallback for coplanar points?
+    pub fn is_planar(&self) -> bool {
+        matches!(self.shape, Shape::Planar { .. })
+    }
+
+    /// Arc length from P0 to P3.
+    pub fn arc_length(&self) -> f64 {
+        self.arc_length
+    }
+
+    /// Point, Frenet frame, curvature and torsion at arc length `s` from P0,
+    /// 0 ≤ s ≤ [`SpaceSegment::arc_length`].
+    pub fn frame_at(&self, s: f64) -> Result<Frame> {
+        Ok(self.frames(&[s])?.remove(0))
+    }
+
+    /// [`SpaceSegment::frame_at`] for many arc lengths at once.
+    pub fn frames(&self, s_values: &[f64]) -> Result<Vec<Frame>> {
+        let len = self.arc_length;
+        for &s in s_values {
+            finite("s", s)?;
+            if !(s >= -1e-12 * len && s <= len * (1.0 + 1e-12)) {
+                return Err(Error::OutOfRange {
+                    name: "s",
+                    value: s,
+                    expected: "an arc length between 0 and arc_length()",
+                });
+            }
+        }
+        Ok(s_values
+            .iter()
+            .map(|&s| self.frame_unchecked(s.clamp(0.0, len)))
+            .collect())
+    }
+
+    /// `n ≥ 2` frames equally spaced in arc length from P0 to P3.
+    pub fn sample(&self, n: usize) -> Result<Vec<Frame>> {
+        if !(2..=10_000_000).contains(&n) {
+            return Err(Error::OutOfRange {
+                name: "samples",
+                value: n as f64,
+                expected: "between 2 and 10000000",
+            });
+        }
+        let len = self.arc_length;
+        let at: Vec<f64> = (0..n)
+            .map(|i| {
+                if i == n - 1 {
+                    len
+                } else {
+                    len * i as f64 / (n - 1) as f64
+                }
+            })
+            .collect();
+        self.frames(&at)
+    }
+
+    /// The logarithmic curvature graph at `n ≥ 2` points equally spaced in arc length:
+    /// `(ln ρ, ln(ρ |ds/dρ|))` in the caller's units, a straight line of slope α. Empty when
+    /// ρ is constant (Λ = 0).
+    pub fn log_curvature_graph(&self, n: usize) -> Result<Vec<GraphPoint>> {
+        let (alpha, lambda, scale) = match &self.shape {
+            Shape::Space {
+                form, transform, ..
+            } => (form.alpha(), form.lambda(), transform.scale),
+            Shape::Planar { segment, .. } => (segment.alpha(), segment.lambda(), 1.0),
+        };
+        // dρ/ds = Λ ρ^(1−α) in standard units, so ρ ds/dρ = ρ^α / Λ; scaling by k
+        // multiplies ρ and s by k (and ρ ds/dρ by k).
+        self.graph(n, lambda, |f| {
+            let rho = 1.0 / f.curvature;
+            let rho_std = rho / scale;
+            (rho.ln(), alpha * rho_std.ln() - lambda.ln() + scale.ln())
+        })
+    }
+
+    /// The logarithmic torsion graph: `(ln μ, ln(μ |ds/dμ|))`, μ = 1/|τ|, a straight line of
+    /// slope β. Empty when μ is constant (Ω = 0) or the segment is planar.
+    pub fn log_torsion_graph(&self, n: usize) -> Result<Vec<GraphPoint>> {
+        let scale = match &self.shape {
+            Shape::Space { transform, .. } => transform.scale,
+            Shape::Planar { .. } => return Ok(Vec::new()),
+        };
+        let (beta, omega) = (self.beta, self.omega);
+        // |dμ/ds| = Ω μ^(1−β) in standard units.
+        self.graph(n, omega, |f| {
+            let mu = 1.0 / f.torsion.abs();
+            let mu_std = mu / scale;
+            (mu.ln(), beta * mu_std.ln() - omega.ln() + scale.ln())
+        })
+    }
+
+    fn graph(
+        &self,
+        n: usize,
+        rate: f64,
+        point: impl Fn(&Frame) -> (f64, f64),
+    ) -> Result<Vec<GraphPoint>> {
+        let frames = self.sample(n)?;
+        if rate == 0.0 {
+            return Ok(Vec::new());
+        }
+        Ok(frames
+            .iter()
+            .map(|f| {
+                let (x, y) = point(f);
+                GraphPoint { s: f.s, x, y }
+            })
+            .collect())
+    }
+
+    fn frame_unchecked(&self, s: f64) -> Frame {
+        match &self.shape {
+            Shape::Space {
+                form,
+                s_end,
+                transform,
+                checkpoints,
+            } => {
+                let st = if transform.reversed {
+                    s_end - s / transform.scale
+                } else {
+                    s / transform.scale
+                };
+                let st = st.clamp(0.0, *s_end);
+                let i = checkpoints.partition_point(|c| c.s <= st).saturating_sub(1);
+                let state = Expansion::new(form, &checkpoints[i]).state_at(st - checkpoints[i].s);
+                let f = form.frame_from(&state);
+                let sign = if transform.reversed { -1.0 } else { 1.0 };
+                let tangent = scale(transform.apply_vector(f.tangent), sign);
+                let normal = transform.apply_vector(f.normal);
+                Frame {
+                    s,
+                    point: transform.apply(f.point),
+                    tangent,
+                    normal,
+                    binormal: cross(tangent, normal),
+                    curvature: f.curvature / transform.scale,
+                    torsion: if transform.mirror_z { -1.0 } else { 1.0 } * f.torsion
+                        / transform.scale,
+                }
+            }
+            Shape::Planar {
+                segment,
+                origin,
+                e1,
+                e2,
+            } => {
+                let p = segment.point_at_s(s).expect("s within the segment");
+                let theta = segment.theta_at_s(s).expect("s within the segment");
+                let kappa = segment.curvature_at_s(s).expect("s within the segment");
+                let tangent = axpy(scale(*e1, theta.cos()), theta.sin(), *e2);
+                let left = axpy(scale(*e1, -theta.sin()), theta.cos(), *e2);
+                let normal = scale(left, kappa.signum());
+                Frame {
+                    s,
+                    point: axpy(axpy(*origin, p.x, *e1), p.y, *e2),
+                    tangent,
+                    normal,
+                    binormal: cross(tangent, normal),
+                    curvature: kappa.abs(),
+                    torsion: 0.0,
+                }
+            }
+        }
+    }
+}
+
+/// The planar fallback: the planar segment through P0, the tangents' intersection and P3.
+fn planar(points: [V3; 4], alpha: f64, theta2: f64) -> Result<Shape> {
+    if theta2.abs() > std::f64::consts::FRAC_PI_2 {
+        return Err(Error::InflectedPolygon {
+            first: "left",
+            second: "right",
+        });
+    }
+    let [p0, p1, p2, p3] = points;
+    let e1 = unit(sub(p1, p0));
+    let chord = sub(p3, p0);
+    let e2 = unit(axpy(chord, -dot(chord, e1), e1));
+    let to2 = |p: V3| Point::new(dot(sub(p, p0), e1), dot(sub(p, p0), e2));
+    let (q3, d) = (to2(p3), to2(p3) - to2(p2));
+    // P0 + a e1 = P3 − b d/|d|: the tangents' intersection, ahead of both ends.
+    let d = d / d.hypot();
+    let cross_d = d.y; // (1, 0) × d
+    let a = (q3.x * d.y - q3.y * d.x) / cross_d;
+    let b = q3.y / d.y;
+    if !(a > 0.0 && b > 0.0 && a.is_finite() && b.is_finite()) {
+        return Err(Error::NotDrawable(NotDrawable::ChordOutsideTangents {
+            theta_e: e1_angle(chord, e1),
+            turning: 0.0,
+        }));
+    }
+    let segment = Segment::from_control_points([Point::ZERO, Point::new(a, 0.0), q3], alpha)?;
+    Ok(Shape::Planar {
+        segment,
+        origin: p0,
+        e1,
+        e2,
+    })
+}
+
+fn e1_angle(chord: V3, e1: V3) -> f64 {
+    super::vec3::angle(chord, e1)
+}
+
+/// Solve the space problem: swap the ends if θ0 < θ1, find (Λ, ν), build the similarity.
+fn solve_space(
+    points: [V3; 4],
+    alpha: f64,
+    beta: f64,
+    omega: f64,
+    kind: TorsionType,
+    angles: [f64; 3],
+) -> Result<Shape> {
+    let [theta0, theta1, _] = angles;
+    let reversed = theta0 < theta1;
+    let [p0, p1, p2, p3] = if reversed {
+        [points[3], points[2], points[1], points[0]]
+    } else {
+        points
+    };
+    let t0 = unit(sub(p1, p0));
+    let t1 = unit(sub(p3, p2));
+    let chord = sub(p3, p0);
+    let (theta0, theta1, theta2) = end_angles(chord, t0, t1);
+    let target = Target {
+        theta0,
+        theta1,
+        theta2,
+    };
+    let problem = Problem {
+        alpha,
+        beta,
+        kind,
+        target,
+    };
+    let solution = problem.solve_with_omega(omega)?;
+    let form = problem.form(&solution, omega);
+    let shot = shoot(&form, &target.cone(), true).expect("a converged shot repeats");
+    // Mirror when the standard form's dihedral has the other sign (seed 003 §4).
+    let mirror_z = (shot.theta2 < 0.0) != (theta2 < 0.0);
+    let m = |v: V3| if mirror_z { [v[0], v[1], -v[2]] } else { v };
+    // Rotation taking e1 to t0 and the standard-form chord to the caller's.
+    let frame_of = |axis: V3, towards: V3| {
+        let w = unit(axpy(towards, -dot(towards, axis), axis));
+        from_columns(axis, w, cross(axis, w))
+    };
+    let standard = frame_of([1.0, 0.0, 0.0], m(shot.end.x));
+    let caller = frame_of(t0, chord);
+    let rotation = mat_mul(&caller, &transpose(&standard));
+    let transform = Similarity3 {
+        scale: norm(chord) / norm(shot.end.x),
+        rotation,
+        translation: p0,
+        mirror_z,
+        reversed,
+    };
+    Ok(Shape::Space {
+        form,
+        s_end: shot.end.s,
+        transform,
+        checkpoints: shot.checkpoints,
+    })
+}
+
+/// The two-parameter search of seed 003 §4 for fixed α, β, type and end geometry.
+struct Problem {
+    alpha: f64,
+    beta: f64,
+    kind: TorsionType,
+    target: Target,
+}
+
+impl Problem {
+    fn form(&self, p: &Solution, omega: f64) -> SpaceForm {
+        SpaceForm::new_unchecked(
+            self.alpha,
+            self.beta,
+            p.lambda,
+            omega,
+            p.ln_nu.exp(),
+            self.kind,
+        )
+    }
+
+    fn residual(&self, p: &Solution, omega: f64) -> Option<[f64; 2]> {
+        let shot = shoot(&self.form(p, omega), &self.target.cone(), false)?;
+        Some(self.target.residual(&shot))
+    }
+
+    /// Solve at `omega`, directly from a near-helix start, else by continuation in Ω from
+    /// 0; report the largest Ω reached when `omega` is out of reach.
+    fn solve_with_omega(&self, omega: f64) -> Result<Solution> {
+        if let Some(s) = self.start(omega).and_then(|s| self.newton(s, omega)) {
+            return Ok(s);
+        }
+        let none = || Error::NotDrawable(NotDrawable::NoSpaceSegment { omega });
+        if omega == 0.0 {
+            return Err(none());
+        }
+        let mut ok = self
+            .start(0.0)
+            .and_then(|s| self.newton(s, 0.0))
+            .ok_or_else(none)?;
+        let (mut reached, mut step) = (0.0, 0.25 * omega);
+        while step > 1e-6 * omega {
+            let next = (reached + step).min(omega);
+            match self.newton(ok.clone(), next) {
+                Some(s) if next == omega => return Ok(s),
+                Some(s) => {
+                    ok = s;
+                    reached = next;
+                    step *= 2.0;
+                }
+                None => step *= 0.5,
+            }
+        }
+        Err(Error::NotDrawable(NotDrawable::TorsionTooLarge {
+            omega,
+            omega_max: reached,
+        }))
+    }
+
+    /// The start of the search: Λ = 0 (a helix when Ω = 0, which always meets the cone) and
+    /// the ν whose dihedral angle matches the end's. The helix's axis makes the angle
+    /// atan ν with the start tangent, so it leaves the cone only for ν beyond about tan θ0,
+    /// and its dihedral angle falls toward 0 as ν grows: scan upward from there in quarter
+    /// decades and interpolate at the first sign change (else keep the best point seen).
+    fn start(&self, omega: f64) -> Option<Solution> {
+        let base = self.target.theta0.min(1.4).tan().ln() - 0.5 * std::f64::consts::LN_10;
+        let want = self.target.theta2.abs();
+        let step = 0.25 * std::f64::consts::LN_10;
+        let mut best: Option<(f64, Solution)> = None;
+        let mut prev: Option<(f64, f64)> = None;
+        for k in 0..16 {
+            let ln_nu = base + f64::from(k) * step;
+            let p = Solution { lambda: 0.0, ln_nu };
+            let Some(shot) = shoot(&self.form(&p, omega), &self.target.cone(), false) else {
+                prev = None;
+                continue;
+            };
+            let r = self.target.residual(&shot);
+            let size = r[0].hypot(r[1]);
+            if best.as_ref().is_none_or(|(b, _)| size < *b) {
+                best = Some((size, p));
+            }
+            let d = shot.theta2.abs() - want;
+            if let Some((ln_prev, d_prev)) = prev {
+                if d_prev > 0.0 && d <= 0.0 {
+                    return Some(Solution {
+                        lambda: 0.0,
+                        ln_nu: ln_prev + step * d_prev / (d_prev - d),
+                    });
+                }
+            }
+            prev = Some((ln_nu, d));
+        }
+        best.map(|(_, p)| p)
+    }
+
+    /// Damped Newton on the two residuals in (Λ, ln ν) with a forward-difference Jacobian;
+    /// a trial point where the curve misses the cone is pulled back toward the current one
+    /// (seed 003's rule for its simplex), and a negative Λ is replaced by a tenth of the
+    /// current one.
+    fn newton(&self, mut p: Solution, omega: f64) -> Option<Solution> {
+        let mut r = self.residual(&p, omega)?;
+        for _ in 0..60 {
+            let size = r[0].abs().max(r[1].abs());
+            if size < RESIDUAL_TOLERANCE {
+                return (p.lambda >= 0.0).then_some(p);
+            }
+            let hl = 1e-7 * p.lambda.max(1e-3);
+            let hn = 1e-7;
+            let column = |q: Solution, h: f64| -> Option<[f64; 2]> {
+                let rq = self.residual(&q, omega)?;
+                Some([(rq[0] - r[0]) / h, (rq[1] - r[1]) / h])
+            };
+            let jl = column(
+                Solution {
+                    lambda: p.lambda + hl,
+                    ln_nu: p.ln_nu,
+                },
+                hl,
+            )?;
+            let jn = column(
+                Solution {
+                    lambda: p.lambda,
+                    ln_nu: p.ln_nu + hn,
+                },
+                hn,
+            )?;
+            let det = jl[0] * jn[1] - jl[1] * jn[0];
+            if det == 0.0 || !det.is_finite() {
+                return None;
+            }
+            let mut dl = -(r[0] * jn[1] - r[1] * jn[0]) / det;
+            let mut dn = -(jl[0] * r[1] - jl[1] * r[0]) / det;
+            // Keep steps local: ν by at most a factor e, Λ by at most its size plus 1.
+            let limit = (dn.abs() / 1.0).max(dl.abs() / (p.lambda + 1.0)).max(1.0);
+            dl /= limit;
+            dn /= limit;
+            let mut accepted = false;
+            for _ in 0..30 {
+                let mut lambda = p.lambda + dl;
+                if lambda < 0.0 {
+                    lambda = 0.1 * p.lambda;
+                }
+                let q = Solution {
+                    lambda,
+                    ln_nu: p.ln_nu + dn,
+                };
+                if let Some(rq) = self.residual(&q, omega) {
+                    if rq[0].abs().max(rq[1].abs()) < size {
+                        p = q;
+                        r = rq;
+                        accepted = true;
+                        break;
+                    }
+                }
+                dl *= 0.5;
+                dn *= 0.5;
+            }
+            if !accepted {
+                return None;
+            }
+        }
+        None
+    }
+}
+
+#[cfg(test)]
+mod debug_tests {
+    use super::*;
+    #[test]
+    fn shot_cost() {
+        let target = Target {
+            theta0: 0.8,
+            theta1: 0.6,
+            theta2: 0.5,
+        };
+        let form = SpaceForm::new_unchecked(0.0, 0.0, 0.3, 0.5, 1.5, TorsionType::One);
+        let n = 20000;
+        let t = std::time::Instant::now();
+        let mut steps = 0;
+        for _ in 0..n {
+            steps += shoot(&form, &target.cone(), true)
+                .unwrap()
+                .checkpoints
+                .len();
+        }
+        eprintln!(
+            "shot {:.2} us, steps {}",
+            t.elapsed().as_secs_f64() * 1e6 / n as f64,
+            steps / n
+        );
+        let p = Problem {
+            alpha: 0.0,
+            beta: 0.0,
+            kind: TorsionType::One,
+            target,
+        };
+        let t = std::time::Instant::now();
+        for _ in 0..200 {
+            p.solve_with_omega(0.5).unwrap();
+        }
+        eprintln!("solve {:.2} us", t.elapsed().as_secs_f64() * 1e6 / 200.0);
+    }
+    #[test]
+    fn scan_helix() {
+        for &(th0, th2) in &[(0.8, 0.5), (0.8, 2.0), (0.3, 1.0)] {
+            let target = Target {
+                theta0: th0,
+                theta1: th0,
+                theta2: th2,
+            };
+            for k in -8..=12 {
+                let nu = 10f64.powf(k as f64 * 0.25);
+                let form = SpaceForm::new_unchecked(0.0, 0.0, 0.0, 0.0, nu, TorsionType::One);
+                let shot = shoot(&form, &target.cone(), false);
+                match shot {
+                    Some(s) => eprintln!(
+                        "th0 {th0} th2 {th2} nu {nu:.3}: s {:.4} th1 {:.4} th2 {:.4}",
+                        s.end.s, s.theta1, s.theta2
+                    ),
+                    None => eprintln!("th0 {th0} th2 {th2} nu {nu:.3}: none"),
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,191 @@
+//! The cone-intersection step of seed 003 §4: integrate a standard-form curve until it meets
+//! the cone of half-angle θ0 about its start tangent.
+
+use super::family::SpaceForm;
+use super::taylor::{Expansion, State};
+use super::vec3::{angle, cross, dot, norm, scale, sub, unit, V3};
+
+/// Most Taylor steps one shot may take before the crossing is declared missing.
+const MAX_STEPS: usize = 400;
+
+/// Samples of the cone function inside each step, so that a crossing and recrossing
+/// within one step are not missed (a step turns the frame by about a radian at most).
+const PROBES: usize = 4;
+
+/// The cone with apex at the origin, axis +x (the start tangent) and half-angle θ0, and
+/// which crossing of it ends the segment.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Cone {
+    cos: f64,
+    half_angle: f64,
+    /// `false`: the first crossing outward (|θ2| ≤ π/2); `true`: the first crossing back
+    /// inward after it (|θ2| > π/2, seed 003 Fig. 16).
+    second: bool,
+}
+
+impl Cone {
+    pub(crate) fn new(theta0: f64, second: bool) -> Cone {
+        Cone {
+            cos: theta0.cos(),
+            half_angle: theta0,
+            second,
+        }
+    }
+
+    /// `|x| cos θ0 − x·e1`: negative inside the cone, positive outside.
+    fn g(&self, x: V3) -> f64 {
+        norm(x) * self.cos - x[0]
+    }
+}
+
+/// Where a standard-form curve meets the cone, and the end angles it gives the segment.
+#[derive(Clone, Debug)]
+pub(crate) struct Shot {
+    /// The state at the crossing.
+    pub(crate) end: State,
+    /// Angle between the end tangent and the chord, θ1 of the standard-form segment.
+    pub(crate) theta1: f64,
+    /// Dihedral angle about the chord from the start tangent's half-plane to the half-plane
+    /// of the point behind the end (`x_e − t_e`), θ2 of the standard-form segment.
+    pub(crate) theta2: f64,
+    /// The states at the starts of the steps, for evaluation after the solve.
+    pub(crate) checkpoints: Vec<State>,
+}
+
+/// The angles (θ0, θ1, θ2) of a chord and two tangents: θ0 between `t0` and the chord,
+/// θ1 between `t1` and the chord, θ2 the dihedral angle about the chord from the half-plane
+/// containing `t0` to the half-plane containing `−t1` (0 for a planar curve that turns one
+/// way, ±π for a planar S).
+pub(crate) fn end_angles(chord: V3, t0: V3, t1: V3) -> (f64, f64, f64) {
+    let c = unit(chord);
+    let u0 = sub(t0, scale(c, dot(t0, c)));
+    let minus_t1 = scale(t1, -1.0);
+    let u1 = sub(minus_t1, scale(c, dot(minus_t1, c)));
+    let theta2 = dot(c, cross(u0, u1)).atan2(dot(u0, u1));
+    (angle(t0, c), angle(t1, c), theta2)
+}
+
+/// Integrate `form` from s = 0 to its crossing with `cone`. `None` when the curve reaches a
+/// bound of its valid range first, turns its tangent or binormal by more than 2π first (the
+/// seed's guard against looping segments), or never gets there.
+pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep_checkpoints: bool) -> Option<Shot> {
+    let (_, s_max) = form.s_range();
+    let mut state = State::start();
+    let mut checkpoints = Vec::new();
+    // Inside the cone at the start (the curve leaves the apex along the axis).
+    let mut outside = false;
+    let mut exited = false;
+    for _ in 0..MAX_STEPS {
+        let expansion = Expansion::new(form, &state);
+        let mut h = expansion.step_size();
+        // Where κ or τ is entire (α = −1: κ linear) the series reaches the bound itself;
+        // where it is singular there, steps shrink toward it and stop just short.
+        let last = state.s + h >= s_max;
+        if last {
+            h = s_max - state.s;
+        }
+        if h <= 1e-12 * state.s.abs().max(1.0) {
+            return None;
+        }
+        if keep_checkpoints {
+            checkpoints.push(state);
+        }
+        let mut prev = 0.0;
+        let mut g_prev = if state.s == 0.0 {
+            -1.0
+        } else {
+            cone.g(state.x)
+        };
+        for i in 1..=PROBES {
+            let sigma = h * i as f64 / PROBES as f64;
+            let g = cone.g(expansion.point_at(sigma));
+            let crossed = if !outside { g > 0.0 } else { g < 0.0 };
+            if crossed {
+                if !outside && cone.second {
+                    // The outward crossing; look for the way back in.
+                    outside = true;
+                    exited = true;
+                } else if !outside || exited {
+                    let sigma = refine(cone, &expansion, prev, g_prev, sigma, g);
+                    return finish(form, &expansion, sigma, checkpoints);
+                }
+            }
+            prev = sigma;
+            g_prev = g;
+        }
+        if last {
+            return None;
+        }
+        state = expansion.state_at(h);
+        // The seed's 2π guard, on the closed-form turning of tangent and binormal.
+        let two_pi = std::f64::consts::TAU;
+        if form.kappa_law().integral(state.s) > two_pi || form.tau_law().integral(state.s) > two_pi
+        {
+            return None;
+        }
+        if !cone.second && !outside && never_leaves(form, cone, &state) {
+            return None;
+        }
+    }
+    None
+}
+
+/// The crossing inside a step, between probes `a` (g = `ga`) and `b` (g = `gb`) of opposite
+/// signs: Newton on the step's series, kept inside the bracket (bisection otherwise).
+fn refine(cone: &Cone, e: &Expansion, mut a: f64, mut ga: f64, mut b: f64, gb: f64) -> f64 {
+    let mut x = a - ga * (b - a) / (gb - ga);
+    for _ in 0..60 {
+        let p = e.point_at(x);
+        let t = e.tangent_at(x);
+        let r = norm(p);
+        let g = r * cone.cos - p[0];
+        if g == 0.0 {
+            return x;
+        }
+        if (g < 0.0) == (ga < 0.0) {
+            a = x;
+            ga = g;
+        } else {
+            b = x;
+        }
+        let dg = cone.cos * dot(p, t) / r - t[0];
+        let newton = x - g / dg;
+        let next = if newton > a.min(b) && newton < a.max(b) {
+            newton
+        } else {
+            0.5 * (a + b)
+        };
+        if (next - x).abs() <= 1e-16 * (e.s0.abs() + x.abs()) || a == b {
+            return next;
+        }
+        x = next;
+    }
+    x
+}
+
+fn finish(form: &SpaceForm, e: &Expansion, sigma: f64, checkpoints: Vec<State>) -> Option<Shot> {
+    let end = e.state_at(sigma);
+    let two_pi = std::f64::consts::TAU;
+    if form.kappa_law().integral(end.s) > two_pi || form.tau_law().integral(end.s) > two_pi {
+        return None;
+    }
+    let (_, theta1, theta2) = end_angles(end.x, [1.0, 0.0, 0.0], end.t);
+    Some(Shot {
+        end,
+        theta1,
+        theta2,
+        checkpoints,
+    })
+}
+
+/// Can the curve, inside a cone narrower than a half-space, still leave it? Not if it is
+/// inside and its tangent stays inside by more than all the turning left to it: every later
+/// point is then the current one plus a path inside the (convex) cone.
+fn never_leaves(form: &SpaceForm, cone: &Cone, state: &State) -> bool {
+    if cone.half_angle >= std::f64::consts::FRAC_PI_2 {
+        return false;
+    }
+    let remaining = form.kappa_law().integral_upper() - form.kappa_law().integral(state.s);
+    let tangent_angle = state.t[0].clamp(-1.0, 1.0).acos();
+    remaining.is_finite() && tangent_angle + remaining < cone.half_angle
+}

@@ -127,10 +127,6 @@ impl Target {
         let (c, d) = (self.theta1, self.theta2.abs());
         [a * b.cos() - c * d.cos(), a * b.sin() - c * d.sin()]
     }
-
-    fn cone(&self) -> Cone {
-        Cone::new(self.theta0, self.theta2.abs() > std::f64::consts::FRAC_PI_2)
-    }
 }
 
 /// One converged standard form.
@@ -504,15 +500,36 @@ fn solve_space(
         theta1,
         theta2,
     };
-    let problem = Problem {
-        alpha,
-        beta,
-        kind,
-        target,
+    // The seed's crossing (first outward, or back inward when |θ2| > π/2), then the one a
+    // turn later for curves that wind further about the cone's axis.
+    let first = if theta2.abs() > std::f64::consts::FRAC_PI_2 {
+        2
+    } else {
+        1
     };
-    let solution = problem.solve_with_omega(omega)?;
+    let mut failure = None;
+    let mut found = None;
+    for crossing in [first, first + 2] {
+        let problem = Problem {
+            alpha,
+            beta,
+            kind,
+            target,
+            crossing,
+        };
+        match problem.solve_with_omega(omega) {
+            Ok(solution) => {
+                found = Some((problem, solution));
+                break;
+            }
+            Err(e) => failure = Some(more_helpful(failure, e)),
+        }
+    }
+    let Some((problem, solution)) = found else {
+        return Err(failure.expect("at least one crossing tried"));
+    };
     let form = problem.form(&solution, omega);
-    let shot = shoot(&form, &target.cone(), true).expect("a converged shot repeats");
+    let shot = shoot(&form, &problem.cone(), true).expect("a converged shot repeats");
     // Mirror when the standard form's dihedral has the other sign (seed 003 §4).
     let mirror_z = (shot.theta2 < 0.0) != (theta2 < 0.0);
     let m = |v: V3| if mirror_z { [v[0], v[1], -v[2]] } else { v };
@@ -539,15 +556,41 @@ fn solve_space(
     })
 }
 
-/// The two-parameter search of seed 003 §4 for fixed α, β, type and end geometry.
+/// The state of a ν scan: the next grid index, the last defined point's dihedral mismatch
+/// and every defined point with its residual.
+#[derive(Default)]
+struct Scan {
+    next: u32,
+    prev: Option<(f64, f64)>,
+    defined: Vec<(f64, Solution)>,
+}
+
+/// Of two failures, the one that tells the caller more: the larger Ω_max.
+fn more_helpful(old: Option<Error>, new: Error) -> Error {
+    let omega_max = |e: &Error| match e {
+        Error::NotDrawable(NotDrawable::TorsionTooLarge { omega_max, .. }) => *omega_max,
+        _ => -1.0,
+    };
+    match old {
+        Some(old) if omega_max(&old) >= omega_max(&new) => old,
+        _ => new,
+    }
+}
+
+/// The two-parameter search of seed 003 §4 for fixed α, β, type, end geometry and crossing.
 struct Problem {
     alpha: f64,
     beta: f64,
     kind: TorsionType,
     target: Target,
+    crossing: u32,
 }
 
 impl Problem {
+    fn cone(&self) -> Cone {
+        Cone::new(self.target.theta0, self.crossing)
+    }
+
     fn form(&self, p: &Solution, omega: f64) -> SpaceForm {
         SpaceForm::new_unchecked(
             self.alpha,
@@ -560,24 +603,21 @@ impl Problem {
     }
 
     fn residual(&self, p: &Solution, omega: f64) -> Option<[f64; 2]> {
-        let shot = shoot(&self.form(p, omega), &self.target.cone(), false)?;
+        let shot = shoot(&self.form(p, omega), &self.cone(), false)?;
         Some(self.target.residual(&shot))
     }
 
     /// Solve at `omega`, directly from a near-helix start, else by continuation in Ω from
     /// 0; report the largest Ω reached when `omega` is out of reach.
     fn solve_with_omega(&self, omega: f64) -> Result<Solution> {
-        if let Some(s) = self.start(omega).and_then(|s| self.newton(s, omega)) {
+        if let Some(s) = self.attempt(omega) {
             return Ok(s);
         }
         let none = || Error::NotDrawable(NotDrawable::NoSpaceSegment { omega });
         if omega == 0.0 {
             return Err(none());
         }
-        let mut ok = self
-            .start(0.0)
-            .and_then(|s| self.newton(s, 0.0))
-            .ok_or_else(none)?;
+        let mut ok = self.attempt(0.0).ok_or_else(none)?;
         let (mut reached, mut step) = (0.0, 0.25 * omega);
         while step > 1e-6 * omega {
             let next = (reached + step).min(omega);
@@ -597,41 +637,60 @@ impl Problem {
         }))
     }
 
-    /// The start of the search: Λ = 0 (a helix when Ω = 0, which always meets the cone) and
-    /// the ν whose dihedral angle matches the end's. The helix's axis makes the angle
-    /// atan ν with the start tangent, so it leaves the cone only for ν beyond about tan θ0,
-    /// and its dihedral angle falls toward 0 as ν grows: scan upward from there in quarter
-    /// decades and interpolate at the first sign change (else keep the best point seen).
-    fn start(&self, omega: f64) -> Option<Solution> {
+    /// Newton from the near-helix start (Λ = 0: a helix when Ω = 0, which always meets the
+    /// cone, with the ν whose dihedral angle matches the end's); where the region in which the curve meets the
+    /// cone is narrow, the solution may lie next to its edge and a descent from there stalls
+    /// against it: the rest of the scan is then made and its best points tried, and (rarely
+    /// needed) the same with starts of larger Λ.
+    fn attempt(&self, omega: f64) -> Option<Solution> {
+        for lambda in [0.0, 0.3, 1.0, 3.0] {
+            let mut scan = Scan::default();
+            if let Some(start) = self.scan(omega, lambda, &mut scan, true) {
+                if let Some(s) = self.newton(start, omega) {
+                    return Some(s);
+                }
+            }
+            self.scan(omega, lambda, &mut scan, false);
+            scan.defined.sort_by(|a, b| a.0.total_cmp(&b.0));
+            for (_, start) in scan.defined.into_iter().take(3) {
+                if let Some(s) = self.newton(start, omega) {
+                    return Some(s);
+                }
+            }
+        }
+        None
+    }
+
+    /// The ν scan at fixed Λ. The helix's axis makes the angle atan ν with the start
+    /// tangent, so it leaves the cone only for ν beyond about tan θ0, and its dihedral
+    /// angle falls toward 0 as ν grows: scan upward from there in quarter decades; with
+    /// `stop`, return at the first sign change of the dihedral mismatch, interpolated.
+    fn scan(&self, omega: f64, lambda: f64, scan: &mut Scan, stop: bool) -> Option<Solution> {
         let base = self.target.theta0.min(1.4).tan().ln() - 0.5 * std::f64::consts::LN_10;
         let want = self.target.theta2.abs();
         let step = 0.25 * std::f64::consts::LN_10;
-        let mut best: Option<(f64, Solution)> = None;
-        let mut prev: Option<(f64, f64)> = None;
-        for k in 0..16 {
-            let ln_nu = base + f64::from(k) * step;
-            let p = Solution { lambda: 0.0, ln_nu };
-            let Some(shot) = shoot(&self.form(&p, omega), &self.target.cone(), false) else {
-                prev = None;
+        while scan.next < 16 {
+            let ln_nu = base + f64::from(scan.next) * step;
+            scan.next += 1;
+            let p = Solution { lambda, ln_nu };
+            let Some(shot) = shoot(&self.form(&p, omega), &self.cone(), false) else {
+                scan.prev = None;
                 continue;
             };
             let r = self.target.residual(&shot);
-            let size = r[0].hypot(r[1]);
-            if best.as_ref().is_none_or(|(b, _)| size < *b) {
-                best = Some((size, p));
-            }
+            scan.defined.push((r[0].hypot(r[1]), p));
             let d = shot.theta2.abs() - want;
+            let prev = scan.prev.replace((ln_nu, d));
             if let Some((ln_prev, d_prev)) = prev {
-                if d_prev > 0.0 && d <= 0.0 {
+                if stop && d_prev > 0.0 && d <= 0.0 {
                     return Some(Solution {
-                        lambda: 0.0,
+                        lambda,
                         ln_nu: ln_prev + step * d_prev / (d_prev - d),
                     });
                 }
             }
-            prev = Some((ln_nu, d));
         }
-        best.map(|(_, p)| p)
+        None
     }
 
     /// Damped Newton on the two residuals in (Λ, ln ν) with a forward-difference Jacobian;
@@ -640,11 +699,20 @@ impl Problem {
     /// current one.
     fn newton(&self, mut p: Solution, omega: f64) -> Option<Solution> {
         let mut r = self.residual(&p, omega)?;
+        let mut slow = 0;
+        let mut last = f64::INFINITY;
         for _ in 0..60 {
             let size = r[0].abs().max(r[1].abs());
             if size < RESIDUAL_TOLERANCE {
                 return (p.lambda >= 0.0).then_some(p);
             }
+            // Newton converges fast near a root; steady crawling means a dead end (the
+            // edge of the region where the curve meets the cone).
+            slow = if size > 0.7 * last { slow + 1 } else { 0 };
+            if slow >= 4 {
+                return None;
+            }
+            last = size;
             let hl = 1e-7 * p.lambda.max(1e-3);
             let hn = 1e-7;
             let column = |q: Solution, h: f64| -> Option<[f64; 2]> {
@@ -701,66 +769,5 @@ impl Problem {
             }
         }
         None
-    }
-}
-
-#[cfg(test)]
-mod debug_tests {
-    use super::*;
-    #[test]
-    fn shot_cost() {
-        let target = Target {
-            theta0: 0.8,
-            theta1: 0.6,
-            theta2: 0.5,
-        };
-        let form = SpaceForm::new_unchecked(0.0, 0.0, 0.3, 0.5, 1.5, TorsionType::One);
-        let n = 20000;
-        let t = std::time::Instant::now();
-        let mut steps = 0;
-        for _ in 0..n {
-            steps += shoot(&form, &target.cone(), true)
-                .unwrap()
-                .checkpoints
-                .len();
-        }
-        eprintln!(
-            "shot {:.2} us, steps {}",
-            t.elapsed().as_secs_f64() * 1e6 / n as f64,
-            steps / n
-        );
-        let p = Problem {
-            alpha: 0.0,
-            beta: 0.0,
-            kind: TorsionType::One,
-            target,
-        };
-        let t = std::time::Instant::now();
-        for _ in 0..200 {
-            p.solve_with_omega(0.5).unwrap();
-        }
-        eprintln!("solve {:.2} us", t.elapsed().as_secs_f64() * 1e6 / 200.0);
-    }
-    #[test]
-    fn scan_helix() {
-        for &(th0, th2) in &[(0.8, 0.5), (0.8, 2.0), (0.3, 1.0)] {
-            let target = Target {
-                theta0: th0,
-                theta1: th0,
-                theta2: th2,
-            };
-            for k in -8..=12 {
-                let nu = 10f64.powf(k as f64 * 0.25);
-                let form = SpaceForm::new_unchecked(0.0, 0.0, 0.0, 0.0, nu, TorsionType::One);
-                let shot = shoot(&form, &target.cone(), false);
-                match shot {
-                    Some(s) => eprintln!(
-                        "th0 {th0} th2 {th2} nu {nu:.3}: s {:.4} th1 {:.4} th2 {:.4}",
-                        s.end.s, s.theta1, s.theta2
-                    ),
-                    None => eprintln!("th0 {th0} th2 {th2} nu {nu:.3}: none"),
-                }
-            }
-        }
     }
 }

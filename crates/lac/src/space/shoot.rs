@@ -18,17 +18,18 @@ const PROBES: usize = 4;
 pub(crate) struct Cone {
     cos: f64,
     half_angle: f64,
-    /// `false`: the first crossing outward (|θ2| ≤ π/2); `true`: the first crossing back
-    /// inward after it (|θ2| > π/2, seed 003 Fig. 16).
-    second: bool,
+    /// Which crossing ends the segment, from 1: odd ones go outward (|θ2| ≤ π/2), even
+    /// ones back inward (|θ2| > π/2, seed 003 Fig. 16). The seed uses the first two; the
+    /// third and fourth serve curves that wind further about the cone's axis.
+    crossing: u32,
 }
 
 impl Cone {
-    pub(crate) fn new(theta0: f64, second: bool) -> Cone {
+    pub(crate) fn new(theta0: f64, crossing: u32) -> Cone {
         Cone {
             cos: theta0.cos(),
             half_angle: theta0,
-            second,
+            crossing,
         }
     }
 
@@ -73,8 +74,7 @@ pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep_checkpoints: bool) -> Op
     let mut state = State::start();
     let mut checkpoints = Vec::new();
     // Inside the cone at the start (the curve leaves the apex along the axis).
-    let mut outside = false;
-    let mut exited = false;
+    let mut crossings = 0;
     for _ in 0..MAX_STEPS {
         let expansion = Expansion::new(form, &state);
         let mut h = expansion.step_size();
@@ -99,13 +99,10 @@ pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep_checkpoints: bool) -> Op
         for i in 1..=PROBES {
             let sigma = h * i as f64 / PROBES as f64;
             let g = cone.g(expansion.point_at(sigma));
-            let crossed = if !outside { g > 0.0 } else { g < 0.0 };
-            if crossed {
-                if !outside && cone.second {
-                    // The outward crossing; look for the way back in.
-                    outside = true;
-                    exited = true;
-                } else if !outside || exited {
+            let outside = crossings % 2 == 1;
+            if (g > 0.0) != outside {
+                crossings += 1;
+                if crossings == cone.crossing {
                     let sigma = refine(cone, &expansion, prev, g_prev, sigma, g);
                     return finish(form, &expansion, sigma, checkpoints);
                 }
@@ -123,7 +120,7 @@ pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep_checkpoints: bool) -> Op
         {
             return None;
         }
-        if !cone.second && !outside && never_leaves(form, cone, &state) {
+        if cone.crossing == 1 && crossings == 0 && never_leaves(form, cone, &state) {
             return None;
         }
     }

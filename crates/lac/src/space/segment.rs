@@ -84,7 +84,7 @@ enum Shape {
 ///
 /// ```
 /// use lac::{SpaceSegment, TorsionType};
-/// let p = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [2.0, 1.0, 0.5], [2.0, 2.0, 1.0]];
+/// let p = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [2.0, 1.0, 0.5], [2.0, 2.0, 1.5]];
 /// let seg = SpaceSegment::from_control_points(p, 0.0, 0.0, 0.0, TorsionType::One)?;
 /// let end = seg.frame_at(seg.arc_length())?;
 /// assert!((end.point[1] - 2.0).abs() < 1e-9);

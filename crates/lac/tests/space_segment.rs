@@ -1,0 +1,455 @@
+//! Space segments from four points (seed 003 §4): every solved segment reproduces its ends
+//! and end tangents within 1e-9, checked by an integration independent of the solver (a
+//! classical Runge–Kutta with step doubling on the closed-form κ(s), τ(s) written out
+//! below, not the library's Taylor integrator).
+
+use lac::{Error, NotDrawable, SpaceForm, SpaceSegment, TorsionType};
+
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+type V = [f64; 3];
+fn sub(a: V, b: V) -> V {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn dot(a: V, b: V) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+fn norm(a: V) -> f64 {
+    dot(a, a).sqrt()
+}
+fn unit(a: V) -> V {
+    let n = norm(a);
+    [a[0] / n, a[1] / n, a[2] / n]
+}
+fn angle(a: V, b: V) -> f64 {
+    let c = [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ];
+    norm(c).atan2(dot(a, b))
+}
+
+/// κ(s) and τ(s) of the standard form straight from SPEC §6 (ρ and μ, then reciprocals).
+fn kappa_tau(f: &SpaceForm, s: f64) -> (f64, f64) {
+    let (alpha, beta, lambda, omega, nu) = (f.alpha(), f.beta(), f.lambda(), f.omega(), f.nu());
+    let rho = if alpha == 0.0 {
+        (lambda * s).exp()
+    } else {
+        (lambda * alpha * s + 1.0).powf(1.0 / alpha)
+    };
+    let sg = match f.torsion_type() {
+        TorsionType::One => 1.0,
+        TorsionType::Two => -1.0,
+    };
+    let mu = if beta == 0.0 {
+        nu * (sg * omega * s).exp()
+    } else {
+        (sg * omega * beta * s + nu.powf(beta)).powf(1.0 / beta)
+    };
+    (1.0 / rho, 1.0 / mu)
+}
+
+/// Classical RK4 on (x, t, n, b) from 0 to `s_end`, with step doubling: each step is taken
+/// whole and as two halves, accepted when they agree to 1e-14 and Richardson-combined, and
+/// the step adapts (κ and τ may vary on very different scales along one segment).
+fn independent_end(f: &SpaceForm, s_end: f64) -> (V, V) {
+    let deriv = |s: f64, y: &[f64; 12]| -> [f64; 12] {
+        let (k, t) = kappa_tau(f, s);
+        let mut d = [0.0; 12];
+        for i in 0..3 {
+            d[i] = y[3 + i];
+            d[3 + i] = k * y[6 + i];
+            d[6 + i] = -k * y[3 + i] + t * y[9 + i];
+            d[9 + i] = -t * y[6 + i];
+        }
+        d
+    };
+    let add = |y: &[f64; 12], d: &[f64; 12], c: f64| {
+        let mut z = *y;
+        for i in 0..12 {
+            z[i] += c * d[i];
+        }
+        z
+    };
+    let rk4 = |s: f64, y: &[f64; 12], h: f64| {
+        let k1 = deriv(s, y);
+        let k2 = deriv(s + 0.5 * h, &add(y, &k1, 0.5 * h));
+        let k3 = deriv(s + 0.5 * h, &add(y, &k2, 0.5 * h));
+        let k4 = deriv(s + h, &add(y, &k3, h));
+        let mut z = *y;
+        for j in 0..12 {
+            z[j] += h / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
+        }
+        z
+    };
+    let mut y = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+    let (mut s, mut h) = (0.0, 1e-3 * s_end);
+    while s < s_end {
+        h = h.min(s_end - s);
+        let whole = rk4(s, &y, h);
+        let half = rk4(s, &y, 0.5 * h);
+        let halves = rk4(s + 0.5 * h, &half, 0.5 * h);
+        let err = (0..12).fold(0.0f64, |m, j| m.max((whole[j] - halves[j]).abs()));
+        if err > 1e-14 && h > 1e-14 * s_end {
+            h *= 0.5;
+            continue;
+        }
+        for j in 0..12 {
+            y[j] = halves[j] + (halves[j] - whole[j]) / 15.0;
+        }
+        s += h;
+        if err < 1e-16 {
+            h *= 2.0;
+        }
+    }
+    ([y[0], y[1], y[2]], [y[3], y[4], y[5]])
+}
+
+/// Check the ends and end tangents of `seg` against `points`, by the independent
+/// integration; returns (position error / chord, tangent error in radians).
+fn check_ends(seg: &SpaceSegment, p: [V; 4]) -> (f64, f64) {
+    let form = seg.standard_form().unwrap();
+    let tr = seg.transform().unwrap();
+    let s_end = seg.s_end().unwrap();
+    let (x_end, t_end) = independent_end(form, s_end);
+    let start = tr.apply([0.0; 3]);
+    let end = tr.apply(x_end);
+    let t_start = tr.apply_vector([1.0, 0.0, 0.0]);
+    let t_end = tr.apply_vector(t_end);
+    let (first, last, t_first, t_last) = if tr.reversed {
+        (end, start, t_end.map(|c| -c), t_start.map(|c| -c))
+    } else {
+        (start, end, t_start, t_end)
+    };
+    let chord = norm(sub(p[3], p[0]));
+    let pos = (norm(sub(first, p[0])).max(norm(sub(last, p[3])))) / chord;
+    let tan = angle(t_first, unit(sub(p[1], p[0]))).max(angle(t_last, unit(sub(p[3], p[2]))));
+    (pos, tan)
+}
+
+/// Four control points from a standard-form piece, moved by a rotation, scale, translation
+/// and (optionally) a mirror: solvable by construction.
+fn constructed(rng: &mut Rng, form: &SpaceForm, s_end: f64) -> [V; 4] {
+    let f0 = form.frame_at(0.0).unwrap();
+    let f1 = form.frame_at(s_end).unwrap();
+    let (a, b) = (0.3 + 0.5 * rng.next(), 0.3 + 0.5 * rng.next());
+    let mut p = [
+        f0.point,
+        [a, 0.0, 0.0],
+        sub(f1.point, f1.tangent.map(|c| c * b)),
+        f1.point,
+    ];
+    // Half the time the caller gives the points the other way round (θ0 < θ1): the
+    // solver swaps the ends.
+    if rng.next() < 0.5 {
+        p.reverse();
+    }
+    let mirror = rng.next() < 0.3;
+    let (yaw, pitch, roll) = (6.0 * rng.next(), 3.0 * rng.next(), 6.0 * rng.next());
+    let k = 0.1 + 10.0 * rng.next();
+    let shift = [rng.next() * 5.0, -rng.next() * 5.0, rng.next()];
+    for q in &mut p {
+        if mirror {
+            q[2] = -q[2];
+        }
+        let (c, s) = (yaw.cos(), yaw.sin());
+        *q = [c * q[0] - s * q[1], s * q[0] + c * q[1], q[2]];
+        let (c, s) = (pitch.cos(), pitch.sin());
+        *q = [c * q[0] + s * q[2], q[1], -s * q[0] + c * q[2]];
+        let (c, s) = (roll.cos(), roll.sin());
+        *q = [q[0], c * q[1] - s * q[2], s * q[1] + c * q[2]];
+        *q = [
+            k * q[0] + shift[0],
+            k * q[1] + shift[1],
+            k * q[2] + shift[2],
+        ];
+    }
+    p
+}
+
+#[test]
+fn solved_segments_reproduce_ends_and_tangents_within_1e_9() {
+    let mut rng = Rng(0x5eed_3d);
+    let (mut solved, mut total, mut reversed, mut mirrored) = (0, 0, 0, 0);
+    let mut worst = (0.0f64, 0.0f64);
+    for alpha in [-1.0, 0.0, 1.0] {
+        for beta in [-1.0, 0.0, 1.0] {
+            let mut made = 0;
+            while made < 12 {
+                let lambda = 1.5 * rng.next();
+                let nu = (2.0 * rng.next() - 0.7).exp();
+                let omega = if made % 2 == 0 { 0.0 } else { 0.4 * rng.next() };
+                let kind = if made % 4 < 2 {
+                    TorsionType::One
+                } else {
+                    TorsionType::Two
+                };
+                let form = SpaceForm::new(alpha, beta, lambda, omega, nu, kind).unwrap();
+                let s_end = 0.3 + 3.0 * rng.next();
+                if s_end >= 0.999 * form.s_range().1
+                    || form.theta(s_end).unwrap() > 5.5
+                    || form.phi(s_end).unwrap() > 5.5
+                {
+                    continue;
+                }
+                made += 1;
+                total += 1;
+                let p = constructed(&mut rng, &form, s_end);
+                let Ok(seg) = SpaceSegment::from_control_points(p, alpha, beta, omega, kind) else {
+                    continue;
+                };
+                solved += 1;
+                let tr = seg.transform().unwrap();
+                reversed += usize::from(tr.reversed);
+                mirrored += usize::from(tr.mirror_z);
+                let f = seg.standard_form().unwrap();
+                assert!(f.lambda() >= 0.0 && f.nu() > 0.0);
+                // The seed's guard: neither tangent nor binormal turns by more than 2π.
+                let s_end = seg.s_end().unwrap();
+                assert!(f.theta(s_end).unwrap() <= std::f64::consts::TAU);
+                assert!(f.phi(s_end).unwrap() <= std::f64::consts::TAU);
+                let (pos, tan) = check_ends(&seg, p);
+                assert!(
+                    pos < 1e-9 && tan < 1e-9,
+                    "alpha {alpha} beta {beta} omega {omega} {kind:?}: position {pos:e}, \
+                     tangent {tan:e}"
+                );
+                worst = (worst.0.max(pos), worst.1.max(tan));
+            }
+        }
+    }
+    eprintln!(
+        "solved {solved}/{total} (reversed {reversed}, mirrored {mirrored}); worst position \
+         {:e}, tangent {:e}",
+        worst.0, worst.1
+    );
+    assert!(
+        solved as f64 >= 0.95 * total as f64,
+        "solved {solved}/{total}"
+    );
+    assert!(reversed > 0 && mirrored > 0 && reversed < solved);
+}
+
+#[test]
+fn frames_are_orthonormal_right_handed_and_match_the_ends() {
+    let p = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [2.0, 1.0, 0.5],
+        [2.0, 2.0, 1.5],
+    ];
+    let seg = SpaceSegment::from_control_points(p, 0.0, 0.0, 0.2, TorsionType::One).unwrap();
+    let frames = seg.sample(33).unwrap();
+    assert_eq!(frames.len(), 33);
+    assert!(norm(sub(frames[0].point, p[0])) < 1e-12);
+    assert!(norm(sub(frames[32].point, p[3])) < 1e-9 * 3.0);
+    for (i, f) in frames.iter().enumerate() {
+        assert!((f.s - seg.arc_length() * i as f64 / 32.0).abs() < 1e-12);
+        for v in [f.tangent, f.normal, f.binormal] {
+            assert!((norm(v) - 1.0).abs() < 1e-14);
+        }
+        assert!(dot(f.tangent, f.normal).abs() < 1e-14);
+        let c = [
+            f.tangent[1] * f.normal[2] - f.tangent[2] * f.normal[1],
+            f.tangent[2] * f.normal[0] - f.tangent[0] * f.normal[2],
+            f.tangent[0] * f.normal[1] - f.tangent[1] * f.normal[0],
+        ];
+        assert!(norm(sub(c, f.binormal)) < 1e-14);
+        assert!(f.curvature > 0.0 && f.torsion != 0.0);
+    }
+    // The tangent is the derivative of the position (central differences).
+    for w in frames.windows(3) {
+        let h = w[2].s - w[0].s;
+        let d = sub(w[2].point, w[0].point).map(|c| c / h);
+        assert!(norm(sub(d, w[1].tangent)) < 1e-3);
+    }
+}
+
+#[test]
+fn curvature_and_torsion_graphs_are_lines_of_slopes_alpha_and_beta() {
+    let p = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [2.0, 1.0, 0.5],
+        [2.0, 2.0, 1.5],
+    ];
+    for (alpha, beta) in [(-1.0, 0.5), (0.0, 0.0), (1.0, -1.0)] {
+        let seg = SpaceSegment::from_control_points(p, alpha, beta, 0.1, TorsionType::Two).unwrap();
+        for (graph, slope) in [
+            (seg.log_curvature_graph(9).unwrap(), alpha),
+            (seg.log_torsion_graph(9).unwrap(), beta),
+        ] {
+            assert_eq!(graph.len(), 9);
+            for w in graph.windows(2) {
+                let measured = (w[1].y - w[0].y) / (w[1].x - w[0].x);
+                assert!((measured - slope).abs() < 1e-6, "{measured} vs {slope}");
+            }
+        }
+        // Finite differences of the sampled radii give the same ordinate.
+        let frames = seg.sample(2001).unwrap();
+        let lcg = seg.log_curvature_graph(2001).unwrap();
+        let i = 1000;
+        let (r0, r1) = (1.0 / frames[i - 1].curvature, 1.0 / frames[i + 1].curvature);
+        let rho = 1.0 / frames[i].curvature;
+        let ds_drho = (frames[i + 1].s - frames[i - 1].s) / (r1 - r0);
+        assert!(((rho * ds_drho.abs()).ln() - lcg[i].y).abs() < 1e-5);
+    }
+}
+
+#[test]
+fn coplanar_points_give_the_planar_segment() {
+    let p = [
+        [0.0, 0.0, 1.0],
+        [1.0, 0.0, 1.0],
+        [2.0, 0.5, 1.0],
+        [2.5, 1.5, 1.0],
+    ];
+    let seg = SpaceSegment::from_control_points(p, 0.5, 0.0, 0.0, TorsionType::One).unwrap();
+    assert!(seg.is_planar() && seg.standard_form().is_none() && seg.transform().is_none());
+    let planar = seg.planar().unwrap();
+    assert_eq!(planar.alpha(), 0.5);
+    let frames = seg.sample(17).unwrap();
+    assert!(norm(sub(frames[0].point, p[0])) < 1e-12);
+    assert!(norm(sub(frames[16].point, p[3])) < 1e-12);
+    assert!(angle(frames[16].tangent, unit(sub(p[3], p[2]))) < 1e-12);
+    assert!(frames
+        .iter()
+        .all(|f| f.torsion == 0.0 && (f.point[2] - 1.0).abs() < 1e-12));
+    // A coplanar S has an inflection: no log-aesthetic segment.
+    let s = [
+        [0.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [2.0, -1.0, 0.0],
+        [3.0, 0.0, 0.0],
+    ];
+    assert!(matches!(
+        SpaceSegment::from_control_points(s, 0.5, 0.0, 0.0, TorsionType::One),
+        Err(Error::InflectedPolygon { .. })
+    ));
+}
+
+#[test]
+fn bad_input_gives_typed_errors() {
+    let p = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [2.0, 1.0, 0.5],
+        [2.0, 2.0, 1.5],
+    ];
+    let solve = |p, a, b, w| SpaceSegment::from_control_points(p, a, b, w, TorsionType::One);
+    let mut nan = p;
+    nan[2][1] = f64::NAN;
+    assert!(matches!(
+        solve(nan, 0.0, 0.0, 0.0),
+        Err(Error::NonFinite { .. })
+    ));
+    assert!(matches!(
+        solve(p, f64::INFINITY, 0.0, 0.0),
+        Err(Error::NonFinite { .. })
+    ));
+    assert!(matches!(
+        solve(p, 0.0, 0.0, -1.0),
+        Err(Error::OutOfRange { .. })
+    ));
+    let mut same = p;
+    same[1] = same[0];
+    assert!(matches!(
+        solve(same, 0.0, 0.0, 0.0),
+        Err(Error::CoincidentPoints {
+            first: 0,
+            second: 1
+        })
+    ));
+    // Start tangent along the chord.
+    let along = [
+        [0.0, 0.0, 0.0],
+        [1.0, 1.0, 1.0],
+        [2.0, 1.0, 0.5],
+        [2.0, 2.0, 2.0],
+    ];
+    assert!(matches!(
+        solve(along, 0.0, 0.0, 0.0),
+        Err(Error::CollinearPoints)
+    ));
+    assert!(TorsionType::from_number(3).is_err());
+}
+
+#[test]
+fn too_large_omega_reports_the_largest_that_works() {
+    let p = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [2.0, 1.0, 0.5],
+        [2.0, 2.0, 1.5],
+    ];
+    let err = SpaceSegment::from_control_points(p, 0.0, 1.0, 50.0, TorsionType::One).unwrap_err();
+    let Error::NotDrawable(NotDrawable::TorsionTooLarge { omega, omega_max }) = err else {
+        panic!("expected TorsionTooLarge, got {err:?}");
+    };
+    assert_eq!(omega, 50.0);
+    assert!(omega_max > 0.0 && omega_max < 50.0);
+    let seg = SpaceSegment::from_control_points(p, 0.0, 1.0, omega_max, TorsionType::One).unwrap();
+    let (pos, tan) = check_ends(&seg, p);
+    let f = seg.standard_form().unwrap();
+    assert!(
+        pos < 1e-9 && tan < 1e-9,
+        "{pos:e} {tan:e} {f:?} {:?}",
+        seg.s_end()
+    );
+    // Some way beyond Ω_max it still fails.
+    assert!(SpaceSegment::from_control_points(
+        p,
+        0.0,
+        1.0,
+        omega_max * 1.05 + 1e-3,
+        TorsionType::One
+    )
+    .is_err());
+}
+
+mod never_panics {
+    use lac::{SpaceSegment, TorsionType};
+    use proptest::prelude::*;
+
+    fn coord() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            8 => -10.0..10.0f64,
+            1 => Just(0.0),
+            1 => prop::num::f64::ANY,
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(96))]
+        /// Any input gives a segment or a typed error, never a panic; a segment samples.
+        #[test]
+        fn any_input_gives_a_segment_or_an_error(
+            c in prop::collection::vec(coord(), 12),
+            alpha in -3.0..3.0f64,
+            beta in -3.0..3.0f64,
+            omega in prop_oneof![Just(0.0), 0.0..2.0f64, Just(-1.0), Just(f64::NAN)],
+            two in any::<bool>(),
+        ) {
+            let p = [
+                [c[0], c[1], c[2]],
+                [c[3], c[4], c[5]],
+                [c[6], c[7], c[8]],
+                [c[9], c[10], c[11]],
+            ];
+            let kind = if two { TorsionType::Two } else { TorsionType::One };
+            if let Ok(seg) = SpaceSegment::from_control_points(p, alpha, beta, omega, kind) {
+                let frames = seg.sample(5).unwrap();
+                prop_assert!(frames.iter().all(|f| f.point.iter().all(|x| x.is_finite())));
+            }
+        }
+    }
+}

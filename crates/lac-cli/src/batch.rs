@@ -105,10 +105,10 @@ where
     match solved {
         Ok(Ok(report)) => report,
         Ok(Err(failure)) => failure.to_json_line(),
-        Err(_) => Failure {
-            kind: "internal",
-            message: "the solver panicked on this line; please report it with the line".into(),
-        }
+        Err(_) => Failure::new(
+            "internal",
+            "the solver panicked on this line; please report it with the line",
+        )
         .to_json_line(),
     }
 }

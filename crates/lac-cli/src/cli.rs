@@ -7,7 +7,8 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use crate::failure::Failure;
 
 /// Log-aesthetic curves: segments from three control points, compound-rhythm curves of two
-/// pieces, drawable regions, their cubic Bézier replacements, and curvature analysis.
+/// pieces, drawable regions, their cubic Bézier replacements, curvature analysis, and space
+/// curve segments from four control points.
 ///
 /// Errors go to standard error as one line of JSON, {"error":{"kind":…,"message":…}}, with
 /// exit code 2 for invalid input, 3 when the points and slopes admit no curve (or no Bézier
@@ -84,6 +85,26 @@ pub(crate) enum Command {
         override_usage = "lac lcg [FILE|-] [--samples N] [--format json|csv|svg|png] [-o FILE]"
     )]
     Lcg(LcgArgs),
+    /// Solve a log-aesthetic space curve segment (seed 003) for four control points, the
+    /// slopes alpha and beta of its curvature and torsion graphs, and the torsion parameter
+    /// omega; print its standard form and samples as JSON, draw it as SVG, or export it as an
+    /// OBJ or PLY polyline
+    ///
+    /// The JSON has "standard_form" {alpha, beta, lambda, omega, nu, type, s_end}, "transform"
+    /// {scale, rotation, translation, mirror_z, reversed} (your point = translation + scale ·
+    /// rotation · M · standard-form point, M = diag(1, 1, -1) when mirror_z; when reversed
+    /// the standard form runs from the last point to the first), "arc_length", "planar" and
+    /// "samples" [{s, x, y, z, kappa, tau}] equally spaced in arc length from the first point.
+    /// Coplanar points give the planar segment through the first point, the tangents'
+    /// intersection and the last point (torsion 0): "planar" true, "standard_form" and
+    /// "transform" null, and "planar_segment" {alpha, lambda, control_points} and a "note".
+    /// When omega is too large the error line has "omega_max", the largest omega that works.
+    #[command(
+        override_usage = "lac space --points \"x0,y0,z0 x1,y1,z1 x2,y2,z2 x3,y3,z3\" --alpha A --beta B \
+                                [--omega W] [--type 1|2]\n                 \
+                                [--samples N] [--frames] [--format json|svg|obj|ply] [-o FILE]"
+    )]
+    Space(SpaceArgs),
 }
 
 /// Arguments of `lac segment`.
@@ -229,6 +250,75 @@ pub(crate) enum CurveFormat {
     Csv,
     /// A drawing of the curve and its control polygon (and the joint of a compound curve)
     Svg,
+}
+
+/// Arguments of `lac space`.
+#[derive(Debug, Args)]
+pub(crate) struct SpaceArgs {
+    /// The four control points "x0,y0,z0 x1,y1,z1 x2,y2,z2 x3,y3,z3", separated by spaces
+    /// and/or semicolons: the curve starts at the first point, tangent to the first leg, and
+    /// ends at the last point, tangent to the last leg
+    #[arg(long, value_name = "POINTS", allow_hyphen_values = true)]
+    pub(crate) points: String,
+
+    /// Slope of the logarithmic curvature graph
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub(crate) alpha: f64,
+
+    /// Slope of the logarithmic torsion graph
+    #[arg(long, value_name = "B", allow_hyphen_values = true)]
+    pub(crate) beta: f64,
+
+    /// Torsion parameter, >= 0: how fast the radius of torsion changes along the standard
+    /// form (0: constant torsion; with Λ = 0 a helix)
+    #[arg(
+        long,
+        value_name = "W",
+        allow_hyphen_values = true,
+        default_value_t = 0.0
+    )]
+    pub(crate) omega: f64,
+
+    /// Torsion type: 1, the radius of torsion grows along the standard form; 2, it shrinks
+    #[arg(long = "type", value_name = "1|2", default_value_t = 1)]
+    pub(crate) torsion_type: u8,
+
+    /// Number of samples, equally spaced in arc length from the first to the last point (the
+    /// vertices of OBJ and PLY)
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = 65,
+        value_parser = clap::value_parser!(u32).range(2..=10_000_000)
+    )]
+    pub(crate) samples: u32,
+
+    /// JSON: add each sample's Frenet frame, unit vectors "t" (tangent), "n" (principal
+    /// normal) and "b" (binormal)
+    #[arg(long)]
+    pub(crate) frames: bool,
+
+    /// Output format
+    #[arg(long, value_enum, default_value_t = SpaceFormat::Json)]
+    pub(crate) format: SpaceFormat,
+
+    /// Write to FILE instead of standard output
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub(crate) file: Option<PathBuf>,
+}
+
+/// Output formats of `lac space`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum SpaceFormat {
+    /// One line: standard_form, transform, arc_length, planar, samples [{s,x,y,z,kappa,tau}]
+    Json,
+    /// Top (xy), front (xz) and side (yz) views at one scale, and a perspective view with
+    /// the curve's shadow
+    Svg,
+    /// Wavefront OBJ: a vertex "v x y z" per sample and one polyline "l 1 2 … N"
+    Obj,
+    /// ASCII PLY: vertices (x, y, z, kappa, tau) and an edge between consecutive samples
+    Ply,
 }
 
 /// Arguments of `lac region`.

@@ -5,7 +5,8 @@ use std::path::Path;
 
 use serde::Serialize;
 
-/// A failure reported as `{"error":{"kind":…,"message":…}}`.
+/// A failure reported as `{"error":{"kind":…,"message":…}}`, with `"omega_max"` after the
+/// message when Ω was too large for `lac space`.
 ///
 /// Exit codes: 2 for invalid input and usage errors, 3 when the numbers are valid but admit
 /// no result ([`lac::Error::NotDrawable`], [`lac::Error::FitFailed`],
@@ -17,6 +18,10 @@ pub(crate) struct Failure {
     pub(crate) kind: &'static str,
     /// What was wrong and what would fix it.
     pub(crate) message: String,
+    /// [`lac::NotDrawable::TorsionTooLarge`]: the largest torsion parameter Ω for which a
+    /// space segment was found; absent from the JSON otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(crate) omega_max: Option<f64>,
 }
 
 /// The one-line JSON wrapper `{"error": …}`.
@@ -26,20 +31,23 @@ struct ErrorLine<'a> {
 }
 
 impl Failure {
+    /// A failure of `kind` (see [`Failure::exit_code`]) with no extra field.
+    pub(crate) fn new(kind: &'static str, message: impl Into<String>) -> Self {
+        Failure {
+            kind,
+            message: message.into(),
+            omega_max: None,
+        }
+    }
+
     /// A command-line usage error (exit code 2).
     pub(crate) fn usage(message: impl Into<String>) -> Self {
-        Failure {
-            kind: "usage",
-            message: message.into(),
-        }
+        Failure::new("usage", message)
     }
 
     /// Input that could not be read as control points or JSON (exit code 2).
     pub(crate) fn invalid_input(message: impl Into<String>) -> Self {
-        Failure {
-            kind: "invalid_input",
-            message: message.into(),
-        }
+        Failure::new("invalid_input", message)
     }
 
     /// An I/O error on `path` ("standard input"/"standard output" when there is none).
@@ -48,10 +56,7 @@ impl Failure {
             Some(p) => format!("{what} {}", p.display()),
             None => what.to_string(),
         };
-        Failure {
-            kind: "io",
-            message: format!("cannot {target}: {err}"),
-        }
+        Failure::new("io", format!("cannot {target}: {err}"))
     }
 
     /// The process exit code for this failure.
@@ -66,7 +71,7 @@ impl Failure {
     /// The single line `{"error":{"kind":…,"message":…}}`, without a newline.
     pub(crate) fn to_json_line(&self) -> String {
         serde_json::to_string(&ErrorLine { error: self })
-            .expect("a struct of two strings always serializes")
+            .expect("a struct of strings and a number always serializes")
     }
 }
 
@@ -80,9 +85,15 @@ impl std::error::Error for Failure {}
 
 impl From<lac::Error> for Failure {
     fn from(err: lac::Error) -> Self {
+        let omega_max = match &err {
+            lac::Error::NotDrawable(lac::NotDrawable::TorsionTooLarge { omega_max, .. }) => {
+                Some(*omega_max)
+            }
+            _ => None,
+        };
         Failure {
-            kind: err.kind(),
-            message: err.to_string(),
+            omega_max,
+            ..Failure::new(err.kind(), err.to_string())
         }
     }
 }
@@ -92,7 +103,7 @@ pub(crate) fn from_clap(err: &clap::Error) -> Failure {
     if err.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
         return Failure::usage(
             "no subcommand given: use 'lac segment', 'lac compound', 'lac region', 'lac quasi', \
-             'lac monotone' or 'lac lcg'; see 'lac --help'",
+             'lac monotone', 'lac lcg' or 'lac space'; see 'lac --help'",
         );
     }
     let text = err.render().to_string();

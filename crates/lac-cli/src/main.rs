@@ -1,5 +1,5 @@
-//! The `lac` command: log-aesthetic curve segments, compound-rhythm curves and drawable
-//! regions.
+//! The `lac` command: log-aesthetic curve segments, compound-rhythm curves, drawable
+//! regions and space curve segments.
 //!
 //! `lac segment` solves a segment from three control points and α, `lac compound` a
 //! compound-rhythm curve (two pieces, slopes α0 and α1) from three points and a turning
@@ -8,10 +8,12 @@
 //! for segments or compound curves. `lac quasi` replaces either curve by rational or plain
 //! cubic Bézier pieces (seed 001), `lac monotone` decides whether the curvature of a
 //! rational cubic is monotone, and `lac lcg` plots the curvature and the logarithmic
-//! curvature graph of Bézier pieces or of a curve and fits its slope. Failures are one line
-//! of JSON on standard error: `{"error":{"kind":…,"message":…}}`, exit code 2 for invalid
-//! input, 3 for "not drawable" (and a Bézier fit that fails or misses its tolerance), 1 for
-//! I/O. See `lac --help`.
+//! curvature graph of Bézier pieces or of a curve and fits its slope. `lac space` solves a
+//! log-aesthetic space curve segment from four 3-D control points (seed 003) and prints it
+//! as JSON, SVG (three orthographic views and a perspective) or an OBJ/PLY polyline.
+//! Failures are one line of JSON on standard error: `{"error":{"kind":…,"message":…}}`,
+//! exit code 2 for invalid input, 3 for "not drawable" (and a Bézier fit that fails or
+//! misses its tolerance), 1 for I/O. See `lac --help`.
 
 mod batch;
 mod cli;
@@ -19,6 +21,7 @@ mod compound;
 mod curve;
 mod failure;
 mod lcg;
+mod mesh;
 mod monotone;
 mod output;
 mod points;
@@ -27,6 +30,7 @@ mod raster;
 mod region;
 mod report;
 mod segment;
+mod space;
 mod svg;
 
 use std::process::ExitCode;
@@ -58,6 +62,7 @@ fn main() -> ExitCode {
         Command::Quasi(args) => quasi::run(args),
         Command::Monotone(args) => monotone::run(args),
         Command::Lcg(args) => lcg::run(args),
+        Command::Space(args) => space::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,4 +1,5 @@
-//! Parsing the `--points` argument: points "x,y" separated by spaces and/or semicolons.
+//! Parsing the `--points` argument: points "x,y" (or "x,y,z" for `lac space`) separated by
+//! spaces and/or semicolons.
 
 use kurbo::Point;
 
@@ -16,6 +17,24 @@ pub(crate) fn parse_points(text: &str) -> Result<[Point; 3], Failure> {
 
 /// Parse as many points as one of `counts` (ascending) allows, as [`parse_points`] does.
 pub(crate) fn parse_point_list(text: &str, counts: &[usize]) -> Result<Vec<Point>, Failure> {
+    Ok(parse_coordinates::<2>(text, counts)?
+        .into_iter()
+        .map(|[x, y]| Point::new(x, y))
+        .collect())
+}
+
+/// Parse exactly four space points "x0,y0,z0 x1,y1,z1 x2,y2,z2 x3,y3,z3", as
+/// [`parse_points`] does.
+pub(crate) fn parse_space_points(text: &str) -> Result<[[f64; 3]; 4], Failure> {
+    let points = parse_coordinates::<3>(text, &[4])?;
+    Ok([points[0], points[1], points[2], points[3]])
+}
+
+/// Parse as many points of `N` coordinates as one of `counts` (ascending) allows.
+fn parse_coordinates<const N: usize>(
+    text: &str,
+    counts: &[usize],
+) -> Result<Vec<[f64; N]>, Failure> {
     let tight = tighten_commas(text);
     let tokens: Vec<&str> = tight
         .split(|c: char| c == ';' || c.is_whitespace())
@@ -30,8 +49,9 @@ pub(crate) fn parse_point_list(text: &str, counts: &[usize]) -> Result<Vec<Point
             }
         };
         return Err(Failure::invalid_input(format!(
-            "expected {expected} points \"x,y\" separated by spaces or semicolons, got {} in \
+            "expected {expected} points \"{}\" separated by spaces or semicolons, got {} in \
              {text:?}",
+            form(N),
             tokens.len()
         )));
     }
@@ -82,16 +102,35 @@ fn tighten_commas(text: &str) -> String {
     out
 }
 
-fn parse_point(token: &str, index: usize) -> Result<Point, Failure> {
+/// How a point of `n` coordinates is written: "x,y" or "x,y,z".
+fn form(n: usize) -> &'static str {
+    if n == 2 {
+        "x,y"
+    } else {
+        "x,y,z"
+    }
+}
+
+fn parse_point<const N: usize>(token: &str, index: usize) -> Result<[f64; N], Failure> {
     let bad = |why: &str| {
         Failure::invalid_input(format!(
-            "control point P{index} {token:?}: {why}; write each point as \"x,y\""
+            "control point P{index} {token:?}: {why}; write each point as \"{}\"",
+            form(N)
         ))
     };
-    let (x, y) = token.split_once(',').ok_or_else(|| bad("no comma"))?;
-    let x: f64 = x.parse().map_err(|_| bad("x is not a number"))?;
-    let y: f64 = y.parse().map_err(|_| bad("y is not a number"))?;
-    Ok(Point::new(x, y))
+    let parts: Vec<&str> = token.split(',').collect();
+    match parts.len() {
+        1 => return Err(bad("no comma")),
+        n if n != N => return Err(bad(&format!("{n} coordinates, not {N}"))),
+        _ => {}
+    }
+    let mut point = [0.0; N];
+    for ((slot, part), name) in point.iter_mut().zip(&parts).zip(["x", "y", "z"]) {
+        *slot = part
+            .parse()
+            .map_err(|_| bad(&format!("{name} is not a number")))?;
+    }
+    Ok(point)
 }
 
 #[cfg(test)]
@@ -155,6 +194,34 @@ mod tests {
                 "{text:?}"
             );
         }
+    }
+
+    #[test]
+    fn space_points_take_three_coordinates_and_exactly_four_points() {
+        assert_eq!(
+            parse_space_points("0,0,0 1,0,0; 2, 1, 0.5 -2,2,-1e0").unwrap(),
+            [
+                [0.0, 0.0, 0.0],
+                [1.0, 0.0, 0.0],
+                [2.0, 1.0, 0.5],
+                [-2.0, 2.0, -1.0]
+            ]
+        );
+        for text in [
+            "0,0,0 1,0,0 2,1,0",
+            "0,0,0 1,0,0 2,1,0 2,2,1 3,3,3",
+            "0,0,0 1,0 2,1,0 2,2,1",
+            "0,0,0 1,0,0,0 2,1,0 2,2,1",
+            "0,0,0 1,0,z 2,1,0 2,2,1",
+        ] {
+            let err = parse_space_points(text).unwrap_err();
+            assert_eq!(err.kind, "invalid_input", "{text:?}");
+            assert!(err.message.contains("\"x,y,z\""), "{err}");
+        }
+        assert!(parse_points("0,0 1,1,1 2,0")
+            .unwrap_err()
+            .message
+            .contains("3 coordinates, not 2"));
     }
 
     #[test]

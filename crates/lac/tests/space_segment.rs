@@ -178,7 +178,7 @@ fn constructed(rng: &mut Rng, form: &SpaceForm, s_end: f64) -> [V; 4] {
 
 #[test]
 fn solved_segments_reproduce_ends_and_tangents_within_1e_9() {
-    let mut rng = Rng(0x5eed_3d);
+    let mut rng = Rng(0x005e_ed3d);
     let (mut solved, mut total, mut reversed, mut mirrored) = (0, 0, 0, 0);
     let mut worst = (0.0f64, 0.0f64);
     for alpha in [-1.0, 0.0, 1.0] {

@@ -1,12 +1,14 @@
 //! `--format svg` of `lac segment` and `lac compound`: a standalone drawing of a curve made
 //! of log-aesthetic pieces, its control polygon, the joints between pieces and, on request,
-//! its curvature comb and evolute.
+//! its curvature comb and evolute. The drawings of `lac quasi`, `lac lcg` and `lac space` are
+//! in the submodules of the same names.
 
 mod comb;
 mod evolute;
 pub(crate) mod lcg;
 mod plot;
 pub(crate) mod quasi;
+pub(crate) mod space;
 mod view;
 
 use std::fmt::Write as _;
@@ -237,9 +239,14 @@ fn segments(svg: &mut String, lines: &[(Point, Point)], colour: &str, width: f64
 }
 
 fn marker(svg: &mut String, p: Point, index: usize) {
+    labelled_marker(svg, p, &format!("P{index}"));
+}
+
+/// A control point's marker with `label` beside it.
+fn labelled_marker(svg: &mut String, p: Point, label: &str) {
     let _ = writeln!(
         svg,
-        r##"<circle cx="{:.2}" cy="{:.2}" r="3.5" fill="white" stroke="#444" stroke-width="1.25"/><text x="{:.2}" y="{:.2}" fill="#444" font-family="sans-serif" font-size="12">P{index}</text>"##,
+        r##"<circle cx="{:.2}" cy="{:.2}" r="3.5" fill="white" stroke="#444" stroke-width="1.25"/><text x="{:.2}" y="{:.2}" fill="#444" font-family="sans-serif" font-size="12">{label}</text>"##,
         p.x,
         p.y,
         p.x + 6.0,

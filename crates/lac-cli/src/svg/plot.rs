@@ -37,6 +37,29 @@ impl Axis {
         Axis::nice(lo, hi)
     }
 
+    /// Axes drawn at one scale (the views of a space curve): each covers one `(min, max)`
+    /// range on the ticks of the widest range; a range within one tick gets one step on
+    /// either side.
+    pub(crate) fn common(ranges: &[(f64, f64)]) -> Vec<Axis> {
+        let (lo, hi) = ranges
+            .iter()
+            .copied()
+            .max_by(|a, b| (a.1 - a.0).total_cmp(&(b.1 - b.0)))
+            .unwrap_or((0.0, 1.0));
+        let step = Axis::nice(lo, hi).step;
+        ranges
+            .iter()
+            .map(|&(lo, hi)| {
+                let (mut lo, mut hi) = ((lo / step).floor() * step, (hi / step).ceil() * step);
+                if hi <= lo {
+                    lo -= step;
+                    hi += step;
+                }
+                Axis { lo, hi, step }
+            })
+            .collect()
+    }
+
     /// The axis from about `lo` to `hi` (finite, `lo ≤ hi`).
     fn nice(lo: f64, hi: f64) -> Axis {
         let mut span = hi - lo;
@@ -183,18 +206,30 @@ impl Panel {
             l - 62.0,
             t + 0.5 * h,
         );
-        let _ = writeln!(
-            svg,
-            r##"<text x="{l:.2}" y="{:.2}" fill="#111" font-family="sans-serif" font-size="15" font-weight="bold">{title}</text>"##,
-            t - 30.0
-        );
-        let (colour, text) = subtitle;
-        let _ = writeln!(
-            svg,
-            r#"<text x="{l:.2}" y="{:.2}" fill="{colour}" font-family="sans-serif" font-size="13">{text}</text>"#,
-            t - 10.0
-        );
+        panel_title(svg, l, t, title, subtitle);
     }
+}
+
+/// A panel's title in bold and a line of `(colour, text)` under it, above the plot area whose
+/// top-left corner is (`left`, `top`).
+pub(crate) fn panel_title(
+    svg: &mut String,
+    left: f64,
+    top: f64,
+    title: &str,
+    subtitle: (&str, &str),
+) {
+    let _ = writeln!(
+        svg,
+        r##"<text x="{left:.2}" y="{:.2}" fill="#111" font-family="sans-serif" font-size="15" font-weight="bold">{title}</text>"##,
+        top - 30.0
+    );
+    let (colour, text) = subtitle;
+    let _ = writeln!(
+        svg,
+        r#"<text x="{left:.2}" y="{:.2}" fill="{colour}" font-family="sans-serif" font-size="13">{text}</text>"#,
+        top - 10.0
+    );
 }
 
 #[cfg(test)]
@@ -216,5 +251,14 @@ mod tests {
         assert!(c.lo < 2.0 && c.hi > 2.0);
         assert_eq!(Axis::covering([]), Axis::covering([0.0, 1.0]));
         assert_eq!(Axis::covering([-0.3, 0.3]).label(0.0), "0");
+    }
+
+    #[test]
+    fn common_axes_share_the_widest_ones_step() {
+        let axes = Axis::common(&[(0.0, 2.0), (0.1, 0.35), (0.0, 0.0)]);
+        assert_eq!((axes[0].lo, axes[0].hi), (0.0, 2.0));
+        assert_eq!((axes[1].lo, axes[1].hi), (0.0, 0.5));
+        assert_eq!((axes[2].lo, axes[2].hi), (-0.5, 0.5));
+        assert!(axes.iter().all(|a| a.step == axes[0].step));
     }
 }

@@ -15,6 +15,13 @@ use crate::segment::Segment;
 /// Dihedral angles |θ2| below this (radians) count as coplanar: the planar segment is drawn.
 pub const PLANAR_TOLERANCE: f64 = 1e-9;
 
+/// The Λ of the start scans: near-helix first, then a spiral.
+const START_LAMBDAS: [f64; 2] = [0.0, 1.0];
+
+/// A solution whose tangent and binormal turn by at most this much (3π/2) is accepted at
+/// once; beyond it (nearly a loop) the other starts are tried for a gentler one.
+const GENTLE_TURNING: f64 = 1.5 * std::f64::consts::PI;
+
 /// Newton stops when both components of the end-tangent residual are below this (radians).
 const RESIDUAL_TOLERANCE: f64 = 1e-13;
 
@@ -134,6 +141,14 @@ impl Target {
 struct Solution {
     lambda: f64,
     ln_nu: f64,
+}
+
+/// A converged solution and the larger of the total turnings θ, φ of its tangent and
+/// binormal.
+#[derive(Clone, Debug)]
+struct Converged {
+    solution: Solution,
+    turning: f64,
 }
 
 impl SpaceSegment {
@@ -500,34 +515,20 @@ fn solve_space(
         theta1,
         theta2,
     };
-    // The seed's crossing (first outward, or back inward when |θ2| > π/2), then the one a
-    // turn later for curves that wind further about the cone's axis.
-    let first = if theta2.abs() > std::f64::consts::FRAC_PI_2 {
+    // The seed's crossing: the first outward, or the way back in when |θ2| > π/2.
+    let crossing = if theta2.abs() > std::f64::consts::FRAC_PI_2 {
         2
     } else {
         1
     };
-    let mut failure = None;
-    let mut found = None;
-    for crossing in [first, first + 2] {
-        let problem = Problem {
-            alpha,
-            beta,
-            kind,
-            target,
-            crossing,
-        };
-        match problem.solve_with_omega(omega) {
-            Ok(solution) => {
-                found = Some((problem, solution));
-                break;
-            }
-            Err(e) => failure = Some(more_helpful(failure, e)),
-        }
-    }
-    let Some((problem, solution)) = found else {
-        return Err(failure.expect("at least one crossing tried"));
+    let problem = Problem {
+        alpha,
+        beta,
+        kind,
+        target,
+        crossing,
     };
+    let solution = problem.solve_with_omega(omega)?;
     let form = problem.form(&solution, omega);
     let shot = shoot(&form, &problem.cone(), true).expect("a converged shot repeats");
     // Mirror when the standard form's dihedral has the other sign (seed 003 §4).
@@ -565,18 +566,6 @@ struct Scan {
     defined: Vec<(f64, Solution)>,
 }
 
-/// Of two failures, the one that tells the caller more: the larger Ω_max.
-fn more_helpful(old: Option<Error>, new: Error) -> Error {
-    let omega_max = |e: &Error| match e {
-        Error::NotDrawable(NotDrawable::TorsionTooLarge { omega_max, .. }) => *omega_max,
-        _ => -1.0,
-    };
-    match old {
-        Some(old) if omega_max(&old) >= omega_max(&new) => old,
-        _ => new,
-    }
-}
-
 /// The two-parameter search of seed 003 §4 for fixed α, β, type, end geometry and crossing.
 struct Problem {
     alpha: f64,
@@ -603,8 +592,11 @@ impl Problem {
     }
 
     fn residual(&self, p: &Solution, omega: f64) -> Option<[f64; 2]> {
-        let shot = shoot(&self.form(p, omega), &self.cone(), false)?;
-        Some(self.target.residual(&shot))
+        self.shot(p, omega).map(|shot| self.target.residual(&shot))
+    }
+
+    fn shot(&self, p: &Solution, omega: f64) -> Option<Shot> {
+        shoot(&self.form(p, omega), &self.cone(), false)
     }
 
     /// Solve at `omega`, directly from a near-helix start, else by continuation in Ω from
@@ -622,9 +614,9 @@ impl Problem {
         while step > 1e-6 * omega {
             let next = (reached + step).min(omega);
             match self.newton(ok.clone(), next) {
-                Some(s) if next == omega => return Ok(s),
-                Some(s) => {
-                    ok = s;
+                Some(c) if next == omega => return Ok(c.solution),
+                Some(c) => {
+                    ok = c.solution;
                     reached = next;
                     step *= 2.0;
                 }
@@ -638,27 +630,37 @@ impl Problem {
     }
 
     /// Newton from the near-helix start (Λ = 0: a helix when Ω = 0, which always meets the
-    /// cone, with the ν whose dihedral angle matches the end's); where the region in which the curve meets the
-    /// cone is narrow, the solution may lie next to its edge and a descent from there stalls
-    /// against it: the rest of the scan is then made and its best points tried, and (rarely
-    /// needed) the same with starts of larger Λ.
+    /// cone, with the ν whose dihedral angle matches the end's). Where the region in which
+    /// the curve meets the cone is narrow, the solution may lie next to its edge and a
+    /// descent stalls against it: the rest of the scan is then made and its best points
+    /// tried, then the same from Λ = 1. The ends may admit several segments; one whose
+    /// tangent or binormal turns by more than [`GENTLE_TURNING`] (near the 2π guard: a
+    /// loop) is kept only if no gentler one turns up among the starts.
     fn attempt(&self, omega: f64) -> Option<Solution> {
-        for lambda in [0.0, 0.3, 1.0, 3.0] {
+        let mut best: Option<Converged> = None;
+        for lambda in START_LAMBDAS {
             let mut scan = Scan::default();
-            if let Some(start) = self.scan(omega, lambda, &mut scan, true) {
-                if let Some(s) = self.newton(start, omega) {
-                    return Some(s);
+            let first = self.scan(omega, lambda, &mut scan, true);
+            let mut starts = first.into_iter().collect::<Vec<_>>();
+            for pass in 0..2 {
+                for start in starts.drain(..) {
+                    if let Some(c) = self.newton(start, omega) {
+                        if best.as_ref().is_none_or(|b| c.turning < b.turning) {
+                            best = Some(c);
+                        }
+                        if best.as_ref().is_some_and(|b| b.turning <= GENTLE_TURNING) {
+                            return best.map(|b| b.solution);
+                        }
+                    }
                 }
-            }
-            self.scan(omega, lambda, &mut scan, false);
-            scan.defined.sort_by(|a, b| a.0.total_cmp(&b.0));
-            for (_, start) in scan.defined.into_iter().take(3) {
-                if let Some(s) = self.newton(start, omega) {
-                    return Some(s);
+                if pass == 0 {
+                    self.scan(omega, lambda, &mut scan, false);
+                    scan.defined.sort_by(|a, b| a.0.total_cmp(&b.0));
+                    starts = scan.defined.drain(..).map(|(_, p)| p).take(3).collect();
                 }
             }
         }
-        None
+        best.map(|b| b.solution)
     }
 
     /// The ν scan at fixed Λ. The helix's axis makes the angle atan ν with the start
@@ -697,14 +699,23 @@ impl Problem {
     /// a trial point where the curve misses the cone is pulled back toward the current one
     /// (seed 003's rule for its simplex), and a negative Λ is replaced by a tenth of the
     /// current one.
-    fn newton(&self, mut p: Solution, omega: f64) -> Option<Solution> {
-        let mut r = self.residual(&p, omega)?;
+    fn newton(&self, mut p: Solution, omega: f64) -> Option<Converged> {
+        let mut shot = self.shot(&p, omega)?;
+        let mut r = self.target.residual(&shot);
         let mut slow = 0;
         let mut last = f64::INFINITY;
         for _ in 0..60 {
             let size = r[0].abs().max(r[1].abs());
             if size < RESIDUAL_TOLERANCE {
-                return (p.lambda >= 0.0).then_some(p);
+                let form = self.form(&p, omega);
+                let turning = form
+                    .kappa_law()
+                    .integral(shot.end.s)
+                    .max(form.tau_law().integral(shot.end.s));
+                return (p.lambda >= 0.0).then_some(Converged {
+                    solution: p,
+                    turning,
+                });
             }
             // Newton converges fast near a root; steady crawling means a dead end (the
             // edge of the region where the curve meets the cone).
@@ -753,10 +764,12 @@ impl Problem {
                     lambda,
                     ln_nu: p.ln_nu + dn,
                 };
-                if let Some(rq) = self.residual(&q, omega) {
+                if let Some(sq) = self.shot(&q, omega) {
+                    let rq = self.target.residual(&sq);
                     if rq[0].abs().max(rq[1].abs()) < size {
                         p = q;
                         r = rq;
+                        shot = sq;
                         accepted = true;
                         break;
                     }

@@ -197,36 +197,27 @@ impl SpaceSegment {
                 return Err(Error::CollinearPoints);
             }
         }
-        let mut seg = SpaceSegment {
-            points,
-            alpha,
-            beta,
-            omega,
-            kind,
-            shape: Shape::Planar {
-                segment: Segment::from_control_points(
-                    [Point::ZERO, Point::new(1.0, 0.0), Point::new(1.0, 1.0)],
-                    0.0,
-                )?,
-                origin: p0,
-                e1: t0,
-                e2: t0,
-            },
-            arc_length: 0.0,
-        };
-        if theta2.abs() < PLANAR_TOLERANCE || std::f64::consts::PI - theta2.abs() < PLANAR_TOLERANCE
-        {
-            seg.shape = planar(points, alpha, theta2)?;
+        let off_plane = theta2.abs().min(std::f64::consts::PI - theta2.abs());
+        let shape = if off_plane < PLANAR_TOLERANCE {
+            planar(points, alpha, theta2)?
         } else {
-            seg.shape = solve_space(points, alpha, beta, omega, kind, [theta0, theta1, theta2])?;
-        }
-        seg.arc_length = match &seg.shape {
+            solve_space(points, alpha, beta, omega, kind, [theta0, theta1, theta2])?
+        };
+        let arc_length = match &shape {
             Shape::Space {
                 s_end, transform, ..
             } => s_end * transform.scale,
             Shape::Planar { segment, .. } => segment.arc_length(),
         };
-        Ok(seg)
+        Ok(SpaceSegment {
+            points,
+            alpha,
+            beta,
+            omega,
+            kind,
+            shape,
+            arc_length,
+        })
     }
 
     /// The control points `[P0, P1, P2, P3]`.
@@ -473,7 +464,7 @@ fn planar(points: [V3; 4], alpha: f64, theta2: f64) -> Result<Shape> {
     let b = q3.y / d.y;
     if !(a > 0.0 && b > 0.0 && a.is_finite() && b.is_finite()) {
         return Err(Error::NotDrawable(NotDrawable::ChordOutsideTangents {
-            theta_e: e1_angle(chord, e1),
+            theta_e: super::vec3::angle(chord, e1),
             turning: 0.0,
         }));
     }
@@ -484,10 +475,6 @@ fn planar(points: [V3; 4], alpha: f64, theta2: f64) -> Result<Shape> {
         e1,
         e2,
     })
-}
-
-fn e1_angle(chord: V3, e1: V3) -> f64 {
-    super::vec3::angle(chord, e1)
 }
 
 /// Solve the space problem: swap the ends if θ0 < θ1, find (Λ, ν), build the similarity.

@@ -28,6 +28,7 @@ import pytest
 from mpmath import mp, mpf, mpc, atan2, conj, fabs
 
 import quasi_mpmath as qm
+from lac_cli import lac_bin, require
 from segment_mpmath import cross, solve_segment
 
 mp.dps = 40
@@ -138,21 +139,6 @@ def test_circle_fit_is_exact_and_optimum_is_stationary():
 
 
 # ---- the command line --------------------------------------------------------------------
-
-def lac_bin():
-    return os.path.join(ROOT, os.environ.get("LAC_BIN", os.path.join("target", "release", "lac")))
-
-
-def require(sub):
-    try:
-        run = subprocess.run([lac_bin(), sub, "--help"], capture_output=True, text=True, timeout=60)
-    except OSError as e:
-        pytest.skip(f"`{lac_bin()} {sub} --help` cannot run ({e}): build it with "
-                    "`cargo build --release -p lac-cli` or set LAC_BIN")
-    if run.returncode != 0:
-        pytest.skip(f"`{lac_bin()} {sub} --help` failed (exit {run.returncode}): "
-                    f"the `{sub}` subcommand is not implemented yet")
-
 
 def run_json(args):
     run = subprocess.run([lac_bin()] + args, capture_output=True, text=True, timeout=300)

@@ -19,7 +19,8 @@ import plyfile
 import pytest
 import trimesh
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+from lac_cli import lac_bin, require
+
 
 # (points, options): a right-handed segment, a mirrored one (negative torsion) whose standard
 # form is also reversed, and coplanar points (the planar segment, torsion 0).
@@ -31,20 +32,9 @@ CASES = [
 SAMPLES = 41
 
 
-def lac_bin():
-    return os.path.join(ROOT, os.environ.get("LAC_BIN", os.path.join("target", "release", "lac")))
-
-
 @pytest.fixture(scope="module", autouse=True)
 def require_space():
-    try:
-        run = subprocess.run([lac_bin(), "space", "--help"], capture_output=True, text=True,
-                             timeout=60)
-    except OSError as e:
-        pytest.skip(f"`{lac_bin()} space --help` cannot run ({e}): build it with "
-                    "`cargo build --release -p lac-cli` or set LAC_BIN")
-    if run.returncode != 0:
-        pytest.skip(f"`{lac_bin()} space --help` failed (exit {run.returncode})")
+    require("space")
 
 
 def lac_space(points, options, *extra):

@@ -58,9 +58,9 @@ from mpmath import mp, mpf, mpc, fp
 
 from space_mpmath import SpaceCurve
 from segment_mpmath import solve_segment
+from lac_cli import lac_bin, require
 
 DPS = 30
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 SAMPLES = 9
 POS_TOL = 1e-9     # relative to the chord |P3 - P0|
 ANGLE_TOL = 1e-9   # radians
@@ -400,20 +400,8 @@ def test_checker_accepts_the_construction_and_rejects_a_wrong_transform():
 
 # ---- the command line --------------------------------------------------------------------------
 
-def lac_bin():
-    return os.path.join(ROOT, os.environ.get("LAC_BIN", os.path.join("target", "release", "lac")))
-
-
 def require_space():
-    try:
-        run = subprocess.run([lac_bin(), "space", "--help"], capture_output=True, text=True,
-                             timeout=60)
-    except OSError as e:
-        pytest.skip(f"`{lac_bin()} space --help` cannot run ({e}): build it with "
-                    "`cargo build --release -p lac-cli` or set LAC_BIN")
-    if run.returncode != 0:
-        pytest.skip(f"`{lac_bin()} space --help` failed (exit {run.returncode}): "
-                    "the `space` subcommand is not implemented yet")
+    require("space")
 
 
 def fmt_points(points):

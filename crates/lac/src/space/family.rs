@@ -3,6 +3,7 @@
 use super::taylor::{Expansion, State};
 use super::Frame;
 use crate::error::{finite, Error, Result};
+use crate::numeric::{expm1_ratio, ln1p_ratio};
 
 /// `f(s) = c (1 + a e s)^(−1/e)`, and `c e^(−a s)` at `e = 0`.
 ///
@@ -55,8 +56,8 @@ impl PowerLaw {
         if x <= -1.0 {
             return f64::NAN;
         }
-        let l = self.a * s * ln1p_over(x);
-        self.c * s * ln1p_over(x) * expm1_over((self.e - 1.0) * l)
+        let r = ln1p_ratio(x);
+        self.c * s * r * expm1_ratio((self.e - 1.0) * self.a * s * r)
     }
 
     /// `∫₀^∞ f` (up to the upper bound of the range): `c / (a (1 − e))` where it converges
@@ -83,24 +84,6 @@ impl PowerLaw {
             }
             *slot = f;
         }
-    }
-}
-
-/// `ln(1 + x)/x`, 1 at 0.
-fn ln1p_over(x: f64) -> f64 {
-    if x.abs() < 1e-300 {
-        1.0
-    } else {
-        x.ln_1p() / x
-    }
-}
-
-/// `(eʸ − 1)/y`, 1 at 0.
-fn expm1_over(y: f64) -> f64 {
-    if y.abs() < 1e-300 {
-        1.0
-    } else {
-        y.exp_m1() / y
     }
 }
 

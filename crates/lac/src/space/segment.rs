@@ -52,12 +52,16 @@ impl Similarity3 {
 
     /// A standard-form direction in the caller's coordinates (rotation and mirror only).
     pub fn apply_vector(&self, v: [f64; 3]) -> [f64; 3] {
-        let v = if self.mirror_z {
-            [v[0], v[1], -v[2]]
-        } else {
-            v
-        };
-        mat_vec(&self.rotation, v)
+        mat_vec(&self.rotation, mirror(v, self.mirror_z))
+    }
+}
+
+/// `v` mirrored in the xy plane when `mirror_z`.
+fn mirror(v: V3, mirror_z: bool) -> V3 {
+    if mirror_z {
+        [v[0], v[1], -v[2]]
+    } else {
+        v
     }
 }
 
@@ -304,9 +308,11 @@ impl SpaceSegment {
                 });
             }
         }
+        // Consecutive arc lengths in one integrator step share its series.
+        let mut series = None;
         Ok(s_values
             .iter()
-            .map(|&s| self.frame_unchecked(s.clamp(0.0, len)))
+            .map(|&s| self.frame_unchecked(s.clamp(0.0, len), &mut series))
             .collect())
     }
 
@@ -386,7 +392,8 @@ impl SpaceSegment {
             .collect())
     }
 
-    fn frame_unchecked(&self, s: f64) -> Frame {
+    /// The frame at `s` in [0, arc length]; `series` keeps the last step's Taylor series.
+    fn frame_unchecked(&self, s: f64, series: &mut Option<(usize, Expansion)>) -> Frame {
         match &self.shape {
             Shape::Space {
                 form,
@@ -401,7 +408,11 @@ impl SpaceSegment {
                 };
                 let st = st.clamp(0.0, *s_end);
                 let i = checkpoints.partition_point(|c| c.s <= st).saturating_sub(1);
-                let state = Expansion::new(form, &checkpoints[i]).state_at(st - checkpoints[i].s);
+                if series.as_ref().is_none_or(|(j, _)| *j != i) {
+                    *series = Some((i, Expansion::new(form, &checkpoints[i])));
+                }
+                let (_, expansion) = series.as_ref().expect("just set");
+                let state = expansion.state_at(st - checkpoints[i].s);
                 let f = form.frame_from(&state);
                 let sign = if transform.reversed { -1.0 } else { 1.0 };
                 let tangent = scale(transform.apply_vector(f.tangent), sign);
@@ -423,9 +434,10 @@ impl SpaceSegment {
                 e1,
                 e2,
             } => {
-                let p = segment.point_at_s(s).expect("s within the segment");
-                let theta = segment.theta_at_s(s).expect("s within the segment");
-                let kappa = segment.curvature_at_s(s).expect("s within the segment");
+                let station = segment.station_at_s(s).expect("s within the segment");
+                let p = segment.point_of(&station);
+                let theta = segment.theta_of(&station);
+                let kappa = segment.kappa_of(&station);
                 let tangent = axpy(scale(*e1, theta.cos()), theta.sin(), *e2);
                 let left = axpy(scale(*e1, -theta.sin()), theta.cos(), *e2);
                 let normal = scale(left, kappa.signum());
@@ -520,7 +532,7 @@ fn solve_space(
     let shot = shoot(&form, &problem.cone(), true).expect("a converged shot repeats");
     // Mirror when the standard form's dihedral has the other sign (seed 003 §4).
     let mirror_z = (shot.theta2 < 0.0) != (theta2 < 0.0);
-    let m = |v: V3| if mirror_z { [v[0], v[1], -v[2]] } else { v };
+    let m = |v: V3| mirror(v, mirror_z);
     // Rotation taking e1 to t0 and the standard-form chord to the caller's.
     let frame_of = |axis: V3, towards: V3| {
         let w = unit(axpy(towards, -dot(towards, axis), axis));
@@ -662,7 +674,7 @@ impl Problem {
             let ln_nu = base + f64::from(scan.next) * step;
             scan.next += 1;
             let p = Solution { lambda, ln_nu };
-            let Some(shot) = shoot(&self.form(&p, omega), &self.cone(), false) else {
+            let Some(shot) = self.shot(&p, omega) else {
                 scan.prev = None;
                 continue;
             };

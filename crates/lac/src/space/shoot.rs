@@ -114,10 +114,7 @@ pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep_checkpoints: bool) -> Op
             return None;
         }
         state = expansion.state_at(h);
-        // The seed's 2π guard, on the closed-form turning of tangent and binormal.
-        let two_pi = std::f64::consts::TAU;
-        if form.kappa_law().integral(state.s) > two_pi || form.tau_law().integral(state.s) > two_pi
-        {
+        if !within_guard(form, state.s) {
             return None;
         }
         if cone.crossing == 1 && crossings == 0 && never_leaves(form, cone, &state) {
@@ -162,8 +159,7 @@ fn refine(cone: &Cone, e: &Expansion, mut a: f64, mut ga: f64, mut b: f64, gb: f
 
 fn finish(form: &SpaceForm, e: &Expansion, sigma: f64, checkpoints: Vec<State>) -> Option<Shot> {
     let end = e.state_at(sigma);
-    let two_pi = std::f64::consts::TAU;
-    if form.kappa_law().integral(end.s) > two_pi || form.tau_law().integral(end.s) > two_pi {
+    if !within_guard(form, end.s) {
         return None;
     }
     let (_, theta1, theta2) = end_angles(end.x, [1.0, 0.0, 0.0], end.t);
@@ -173,6 +169,13 @@ fn finish(form: &SpaceForm, e: &Expansion, sigma: f64, checkpoints: Vec<State>) 
         theta2,
         checkpoints,
     })
+}
+
+/// The seed's 2π guard: neither tangent nor binormal has turned by more than 2π from 0 to
+/// s (closed-form θ and φ).
+fn within_guard(form: &SpaceForm, s: f64) -> bool {
+    let two_pi = std::f64::consts::TAU;
+    form.kappa_law().integral(s) <= two_pi && form.tau_law().integral(s) <= two_pi
 }
 
 /// Can the curve, inside a cone narrower than a half-space, still leave it? Not if it is

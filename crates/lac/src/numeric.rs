@@ -51,6 +51,121 @@ pub(crate) fn minus_one(x: f64) -> (f64, f64) {
     (d, lo)
 }
 
+/// Why [`find_root`] gave no root.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[allow(dead_code)]
+pub(crate) enum RootFailure {
+    /// f has the same sign at both ends of the bracket (or is NaN there).
+    NotBracketed,
+    /// The iteration cap was reached; the bracket at that point is kept.
+    NotConverged {
+        /// The narrowest bracket reached.
+        lo: f64,
+        /// Its other end.
+        hi: f64,
+    },
+}
+
+/// One safeguarded root finder for every 1-D equation of the crate.
+///
+/// Finds x in the bracket [`a`, `b`] (either order) with f(x) = 0, given f's values
+/// `fa`, `fb` of opposite signs there (a zero counts as either sign). `f` returns f(x) and,
+/// when it has one, f′(x). Each step tries, in order: Newton from the last iterate when f′
+/// is given and the step stays strictly inside the bracket; the Illinois variant of regula
+/// falsi (the stale end's value halved); bisection. The bracket only shrinks, so the
+/// iteration never leaves it; it stops when f(x) = 0, when the bracket is narrower than
+/// `x_tol` (absolute) or a few ulps, or when a Newton step is below `x_tol`. After
+/// `max_iter` evaluations it reports [`RootFailure::NotConverged`] rather than a guess.
+#[allow(dead_code)] // Callers move onto it one module at a time.
+pub(crate) fn find_root<F>(
+    mut f: F,
+    (a, fa): (f64, f64),
+    (b, fb): (f64, f64),
+    guess: Option<f64>,
+    x_tol: f64,
+    max_iter: u32,
+) -> Result<f64, RootFailure>
+where
+    F: FnMut(f64) -> (f64, Option<f64>),
+{
+    if fa == 0.0 {
+        return Ok(a);
+    }
+    if fb == 0.0 {
+        return Ok(b);
+    }
+    if !(fa.signum() != fb.signum() && a.is_finite() && b.is_finite()) {
+        return Err(RootFailure::NotBracketed);
+    }
+    // Orient so that f(lo) < 0 < f(hi); lo may be above hi.
+    let (mut lo, mut f_lo, mut hi, mut f_hi) = if fa < 0.0 {
+        (a, fa, b, fb)
+    } else {
+        (b, fb, a, fa)
+    };
+    let inside = |x: f64, lo: f64, hi: f64| x > lo.min(hi) && x < lo.max(hi);
+    let mut newton: Option<f64> = guess.filter(|&g| inside(g, lo, hi));
+    let mut stale = 0i8;
+    for _ in 0..max_iter {
+        let x = match newton.take() {
+            Some(x) => x,
+            None => {
+                let secant = lo - f_lo * (hi - lo) / (f_hi - f_lo);
+                if inside(secant, lo, hi) {
+                    secant
+                } else {
+                    0.5 * (lo + hi)
+                }
+            }
+        };
+        let (fx, dfx) = f(x);
+        if fx == 0.0 {
+            return Ok(x);
+        }
+        if fx.is_nan() {
+            // Nothing to learn here but that f is undefined: retreat halfway toward the
+            // end where f is known (the bracket is kept, so a later step may return).
+            let back = 0.5 * (lo + x);
+            if back == lo || back == x {
+                return Err(RootFailure::NotConverged { lo, hi });
+            }
+            newton = Some(back);
+            continue;
+        }
+        if fx < 0.0 {
+            (lo, f_lo) = (x, fx);
+            if stale == -1 {
+                f_hi *= 0.5;
+            }
+            stale = -1;
+        } else {
+            (hi, f_hi) = (x, fx);
+            if stale == 1 {
+                f_lo *= 0.5;
+            }
+            stale = 1;
+        }
+        let width = (hi - lo).abs();
+        if width <= x_tol || width <= 4.0 * f64::EPSILON * lo.abs().max(hi.abs()) {
+            return Ok(if f_lo.abs() <= f_hi.abs() { lo } else { hi });
+        }
+        if let Some(d) = dfx.filter(|d| *d != 0.0 && d.is_finite()) {
+            let step = fx / d;
+            let next = x - step;
+            if inside(next, lo, hi) {
+                if step.abs() <= x_tol {
+                    return Ok(next);
+                }
+                newton = Some(next);
+                // A Newton step that shrinks the bracket slowly is no better than Illinois:
+                // leave the stale-end bookkeeping to the secant steps.
+                stale = 0;
+            }
+        }
+    }
+    Err(RootFailure::NotConverged { lo, hi })
+}
+
 /// A complex number `re + i im`, the seeds' notation for planar points.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct Complex {
@@ -210,5 +325,51 @@ mod tests {
         // Away from zero they are the plain quotients.
         assert!((expm1_ratio(1.0) - (1f64.exp() - 1.0)).abs() < 1e-15);
         assert!((ln1p_ratio(1.0) - 2f64.ln()).abs() < 1e-15);
+    }
+
+    #[test]
+    fn find_root_converges_with_and_without_derivatives() {
+        let cubic = |x: f64| (x * x * x - 2.0, Some(3.0 * x * x));
+        let r = find_root(cubic, (0.0, -2.0), (2.0, 6.0), None, 1e-15, 100).unwrap();
+        assert!((r - 2f64.cbrt()).abs() < 4e-16);
+        let plain = |x: f64| (x.cos() - x, None);
+        let r = find_root(
+            plain,
+            (1.0, 1f64.cos() - 1.0),
+            (0.0, 1.0),
+            Some(0.5),
+            0.0,
+            100,
+        )
+        .unwrap();
+        assert!((r.cos() - r).abs() < 1e-15, "{r}");
+    }
+
+    #[test]
+    fn find_root_reports_what_went_wrong() {
+        let f = |x: f64| (x * x + 1.0, None);
+        assert_eq!(
+            find_root(f, (0.0, 1.0), (1.0, 2.0), None, 1e-12, 50),
+            Err(RootFailure::NotBracketed)
+        );
+        // A cap too small to converge is a failure, not an answer.
+        let g = |x: f64| (x.powi(3) - 0.3, None);
+        assert!(matches!(
+            find_root(g, (0.0, -0.3), (1.0, 0.7), None, 0.0, 3),
+            Err(RootFailure::NotConverged { .. })
+        ));
+        // NaN inside the bracket is stepped around.
+        let h = |x: f64| {
+            (
+                if (0.49..0.51).contains(&x) {
+                    f64::NAN
+                } else {
+                    x - 0.7
+                },
+                None,
+            )
+        };
+        let r = find_root(h, (0.0, -0.7), (1.0, 0.3), Some(0.5), 1e-14, 200).unwrap();
+        assert!((r - 0.7).abs() < 1e-13);
     }
 }

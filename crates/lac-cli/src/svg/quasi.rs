@@ -6,6 +6,7 @@
 use std::fmt::Write as _;
 
 use kurbo::{Point, Rect};
+use lac::Curve;
 use lac::{QuasiCurve, RationalCubic, Sample, Segment};
 
 use super::comb::{max_curvature, Comb};
@@ -348,7 +349,7 @@ fn legend(count: usize) -> Vec<(&'static str, String)> {
 
 /// "3 rational cubics  rms = …  max = … of the arc length  curvature increasing, proven".
 fn caption(pieces: &[Segment], quasi: &QuasiCurve, cubic: bool) -> Vec<(&'static str, String)> {
-    let length: f64 = pieces.iter().map(Segment::arc_length).sum();
+    let length: f64 = pieces.iter().map(Curve::arc_length).sum();
     let mut runs = vec![(
         CURVE,
         format!(

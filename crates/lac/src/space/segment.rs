@@ -211,7 +211,7 @@ impl SpaceSegment {
             Shape::Space {
                 s_end, transform, ..
             } => s_end * transform.scale,
-            Shape::Planar { segment, .. } => segment.arc_length(),
+            Shape::Planar { segment, .. } => crate::Curve::arc_length(segment),
         };
         Ok(SpaceSegment {
             points,
@@ -459,8 +459,8 @@ impl SpaceSegment {
 fn planar(points: [V3; 4], alpha: f64, theta2: f64) -> Result<Shape> {
     if theta2.abs() > std::f64::consts::FRAC_PI_2 {
         return Err(Error::InflectedPolygon {
-            first: "left",
-            second: "right",
+            first: crate::Turn::Left,
+            second: crate::Turn::Right,
         });
     }
     let [p0, p1, p2, p3] = points;

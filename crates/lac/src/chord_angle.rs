@@ -19,8 +19,8 @@
 use std::cell::OnceCell;
 
 use crate::error::{Error, NotDrawable, Result};
-use crate::integrate::{integrate_with, NodeCache};
 use crate::numeric::{expm1_ratio, ln1p_ratio, Complex};
+use crate::standard_form::integrate::{integrate_with, NodeCache};
 use crate::standard_form::{StandardForm, Station};
 
 /// Largest supported ln(ρ_max/ρ_min) along one curve (ρ ratio ≈ 1e260).

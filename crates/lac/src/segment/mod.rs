@@ -1,19 +1,28 @@
 //! A log-aesthetic segment from three control points and α (SPEC §3, seed 000 §4).
 
-use kurbo::{Point, Vec2};
+use ::kurbo::{Point, Vec2};
 
+use crate::chord_angle::solve;
 use crate::error::{finite, Error, Result};
-use crate::integrate::integrate;
+use crate::lcg::LcgLine;
 use crate::numeric::Complex;
-use crate::solve::{solve, Piece};
+use crate::standard_form::integrate::integrate;
 use crate::standard_form::{StandardForm, Station};
+use crate::turn::Turn;
+
+mod kurbo;
+pub(crate) mod sampling;
+
+pub use kurbo::SegmentDerivative;
+pub(crate) use kurbo::{central_difference, Travel};
+pub use sampling::Sample;
 
 /// The angles of a three-point control polygon (SPEC §3 steps 1 and 3).
 pub(crate) struct Triangle {
     /// Turning angle θd ∈ (0, π).
     pub(crate) turning: f64,
-    /// The polygon turns left.
-    pub(crate) left: bool,
+    /// The polygon's turning direction.
+    pub(crate) turn: Turn,
     /// Direction of P1 − P0.
     pub(crate) theta_first: f64,
     /// Angle at P0 between P1 − P0 and P2 − P0, in (0, θd).
@@ -51,7 +60,7 @@ pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
     }
     Ok(Triangle {
         turning,
-        left: cross > 0.0,
+        turn: if cross > 0.0 { Turn::Left } else { Turn::Right },
         theta_first: u.atan2(),
         theta_e: u.cross(c).abs().atan2(u.dot(c)),
     })
@@ -66,13 +75,13 @@ pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
 /// the piece's chord makes the same angle with its start tangent as `P2 − P0` makes with
 /// `P1 − P0` at the end with the shorter leg.
 ///
-/// Arc length `s` runs from 0 at `P0` to [`Segment::arc_length`] at `P2`; `theta` is the
+/// Arc length `s` runs from 0 at `P0` to [`Curve::arc_length`](crate::Curve::arc_length) at `P2`; `theta` is the
 /// tangent direction in the caller's frame, starting at the direction of `P1 − P0` and
 /// continuous along the curve; curvature is signed, positive for a left turn.
 ///
 /// ```
 /// use kurbo::Point;
-/// use lac::Segment;
+/// use lac::{Curve, Segment};
 ///
 /// // A clothoid (α = −1) segment.
 /// let seg = Segment::from_control_points(
@@ -89,26 +98,43 @@ pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
 /// ```
 #[derive(Clone, Debug)]
 pub struct Segment {
-    pub(crate) alpha: f64,
-    pub(crate) form: StandardForm,
+    alpha: f64,
+    form: StandardForm,
     /// Standard-form stations at the caller's first and last point.
-    pub(crate) first: Station,
-    pub(crate) last: Station,
+    first: Station,
+    last: Station,
     /// P(last) − P(first) in the standard form.
-    pub(crate) chord: Complex,
+    chord: Complex,
+    /// The caller's first point.
+    origin: Point,
+    /// caller = origin + M(rot · (P − P(first))), M = conjugation when `mirrored`.
+    rot: Complex,
+    /// |rot|: standard-form lengths to the caller's.
+    scale: f64,
+    mirrored: bool,
+    /// The caller's curve turns left (positive curvature) or right.
+    turn: Turn,
+    /// Tangent direction at the first point, radians.
+    theta_first: f64,
+    /// Turning angle θd = |θ(last) − θ(first)|.
+    turning: f64,
+}
+
+/// Where a standard-form piece lies in the caller's plane: the similarity (and reflection)
+/// `caller = origin + M(rot · (P − P(first)))`, and the caller's turning direction and start
+/// tangent.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Placement {
     /// The caller's first point.
     pub(crate) origin: Point,
-    /// caller = origin + M(rot · (P − P(first))), M = conjugation when `mirrored`.
+    /// Rotation and scale, as a complex factor.
     pub(crate) rot: Complex,
-    /// |rot|: standard-form lengths to the caller's.
-    pub(crate) scale: f64,
+    /// Whether M is the conjugation (the caller's curve is the mirror image).
     pub(crate) mirrored: bool,
-    /// The caller's curve turns left (positive curvature).
-    pub(crate) left: bool,
+    /// The caller's turning direction.
+    pub(crate) turn: Turn,
     /// Tangent direction at the first point, radians.
     pub(crate) theta_first: f64,
-    /// Turning angle θd.
-    pub(crate) turning: f64,
 }
 
 impl Segment {
@@ -128,52 +154,65 @@ impl Segment {
             tri.theta_e
         };
         let piece = solve(alpha, tri.turning, theta_e.max(0.5 * tri.turning))?;
-        Ok(Self::from_piece(
-            piece,
-            alpha,
-            points[0],
-            points[2],
-            tri.left,
-            reversed,
-            tri.turning,
-            tri.theta_first,
-        ))
-    }
-
-    #[allow(clippy::too_many_arguments)]
-    fn from_piece(
-        piece: Piece,
-        alpha: f64,
-        p0: Point,
-        p2: Point,
-        left: bool,
-        reversed: bool,
-        turning: f64,
-        theta_first: f64,
-    ) -> Segment {
         let (first, last, chord) = if reversed {
             (piece.end, piece.start, -piece.chord)
         } else {
             (piece.start, piece.end, piece.chord)
         };
         // The standard form turns left along increasing θ; traversed backwards it turns right.
-        let mirrored = left == reversed;
-        let c = p2 - p0;
+        let mirrored = (tri.turn == Turn::Left) == reversed;
+        let c = points[2] - points[0];
         let c = Complex::new(c.x, if mirrored { -c.y } else { c.y });
-        let rot = c.div(chord);
+        let placement = Placement {
+            origin: points[0],
+            rot: c.div(chord),
+            mirrored,
+            turn: tri.turn,
+            theta_first: tri.theta_first,
+        };
+        Ok(Segment::new(
+            alpha,
+            piece.form,
+            [first, last],
+            chord,
+            placement,
+        ))
+    }
+
+    /// The one constructor: the piece of `form` from station `ends[0]` to `ends[1]` (in the
+    /// caller's order; `chord` = P(ends[1]) − P(ends[0]) in the standard form), placed by
+    /// `placement`.
+    pub(crate) fn new(
+        alpha: f64,
+        form: StandardForm,
+        [first, last]: [Station; 2],
+        chord: Complex,
+        placement: Placement,
+    ) -> Segment {
         Segment {
             alpha,
-            form: piece.form,
+            form,
             first,
             last,
             chord,
-            origin: p0,
-            rot,
-            scale: rot.norm(),
-            mirrored,
-            left,
-            theta_first,
-            turning,
+            origin: placement.origin,
+            rot: placement.rot,
+            scale: placement.rot.norm(),
+            mirrored: placement.mirrored,
+            turn: placement.turn,
+            theta_first: placement.theta_first,
+            turning: (last.theta - first.theta).abs(),
+        }
+    }
+
+    /// The placement of this segment (to place a neighbour built on the same standard form).
+    pub(crate) fn placement(&self) -> Placement {
+        Placement {
+            origin: self.origin,
+            rot: self.rot,
+            mirrored: self.mirrored,
+            turn: self.turn,
+            theta_first: self.theta_first,
         }
     }
 
@@ -192,35 +231,20 @@ impl Segment {
         self.form
     }
 
-    /// The turning angle θd of the control polygon, in (0, π).
+    /// The turning angle θd of the control polygon, in (0, π) (for a piece of a compound
+    /// curve, the piece's own turning).
     pub fn turning_angle(&self) -> f64 {
         self.turning
+    }
+
+    /// Which way the segment turns.
+    pub fn turn(&self) -> Turn {
+        self.turn
     }
 
     /// Is this an exact circular arc (isosceles control triangle, Λ = 0)?
     pub fn is_circle(&self) -> bool {
         self.form.lambda == 0.0
-    }
-
-    /// Scale factor from standard-form lengths to the caller's.
-    #[inline]
-    pub(crate) fn scale(&self) -> f64 {
-        self.scale
-    }
-
-    /// Arc length from the first to the last control point.
-    pub fn arc_length(&self) -> f64 {
-        (self.last.s - self.first.s).abs() * self.scale()
-    }
-
-    /// Signed curvature at the first control point.
-    pub fn curvature_start(&self) -> f64 {
-        self.kappa_of(&self.first)
-    }
-
-    /// Signed curvature at the last control point.
-    pub fn curvature_end(&self) -> f64 {
-        self.kappa_of(&self.last)
     }
 
     /// The control points `[P0, P1, P2]`: the ends and the intersection of the end tangents.
@@ -232,27 +256,6 @@ impl Segment {
         // P1 = P0 + a t0 with (P2 − P0 − a t0) × t1 = 0.
         let a = (p2 - p0).cross(t1) / t0.cross(t1);
         [p0, p0 + a * t0, p2]
-    }
-
-    /// Point at arc length `s` from the first control point, 0 ≤ s ≤ arc_length().
-    pub fn point_at_s(&self, s: f64) -> Result<Point> {
-        let st = self.station_at_s(s)?;
-        Ok(self.point_of(&st))
-    }
-
-    /// Unit tangent at arc length `s` (in the direction of travel).
-    pub fn tangent_at_s(&self, s: f64) -> Result<Vec2> {
-        Ok(Vec2::from_angle(self.theta_at_s(s)?))
-    }
-
-    /// Signed curvature at arc length `s`.
-    pub fn curvature_at_s(&self, s: f64) -> Result<f64> {
-        Ok(self.kappa_of(&self.station_at_s(s)?))
-    }
-
-    /// Tangent direction (radians, caller's frame, continuous from the first point) at `s`.
-    pub fn theta_at_s(&self, s: f64) -> Result<f64> {
-        Ok(self.theta_of(&self.station_at_s(s)?))
     }
 
     /// Arc length at which the tangent direction is `theta` (caller's frame, between
@@ -271,6 +274,59 @@ impl Segment {
         Ok(self.kappa_of(&self.station_at_theta(theta)?))
     }
 
+    /// The segment's logarithmic curvature graph, or `None` for a circular arc (Λ = 0,
+    /// where ρ is constant and the graph degenerates to a point at infinity).
+    ///
+    /// ```
+    /// use kurbo::Point;
+    /// use lac::Segment;
+    /// let seg = Segment::from_control_points(
+    ///     [Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(1.5, 1.0)], -1.0)?;
+    /// let lcg = seg.lcg().unwrap();
+    /// assert_eq!(lcg.alpha, -1.0);
+    /// # Ok::<(), lac::Error>(())
+    /// ```
+    pub fn lcg(&self) -> Option<LcgLine> {
+        let lambda = self.form.lambda;
+        if lambda <= 0.0 {
+            return None;
+        }
+        let ln_scale = self.scale.ln();
+        Some(LcgLine {
+            alpha: self.alpha,
+            intercept: (1.0 - self.alpha) * ln_scale - lambda.ln(),
+            log_rho: (ln_scale + self.first.ln_rho, ln_scale + self.last.ln_rho),
+        })
+    }
+
+    // The primitives the `Curve` trait, the sampling and the Bézier fits are built on.
+
+    /// Scale factor from standard-form lengths to the caller's.
+    #[inline]
+    pub(crate) fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    /// Arc length from the first to the last point.
+    pub(crate) fn length(&self) -> f64 {
+        (self.last.s - self.first.s).abs() * self.scale
+    }
+
+    /// Signed curvature at the first (`Which::First`) or last point.
+    pub(crate) fn end_curvatures(&self) -> (f64, f64) {
+        (self.kappa_of(&self.first), self.kappa_of(&self.last))
+    }
+
+    /// The first point.
+    pub(crate) fn first_point(&self) -> Point {
+        self.origin
+    }
+
+    /// The last point.
+    pub(crate) fn last_point(&self) -> Point {
+        self.caller_point(self.chord)
+    }
+
     /// +1 along increasing standard-form θ, −1 when the caller's direction is reversed.
     #[inline]
     pub(crate) fn dir(&self) -> f64 {
@@ -281,36 +337,26 @@ impl Segment {
         }
     }
 
+    /// The station at arc length `s` ∈ [0, length] (checked by the caller, see
+    /// `curve::locate`), anchored at the nearer end: near a singular end its ρ is known
+    /// exactly.
     pub(crate) fn station_at_s(&self, s: f64) -> Result<Station> {
-        finite("s", s)?;
-        let len = self.arc_length();
-        let slack = 1e-12 * len;
-        if !(s >= -slack && s <= len + slack) {
-            return Err(Error::OutOfRange {
-                name: "s",
-                value: s,
-                expected: "an arc length between 0 and arc_length()",
-            });
-        }
+        let len = self.length();
         let s = s.clamp(0.0, len);
-        let k = self.dir() / self.scale();
-        // Anchor at the nearer end: near a singular end its ρ is known exactly.
+        let k = self.dir() / self.scale;
         let st = if s <= 0.5 * len {
             self.form.advance_s(&self.first, k * s)
         } else {
             self.form.advance_s(&self.last, -k * (len - s))
         };
-        Ok(st.unwrap_or(if s <= 0.5 * len {
-            self.first
-        } else {
-            self.last
-        }))
+        st.ok_or(Error::NumericalFailure {
+            what: "the station at an arc length of the segment",
+        })
     }
 
     pub(crate) fn station_at_theta(&self, theta: f64) -> Result<Station> {
         finite("theta", theta)?;
-        let sign = if self.left { 1.0 } else { -1.0 };
-        let turn = sign * (theta - self.theta_first);
+        let turn = self.turn.sign() * (theta - self.theta_first);
         let slack = 1e-12 * self.turning;
         if !(turn >= -slack && turn <= self.turning + slack) {
             return Err(Error::OutOfRange {
@@ -319,6 +365,11 @@ impl Segment {
                 expected: "a tangent direction between those at the two ends of the segment",
             });
         }
+        self.station_at_turning(turn)
+    }
+
+    /// The station where the tangent has turned by `turn` ∈ [0, θd] from the first point.
+    pub(crate) fn station_at_turning(&self, turn: f64) -> Result<Station> {
         let turn = turn.clamp(0.0, self.turning);
         let st = if turn <= 0.5 * self.turning {
             self.form.advance_theta(&self.first, self.dir() * turn)
@@ -326,11 +377,9 @@ impl Segment {
             self.form
                 .advance_theta(&self.last, -self.dir() * (self.turning - turn))
         };
-        Ok(st.unwrap_or(if turn <= 0.5 * self.turning {
-            self.first
-        } else {
-            self.last
-        }))
+        st.ok_or(Error::NumericalFailure {
+            what: "the station at a tangent angle of the segment",
+        })
     }
 
     /// P(st) − P(first) in the standard form, integrating from the nearer end.
@@ -360,24 +409,22 @@ impl Segment {
     }
 
     pub(crate) fn kappa_of(&self, st: &Station) -> f64 {
-        let k = st.kappa() / self.scale();
-        if self.left {
-            k
-        } else {
-            -k
-        }
+        self.turn.sign() * st.kappa() / self.scale
     }
 
     pub(crate) fn theta_of(&self, st: &Station) -> f64 {
-        let turn = (st.theta - self.first.theta).abs();
-        if self.left {
-            self.theta_first + turn
-        } else {
-            self.theta_first - turn
-        }
+        self.theta_first + self.turn.sign() * (st.theta - self.first.theta).abs()
     }
 
     pub(crate) fn s_of(&self, st: &Station) -> f64 {
-        (st.s - self.first.s).abs() * self.scale()
+        (st.s - self.first.s).abs() * self.scale
+    }
+
+    /// dκ/ds at a station: with ρ the standard-form radius and σ the scale,
+    /// dκ/ds = −sign(κ)·dir·Λ ρ^(−1−α) / σ².
+    pub(crate) fn dkappa_ds_of(&self, ln_rho: f64) -> f64 {
+        let scale = self.scale;
+        -self.turn.sign() * self.dir() * self.form.lambda * (-(1.0 + self.alpha) * ln_rho).exp()
+            / (scale * scale)
     }
 }

@@ -80,13 +80,13 @@ pub use analysis::{
     curvature_plot, log_curvature_graph, CurvaturePoint, LcgFit, LogCurvatureGraph,
 };
 pub use bezier::RationalCubic;
-pub use compound::{CompoundCurve, CompoundDerivative};
+pub use compound::{CompoundCurve, CompoundDerivative, MIN_PIECE_SHARE};
 pub use curve::Curve;
 pub use error::{Error, ErrorKind, NotDrawable, Result};
 pub use lcg::LcgLine;
 pub use monotone::{Monotonicity, MonotonicityReport};
 pub use quasi::{QuasiCurve, QuasiPiece};
-pub use segment::{Sample, Segment, SegmentDerivative};
+pub use segment::{Sample, Segment, SegmentDerivative, MAX_ABS_ALPHA};
 pub use space::{
     BoundBy, EndBehaviour, RadiusCell, RadiusLimit, RatioLimit, SpaceClassification, SpaceEnd,
     TurningCell,

@@ -56,6 +56,7 @@ mod segment;
 mod solve;
 mod space;
 mod standard_form;
+mod vec3;
 
 pub use analysis::{
     curvature_plot, log_curvature_graph, CurvaturePoint, LcgFit, LogCurvatureGraph,
@@ -70,13 +71,15 @@ pub use quasi::{QuasiCurve, QuasiPiece};
 pub use sampling::Sample;
 pub use segment::Segment;
 pub use space::{
-    BoundBy, EndBehaviour, RadiusCell, RadiusLimit, RatioLimit, SpaceClassification, SpaceEnd,
-    TurningCell,
+    BoundBy, EndBehaviour, RadiusCell, RadiusLimit, RatioLimit, SeedRow, SpaceClassification,
+    SpaceEnd, TurningCell,
 };
 pub use space::{
-    Frame, GraphPoint, Similarity3, SpaceForm, SpaceSegment, TorsionType, PLANAR_TOLERANCE,
+    Frame, GraphPoint, Similarity3, SpaceForm, SpaceFormParams, SpaceSegment, SpaceShape,
+    TorsionType, PLANAR_TOLERANCE,
 };
 pub use standard_form::{Classification, InfiniteRadiusEnd, StandardForm, ZeroRadiusEnd};
+pub use vec3::Vec3;
 
 /// The README's Rust examples, compiled and run as doc tests.
 #[cfg(doctest)]

@@ -3,6 +3,7 @@
 
 use super::family::SpaceForm;
 use super::taylor::{Expansion, State};
+use crate::numeric::{find_root, RootFailure};
 use crate::Vec3;
 
 /// Most Taylor steps one shot may take before the crossing is declared missing.
@@ -113,7 +114,7 @@ pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep: Checkpoints) -> Option<
             if (g > 0.0) != outside {
                 crossings += 1;
                 if crossings == cone.crossing {
-                    let sigma = refine(cone, &expansion, prev, g_prev, sigma, g);
+                    let sigma = refine(cone, &expansion, (prev, g_prev), (sigma, g));
                     return finish(form, &expansion, sigma, checkpoints);
                 }
             }
@@ -135,36 +136,30 @@ pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep: Checkpoints) -> Option<
 }
 
 /// The crossing inside a step, between probes `a` (g = `ga`) and `b` (g = `gb`) of opposite
-/// signs: Newton on the step's series, kept inside the bracket (bisection otherwise).
-fn refine(cone: &Cone, e: &Expansion, mut a: f64, mut ga: f64, mut b: f64, gb: f64) -> f64 {
-    let mut x = a - ga * (b - a) / (gb - ga);
-    for _ in 0..60 {
-        let p = e.point_at(x);
-        let t = e.tangent_at(x);
+/// signs: the crate's safeguarded Newton ([`find_root`]) on the step's series, from the
+/// probes' secant, with g′ = cos θ0 (x·t)/|x| − t·e1 from the series' tangent, to 1e-16 of
+/// the arc length from the standard form's start (a Newton step or the bracket below that).
+///
+/// Near the crossing g is at the level of its rounding, so where a Newton step rounds to
+/// nothing the bracket is narrowed to that width instead.
+fn refine(cone: &Cone, e: &Expansion, (a, ga): (f64, f64), (b, gb): (f64, f64)) -> f64 {
+    let g = |sigma: f64| {
+        let p = e.point_at(sigma);
+        let t = e.tangent_at(sigma);
         let r = p.length();
-        let g = r * cone.cos - p.x;
-        if g == 0.0 {
-            return x;
-        }
-        if (g < 0.0) == (ga < 0.0) {
-            a = x;
-            ga = g;
-        } else {
-            b = x;
-        }
-        let dg = cone.cos * p.dot(t) / r - t.x;
-        let newton = x - g / dg;
-        let next = if newton > a.min(b) && newton < a.max(b) {
-            newton
-        } else {
-            0.5 * (a + b)
-        };
-        if (next - x).abs() <= 1e-16 * (e.s0.abs() + x.abs()) || a == b {
-            return next;
-        }
-        x = next;
+        // At the apex (r = 0) g′ is undefined (NaN): find_root then takes a secant step.
+        (r * cone.cos - p.x, Some(cone.cos * p.dot(t) / r - t.x))
+    };
+    let secant = a - ga * (b - a) / (gb - ga);
+    let x_tol = 1e-16 * (e.s0.abs() + secant.abs());
+    match find_root(g, (a, ga), (b, gb), Some(secant), x_tol, 60) {
+        Ok(sigma) => sigma,
+        // Still bracketed after 60 steps (g flat at rounding level): its middle is as good.
+        Err(RootFailure::NotConverged { lo, hi }) => 0.5 * (lo + hi),
+        // The probes' signs differ by construction; should they not, the secant is the
+        // best estimate there is.
+        Err(RootFailure::NotBracketed) => secant,
     }
-    x
 }
 
 fn finish(form: &SpaceForm, e: &Expansion, sigma: f64, checkpoints: Vec<State>) -> Option<Shot> {

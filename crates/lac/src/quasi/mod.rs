@@ -1,0 +1,248 @@
+//! Quasi-aesthetic curves: rational (or plain) cubic Bézier replacements of a
+//! log-aesthetic segment or compound curve (seed 001 §4, SPEC §5), one piece as in the
+//! seed or as many as a tolerance needs.
+//!
+//! * `fit.rs`: one piece over a span of the curve, the seed's least-squares rational cubic;
+//! * `hermite.rs`: the plain cubic of the span's G2 Hermite data;
+//! * `deviation.rs`: how far a piece strays from the curve, point by point where both have
+//!   turned by the same angle;
+//! * `chain.rs`: as few pieces as a tolerance allows, joined G2.
+
+mod chain;
+mod deviation;
+mod fit;
+mod hermite;
+
+use crate::bezier::RationalCubic;
+use crate::compound::CompoundCurve;
+use crate::error::{Error, Result};
+use crate::monotone::{Monotonicity, MonotonicityReport};
+use crate::sampling::Sample;
+use crate::segment::Segment;
+
+use chain::greedy;
+use fit::fit_span;
+
+/// One piece of a [`QuasiCurve`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct QuasiPiece {
+    /// The rational cubic (all weights equal for plain cubics).
+    pub curve: RationalCubic,
+    /// Its curvature monotonicity, decided with a proof.
+    pub monotonicity: MonotonicityReport,
+    /// The turning of the original curve, from its start, at the piece's two ends (radians,
+    /// non-negative, ascending).
+    pub turning: (f64, f64),
+    /// Largest distance d(φ) to the original curve over the piece (caller's units).
+    pub max_deviation: f64,
+}
+
+/// A chain of cubic Bézier pieces replacing a log-aesthetic curve, with its deviation.
+///
+/// ```
+/// use kurbo::Point;
+/// use lac::{Monotonicity, Segment};
+///
+/// let seg = Segment::from_control_points(
+///     [Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(1.0, 0.8)],
+///     -1.0,
+/// )?;
+/// // The seed's single rational cubic …
+/// let one = seg.to_rational_cubic()?;
+/// assert_eq!(one.pieces.len(), 1);
+/// assert!(one.max < 1e-2);
+/// // … or as many as a tolerance of 1e-9 of the arc length needs.
+/// let fine = seg.to_rational_cubics(1e-9)?;
+/// assert!(fine.max <= 1e-9);
+/// assert!(fine.pieces.iter().all(|p| p.monotonicity.proven
+///     && p.monotonicity.verdict == Monotonicity::Increasing));
+/// # Ok::<(), lac::Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct QuasiCurve {
+    /// The pieces in order from the curve's first control point.
+    pub pieces: Vec<QuasiPiece>,
+    /// √(∫ d(φ)² dφ / Θ) divided by the original curve's arc length.
+    pub rms: f64,
+    /// max d(φ) divided by the original curve's arc length.
+    pub max: f64,
+}
+
+/// Smallest accepted tolerance, relative to the arc length.
+const MIN_TOLERANCE: f64 = 1e-12;
+
+impl Segment {
+    /// One rational cubic with the segment's ends, end tangents and end curvatures, closest
+    /// to it in the least-squares sense of seed 001 (see the module documentation).
+    pub fn to_rational_cubic(&self) -> Result<QuasiCurve> {
+        approximate(self, None, Kind::Seed)
+    }
+
+    /// As few rational cubics as needed for a maximum deviation of `tolerance` × arc length,
+    /// each with proven monotone curvature, joined G2.
+    pub fn to_rational_cubics(&self, tolerance: f64) -> Result<QuasiCurve> {
+        approximate(self, Some(tolerance), Kind::Rational)
+    }
+
+    /// As few plain (polynomial) cubics as needed for a maximum deviation of
+    /// `tolerance` × arc length, each with proven monotone curvature, joined G2; for
+    /// consumers that only take cubics (SVG paths, fonts).
+    pub fn to_cubics(&self, tolerance: f64) -> Result<QuasiCurve> {
+        approximate(self, Some(tolerance), Kind::Polynomial)
+    }
+}
+
+impl CompoundCurve {
+    /// One rational cubic for the whole compound curve (see [`Segment::to_rational_cubic`]).
+    pub fn to_rational_cubic(&self) -> Result<QuasiCurve> {
+        approximate(self, None, Kind::Seed)
+    }
+
+    /// Rational cubics within `tolerance` × arc length (see
+    /// [`Segment::to_rational_cubics`]).
+    pub fn to_rational_cubics(&self, tolerance: f64) -> Result<QuasiCurve> {
+        approximate(self, Some(tolerance), Kind::Rational)
+    }
+
+    /// Plain cubics within `tolerance` × arc length (see [`Segment::to_cubics`]).
+    pub fn to_cubics(&self, tolerance: f64) -> Result<QuasiCurve> {
+        approximate(self, Some(tolerance), Kind::Polynomial)
+    }
+}
+
+/// A curve with monotone curvature of one sign, evaluated by its turning φ ∈ [0, Θ] from
+/// the start tangent.
+pub(crate) trait TurningCurve {
+    /// Total turning Θ, radians, in (0, 2π).
+    fn total_turning(&self) -> f64;
+    /// Does it turn left (positive curvature)?
+    fn turns_left(&self) -> bool;
+    /// Arc length.
+    fn length(&self) -> f64;
+    /// Signed curvature at the start and at the end.
+    fn end_curvatures(&self) -> (f64, f64);
+    /// Samples where the tangent has turned by each of `phi` (ascending, within [0, Θ]).
+    fn at_turning(&self, phi: &[f64]) -> Result<Vec<Sample>>;
+}
+
+impl TurningCurve for Segment {
+    fn total_turning(&self) -> f64 {
+        self.turning
+    }
+
+    fn turns_left(&self) -> bool {
+        self.left
+    }
+
+    fn length(&self) -> f64 {
+        self.arc_length()
+    }
+
+    fn end_curvatures(&self) -> (f64, f64) {
+        (self.curvature_start(), self.curvature_end())
+    }
+
+    fn at_turning(&self, phi: &[f64]) -> Result<Vec<Sample>> {
+        if phi.is_empty() {
+            return Ok(Vec::new());
+        }
+        let sign = if self.left { 1.0 } else { -1.0 };
+        let stations = phi
+            .iter()
+            .map(|&f| self.station_at_theta(self.theta_first + sign * f.clamp(0.0, self.turning)))
+            .collect::<Result<Vec<_>>>()?;
+        Ok(self.samples_at(&stations))
+    }
+}
+
+impl TurningCurve for CompoundCurve {
+    fn total_turning(&self) -> f64 {
+        self.pieces()[0].turning + self.pieces()[1].turning
+    }
+
+    fn turns_left(&self) -> bool {
+        self.pieces()[0].left
+    }
+
+    fn length(&self) -> f64 {
+        self.arc_length()
+    }
+
+    fn end_curvatures(&self) -> (f64, f64) {
+        (self.curvature_start(), self.curvature_end())
+    }
+
+    fn at_turning(&self, phi: &[f64]) -> Result<Vec<Sample>> {
+        let [first, second] = self.pieces();
+        let split = phi.partition_point(|&f| f <= first.turning);
+        let mut out = first.at_turning(&phi[..split])?;
+        let rest: Vec<f64> = phi[split..].iter().map(|f| f - first.turning).collect();
+        let joint = self.joint_s();
+        out.extend(second.at_turning(&rest)?.into_iter().map(|s| Sample {
+            s: s.s + joint,
+            ..s
+        }));
+        Ok(out)
+    }
+}
+
+/// Which cubic a span gets.
+#[derive(Clone, Copy, PartialEq)]
+enum Kind {
+    /// The seed's least-squares rational cubic.
+    Seed,
+    /// The better of the seed's fit and the G2 cubic.
+    Rational,
+    /// The G2 plain cubic.
+    Polynomial,
+}
+
+fn approximate(
+    curve: &impl TurningCurve,
+    tolerance: Option<f64>,
+    kind: Kind,
+) -> Result<QuasiCurve> {
+    let length = curve.length();
+    let total = curve.total_turning();
+    let (k0, k1) = curve.end_curvatures();
+    let expected = expected_direction(k0, k1);
+    let pieces = match tolerance {
+        None => vec![fit_span(curve, 0.0, total, kind)?.fitted],
+        Some(tol) => {
+            if !(tol.is_finite() && (MIN_TOLERANCE..=1.0).contains(&tol)) {
+                return Err(Error::OutOfRange {
+                    name: "tolerance",
+                    value: tol,
+                    expected: "a tolerance (relative to the arc length) between 1e-12 and 1",
+                });
+            }
+            greedy(curve, tol * length, kind, expected)?
+        }
+    };
+    let (mut integral, mut max) = (0.0, 0.0f64);
+    for p in &pieces {
+        integral += p.integral;
+        max = max.max(p.piece.max_deviation);
+    }
+    Ok(QuasiCurve {
+        pieces: pieces.into_iter().map(|p| p.piece).collect(),
+        rms: (integral / total).sqrt() / length,
+        max: max / length,
+    })
+}
+
+/// The verdict a faithful piece must have: that of the curve (constant for an arc).
+fn expected_direction(k0: f64, k1: f64) -> Monotonicity {
+    if (k1 - k0).abs() <= 1e-12 * k0.abs().max(k1.abs()) {
+        Monotonicity::Constant
+    } else if k1 > k0 {
+        Monotonicity::Increasing
+    } else {
+        Monotonicity::Decreasing
+    }
+}
+
+/// The error of a span no cubic follows.
+fn unfittable() -> Error {
+    Error::FitFailed
+}

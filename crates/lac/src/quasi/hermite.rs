@@ -9,6 +9,7 @@ use super::fit::{Candidate, Span};
 use super::unfittable;
 use crate::bezier::Hom;
 use crate::error::Result;
+use crate::numeric::find_root;
 
 impl Span {
     /// The plain cubic of the G2 Hermite data with the smallest deviation.
@@ -24,16 +25,24 @@ impl Span {
             let e = d1(d0);
             k1 * e * e + s * d0 - big_b
         };
+        // f′(δ₀) = −4k₀k₁δ₀δ₁/s + s: Newton inside the bracket.
+        let f_and_slope = |d0: f64| (f(d0), Some(s - 4.0 * k0 * k1 * d0 * d1(d0) / s));
         let top = (big_a / k0).sqrt();
+        // Full precision: a Newton step this small leaves an error far below it.
+        let x_tol = 4.0 * f64::EPSILON * top;
         const STEPS: usize = 64;
         let mut best: Option<(f64, [Hom; 4])> = None;
         let mut prev = (0.0, f(0.0));
         for i in 1..=STEPS {
             let x = top * i as f64 / STEPS as f64;
             let fx = f(x);
-            if prev.1 == 0.0 || prev.1.signum() != fx.signum() {
-                let root = bisect(&f, prev.0, x);
-                let (d0, e1) = (root, d1(root));
+            let bracketed = prev.1 == 0.0 || prev.1.signum() != fx.signum();
+            // A root that does not settle is not a candidate (never a guess).
+            let root = bracketed
+                .then(|| find_root(f_and_slope, prev, (x, fx), None, x_tol, 100).ok())
+                .flatten();
+            if let Some(d0) = root {
+                let e1 = d1(d0);
                 if d0 > 0.0 && e1 > 0.0 {
                     let q = [
                         [0.0, 0.0, 1.0],
@@ -52,20 +61,4 @@ impl Span {
         }
         best.map(|(_, q)| q).ok_or_else(unfittable)
     }
-}
-
-fn bisect(f: &impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
-    let fa = f(a);
-    for _ in 0..200 {
-        let m = 0.5 * (a + b);
-        if m <= a || m >= b {
-            break;
-        }
-        if (f(m) > 0.0) == (fa > 0.0) {
-            a = m;
-        } else {
-            b = m;
-        }
-    }
-    0.5 * (a + b)
 }

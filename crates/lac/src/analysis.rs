@@ -9,7 +9,7 @@
 //! ∫ (y − αx − c)² |dx| along the graph, so the answer does not depend on how densely the
 //! curve was sampled where; a log-aesthetic curve gives its α back exactly.
 
-use kurbo::Point;
+use kurbo::{ParamCurve, Point};
 
 use crate::bezier::RationalCubic;
 use crate::compound::CompoundCurve;
@@ -107,7 +107,7 @@ pub fn curvature_plot(pieces: &[RationalCubic], per_piece: usize) -> Result<Vec<
             out.push(CurvaturePoint {
                 s,
                 point: piece.eval(t),
-                kappa: piece.curvature(t),
+                kappa: piece.signed_curvature(t),
                 dkappa_ds: piece.curvature_derivative(t),
             });
         }

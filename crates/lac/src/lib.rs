@@ -18,11 +18,15 @@
 //!   whose verdict is a proof ([`RationalCubic::curvature_monotonicity`], seed 001 §5);
 //! * [`QuasiCurve`]: quasi-aesthetic curves (seed 001 §4), one rational cubic fitted as in
 //!   the seed ([`Segment::to_rational_cubic`]) or G2 chains of rational or plain cubics
-//!   within a tolerance ([`Segment::to_rational_cubics`], [`Segment::to_cubics`]);
+//!   within a tolerance ([`Segment::to_rational_cubics`], [`Segment::to_cubics`]), as one
+//!   curve ([`BezierChain`]) or a kurbo path ([`QuasiCurve::to_bez_path`]);
 //! * [`curvature_plot`] and [`log_curvature_graph`]: the curvature plot and logarithmic
 //!   curvature graph of any chain of Bézier pieces, with a least-squares α ([`LcgFit`]).
 //!
-//! The crate does no I/O. Signed curvature is positive for left turns.
+//! The crate does no I/O. Signed curvature is positive for left turns; kurbo's
+//! [`ParamCurveCurvature`](kurbo::ParamCurveCurvature), where this crate implements it for
+//! Bézier curves ([`RationalCubic`], [`BezierChain`]), keeps kurbo's sign, positive for right
+//! turns.
 //!
 //! ```
 //! use kurbo::Point;
@@ -41,6 +45,7 @@
 
 mod analysis;
 mod bezier;
+mod bezier_chain;
 mod compound;
 mod error;
 mod gauss;
@@ -60,7 +65,8 @@ mod standard_form;
 pub use analysis::{
     curvature_plot, log_curvature_graph, CurvaturePoint, LcgFit, LogCurvatureGraph,
 };
-pub use bezier::RationalCubic;
+pub use bezier::{RationalCubic, RationalCubicDerivative};
+pub use bezier_chain::{BezierChain, BezierChainDerivative};
 pub use compound::CompoundCurve;
 pub use error::{Error, NotDrawable, Result};
 pub use kurbo_impl::SegmentDerivative;

@@ -22,7 +22,7 @@
 use kurbo::{Point, Vec2};
 
 use crate::bezier::{numerator, power_basis, power_jet, Hom, RationalCubic};
-use crate::error::{Error, Result};
+use crate::error::{finite, Error, Result};
 use crate::numeric::{find_root, RootFailure};
 
 /// How the signed curvature κ of a curve varies with its parameter (SPEC §5).
@@ -77,7 +77,8 @@ impl RationalCubic {
     /// [`MonotonicityReport::proven`]).
     ///
     /// Errors: [`Error::CoincidentPoints`] when b0 = b1 or b2 = b3 (the end tangent, and
-    /// so the curvature there, is undefined).
+    /// so the curvature there, is undefined); [`Error::NonFinite`] for the curve of NaN that
+    /// a subsegment at a NaN parameter gives.
     ///
     /// ```
     /// use kurbo::{Point, Vec2};
@@ -93,6 +94,14 @@ impl RationalCubic {
     /// ```
     pub fn curvature_monotonicity(&self) -> Result<MonotonicityReport> {
         let b = self.points();
+        // Only a subsegment at a NaN parameter makes a curve of NaN.
+        for p in &b {
+            finite("a control point coordinate", p.x)?;
+            finite("a control point coordinate", p.y)?;
+        }
+        for w in self.weights() {
+            finite("a weight", w)?;
+        }
         if b[0] == b[1] {
             return Err(Error::CoincidentPoints {
                 first: 0,

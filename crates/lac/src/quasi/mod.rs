@@ -13,7 +13,10 @@ mod deviation;
 mod fit;
 mod hermite;
 
+use kurbo::BezPath;
+
 use crate::bezier::RationalCubic;
+use crate::bezier_chain::BezierChain;
 use crate::compound::CompoundCurve;
 use crate::error::{Error, Result};
 use crate::monotone::{Monotonicity, MonotonicityReport};
@@ -66,6 +69,23 @@ pub struct QuasiCurve {
     pub rms: f64,
     /// max d(φ) divided by the original curve's arc length.
     pub max: f64,
+}
+
+impl QuasiCurve {
+    /// The pieces as one curve for kurbo's traits, piece i of n covering the parameter
+    /// range [i/n, (i + 1)/n] (see [`BezierChain`]).
+    ///
+    /// Errors: no pieces ([`Error::OutOfRange`]; never for a curve this crate made).
+    pub fn chain(&self) -> Result<BezierChain> {
+        BezierChain::new(self.pieces.iter().map(|p| p.curve).collect())
+    }
+
+    /// The chain as a kurbo path when every piece is a plain cubic (all its weights equal),
+    /// as [`Segment::to_cubics`] makes them, e.g. for [`BezPath::to_svg`]; None when a piece
+    /// is rational (or there are none).
+    pub fn to_bez_path(&self) -> Option<BezPath> {
+        self.chain().ok()?.to_bez_path()
+    }
 }
 
 /// Smallest accepted tolerance, relative to the arc length.

@@ -23,6 +23,8 @@ fn faithful(piece: &QuasiPiece, expected: Monotonicity, k0: f64, k1: f64) -> boo
     }
 }
 
+/// The pieces from the curve's start to its end, each as long as a maximum deviation of
+/// `tol` (caller's units) and a faithful monotonicity allow.
 pub(super) fn greedy(
     curve: &impl TurningCurve,
     tol: f64,

@@ -26,11 +26,13 @@ use crate::error::Result;
 use crate::gauss::GAUSS_16;
 use crate::monotone::Monotonicity;
 
+/// A piece with what the totals of the chain need.
 pub(super) struct Fitted {
     pub(super) piece: QuasiPiece,
     /// ∫ d² dφ over the piece.
     pub(super) integral: f64,
 }
+
 /// A fitted span with the signed curvatures of the curve at its ends.
 pub(super) struct Trial {
     pub(super) fitted: Fitted,
@@ -49,6 +51,9 @@ impl std::ops::Deref for Trial {
 const SETTLED: (f64, f64) = (1e-9, 1e-12);
 /// … or, for a probe of a second valley, once it is clear where the descent ends.
 const ROUGH: (f64, f64) = (1e-4, 1e-3);
+
+/// The cubic of `kind` over the span of the curve from turning `phi_a` to `phi_b`, with
+/// its deviation and monotonicity.
 pub(super) fn fit_span(
     curve: &impl TurningCurve,
     phi_a: f64,

@@ -1,10 +1,10 @@
 //! The invariants: what every `Ok` answer must satisfy, checked independently of the
 //! solver that produced it.
 
-use kurbo::{Point, Vec2};
+use kurbo::{ParamCurve, Point, Vec2};
 use lac::{
     curvature_plot, log_curvature_graph, CompoundCurve, Curve, Monotonicity, QuasiCurve,
-    RationalCubic, Sample, Segment, SpaceSegment, SpaceShape, TorsionType, Vec3,
+    RationalCubic, Sample, Segment, SpaceSegment, SpaceShape, Tolerance, TorsionType, Vec3,
 };
 
 use crate::Input;
@@ -35,10 +35,19 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
             let Ok(seg) = Segment::from_control_points(pts, *alpha) else {
                 return Ok(false);
             };
-            check_curve(&seg, &[pts[0], pts[1]], &[pts[1], pts[2]], *samples, *accuracy)?;
+            check_curve(
+                &seg,
+                &[pts[0], pts[1]],
+                &[pts[1], pts[2]],
+                *samples,
+                *accuracy,
+            )?;
             let lcg = seg.lcg();
             if let Some(line) = lcg {
-                finite("lcg", &[line.alpha, line.intercept, line.log_rho.0, line.log_rho.1])?;
+                finite(
+                    "lcg",
+                    &[line.alpha, line.intercept, line.log_rho.0, line.log_rho.1],
+                )?;
             }
             Ok(true)
         }
@@ -99,7 +108,10 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
                 return Ok(false);
             };
             for p in &plot {
-                finite("curvature plot", &[p.s, p.point.x, p.point.y, p.kappa, p.dkappa_ds])?;
+                finite(
+                    "curvature plot",
+                    &[p.s, p.point.x, p.point.y, p.kappa, p.dkappa_ds],
+                )?;
             }
             let graph = log_curvature_graph(&plot);
             for (x, y) in &graph.points {
@@ -132,8 +144,8 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
             };
             let fit = match (tolerance, cubic) {
                 (None, _) => seg.to_rational_cubic(),
-                (Some(t), false) => seg.to_rational_cubics(*t),
-                (Some(t), true) => seg.to_cubics(*t),
+                (Some(t), false) => seg.to_rational_cubics(Tolerance::Relative(*t)),
+                (Some(t), true) => seg.to_cubics(Tolerance::Relative(*t)),
             };
             let Ok(quasi) = fit else {
                 return Ok(false);
@@ -213,7 +225,9 @@ fn check_curve(
     let chord = (end - start).hypot();
     let tol = bounds::POSITION * chord + rounding(&all);
     if !(len > 0.0 && len >= chord * (1.0 - 1e-12) - tol) {
-        return Err(format!("arc length {len:e} shorter than the chord {chord:e}"));
+        return Err(format!(
+            "arc length {len:e} shorter than the chord {chord:e}"
+        ));
     }
     let n_check = n.clamp(2, 2000).max(65);
     let samples = curve
@@ -224,10 +238,16 @@ fn check_curve(
     }
     let (a, b) = (samples[0], samples[samples.len() - 1]);
     if (a.point - start).hypot() > tol {
-        return Err(format!("starts {:e} from the first point", (a.point - start).hypot()));
+        return Err(format!(
+            "starts {:e} from the first point",
+            (a.point - start).hypot()
+        ));
     }
     if (b.point - end).hypot() > 64.0 * tol {
-        return Err(format!("ends {:e} from the last point", (b.point - end).hypot()));
+        return Err(format!(
+            "ends {:e} from the last point",
+            (b.point - end).hypot()
+        ));
     }
     let angle_tol = bounds::TANGENT + 1e3 * tol / chord;
     let leg0 = first_leg[1] - first_leg[0];
@@ -255,7 +275,10 @@ fn check_curve(
     }
     if let Ok(adaptive) = curve.sample_adaptive(accuracy) {
         for s in &adaptive {
-            finite("adaptive sample", &[s.s, s.point.x, s.point.y, s.theta, s.kappa])?;
+            finite(
+                "adaptive sample",
+                &[s.s, s.point.x, s.point.y, s.theta, s.kappa],
+            )?;
         }
         // Every equally spaced sample lies within the accuracy of the polyline.
         let mut j = 0;
@@ -266,7 +289,9 @@ fn check_curve(
             let (p, q) = (adaptive[j].point, adaptive[j + 1].point);
             let d = distance_to_segment(s.point, p, q);
             if d > accuracy * 1.001 + 16.0 * tol {
-                return Err(format!("adaptive polyline {d:e} from the curve (asked {accuracy:e})"));
+                return Err(format!(
+                    "adaptive polyline {d:e} from the curve (asked {accuracy:e})"
+                ));
             }
         }
     }
@@ -361,7 +386,7 @@ fn check_verdict(curve: &RationalCubic, verdict: Monotonicity, proven: bool) -> 
         return Ok(());
     }
     let ks: Vec<f64> = (0..=256)
-        .map(|i| curve.curvature(i as f64 / 256.0))
+        .map(|i| curve.signed_curvature(i as f64 / 256.0))
         .collect();
     if ks.iter().any(|k| !k.is_finite()) {
         return Ok(());
@@ -404,10 +429,15 @@ fn check_quasi(
         let b = p.curve.points();
         finite(
             "piece",
-            &[b[0].x, b[0].y, b[1].x, b[1].y, b[2].x, b[2].y, b[3].x, b[3].y],
+            &[
+                b[0].x, b[0].y, b[1].x, b[1].y, b[2].x, b[2].y, b[3].x, b[3].y,
+            ],
         )?;
         finite("weights", &p.curve.weights())?;
-        finite("turning and deviation", &[p.turning.0, p.turning.1, p.max_deviation])?;
+        finite(
+            "turning and deviation",
+            &[p.turning.0, p.turning.1, p.max_deviation],
+        )?;
     }
     let first = quasi.pieces[0].curve.points()[0];
     let last = quasi.pieces[quasi.pieces.len() - 1].curve.points()[3];
@@ -424,7 +454,7 @@ fn check_quasi(
         if (pa - pb).hypot() > 64.0 * tol {
             return Err(format!("pieces {:e} apart", (pa - pb).hypot()));
         }
-        let (ka, kb) = (a.curvature(1.0), b.curvature(0.0));
+        let (ka, kb) = (a.signed_curvature(1.0), b.signed_curvature(0.0));
         if (ka - kb).abs() > 1e-6 * ka.abs().max(kb.abs()) {
             return Err(format!("curvature jumps between pieces: {ka:e} to {kb:e}"));
         }
@@ -433,7 +463,10 @@ fn check_quasi(
         return Ok(());
     };
     if quasi.max > relative {
-        return Err(format!("reported max {:e} over the tolerance {relative:e}", quasi.max));
+        return Err(format!(
+            "reported max {:e} over the tolerance {relative:e}",
+            quasi.max
+        ));
     }
     let (k0, k1) = (seg.curvature_start(), seg.curvature_end());
     let constant = (k1 - k0).abs() <= 1e-9 * k0.abs().max(k1.abs());

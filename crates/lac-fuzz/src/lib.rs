@@ -156,7 +156,10 @@ impl EntryPoint {
 
     /// The `index`-th input of the stream for `seed`.
     pub fn input(self, seed: u64, index: u64) -> Input {
-        let mut rng = Rng::new(seed ^ (self as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15), index);
+        let mut rng = Rng::new(
+            seed ^ (self as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15),
+            index,
+        );
         match self {
             EntryPoint::Segment => generate::segment(&mut rng),
             EntryPoint::Compound3 => generate::compound3(&mut rng),

@@ -9,7 +9,7 @@
 //! ∫ (y − αx − c)² |dx| along the graph, so the answer does not depend on how densely the
 //! curve was sampled where; a log-aesthetic curve gives its α back exactly.
 
-use kurbo::Point;
+use kurbo::{ParamCurve, Point};
 
 use crate::bezier::RationalCubic;
 use crate::error::{Error, Result};
@@ -72,11 +72,11 @@ pub struct LogCurvatureGraph {
 ///
 /// ```
 /// use kurbo::Point;
-/// use lac::{curvature_plot, log_curvature_graph, Segment};
+/// use lac::{curvature_plot, log_curvature_graph, Curve, Segment, Tolerance};
 ///
 /// let seg = Segment::from_control_points(
 ///     [Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(1.0, 0.8)], 0.5)?;
-/// let quasi = seg.to_rational_cubics(1e-6)?;
+/// let quasi = seg.to_rational_cubics(Tolerance::Relative(1e-6))?;
 /// let pieces: Vec<_> = quasi.pieces.iter().map(|p| p.curve).collect();
 /// let graph = log_curvature_graph(&curvature_plot(&pieces, 64)?);
 /// let fit = graph.fit.unwrap();
@@ -106,7 +106,7 @@ pub fn curvature_plot(pieces: &[RationalCubic], per_piece: usize) -> Result<Vec<
             out.push(CurvaturePoint {
                 s,
                 point: piece.eval(t),
-                kappa: piece.curvature(t),
+                kappa: piece.signed_curvature(t),
                 dkappa_ds: piece.curvature_derivative(t),
             });
         }

@@ -14,8 +14,10 @@ use kurbo::{Point, Vec2};
 use crate::analysis::CurvaturePoint;
 use crate::error::{finite, Error, Result};
 use crate::numeric::clamp;
+use crate::quasi::{self, Kind, QuasiCurve};
 use crate::segment::sampling::{check_count, Sample};
 use crate::segment::Segment;
+use crate::tolerance::Tolerance;
 
 /// A planar log-aesthetic curve: one or more log-aesthetic [`Segment`]s joined end to end
 /// (at least G1: each piece starts where the previous one ends, with its tangent).
@@ -182,6 +184,35 @@ pub trait Curve {
             .into_iter()
             .map(|(i, s)| pieces[i].curvature_point(&s))
             .collect())
+    }
+
+    /// One rational cubic with the curve's ends, end tangents and end curvatures, closest
+    /// to it in the least-squares sense of seed 001 §4 (see [`QuasiCurve`]).
+    fn to_rational_cubic(&self) -> Result<QuasiCurve> {
+        quasi::replace(self.pieces(), None, Kind::Seed)
+    }
+
+    /// As few rational cubics as needed for a maximum deviation within `tolerance`, each
+    /// with curvature proven monotone in the curve's direction, joined G2.
+    fn to_rational_cubics(&self, tolerance: Tolerance) -> Result<QuasiCurve> {
+        quasi::replace(self.pieces(), Some(tolerance), Kind::Rational)
+    }
+
+    /// As few plain (polynomial) cubics as needed for a maximum deviation within
+    /// `tolerance`, each with curvature proven monotone, joined G2: for consumers that only
+    /// take cubics (SVG paths, fonts). Their chain is a kurbo `BezPath`
+    /// ([`QuasiCurve::to_bez_path`]).
+    fn to_cubics(&self, tolerance: Tolerance) -> Result<QuasiCurve> {
+        quasi::replace(self.pieces(), Some(tolerance), Kind::Polynomial)
+    }
+}
+
+/// Any run of consecutive pieces, as a curve.
+pub(crate) struct Chain<'a>(pub(crate) &'a [Segment]);
+
+impl Curve for Chain<'_> {
+    fn pieces(&self) -> &[Segment] {
+        self.0
     }
 }
 

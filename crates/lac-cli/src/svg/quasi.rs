@@ -5,7 +5,7 @@
 
 use std::fmt::Write as _;
 
-use kurbo::{Point, Rect};
+use kurbo::{BezPath, CubicBez, ParamCurve, ParamCurveArclen, PathSeg, Point, Rect};
 use lac::Curve;
 use lac::{QuasiCurve, RationalCubic, Sample, Segment};
 
@@ -41,6 +41,8 @@ struct Layers {
     /// The log-aesthetic curve.
     curve: Vec<Point>,
     beziers: Vec<RationalCubic>,
+    /// The pieces as one kurbo path, when they are all plain cubics.
+    path: Option<BezPath>,
     /// The curve's comb: envelope through every sample, teeth at every eighth.
     lac_comb: Comb,
     lac_teeth: Comb,
@@ -116,6 +118,7 @@ impl Layers {
             points: points.to_vec(),
             curve,
             beziers,
+            path: quasi.to_bez_path(),
             lac_comb: Comb::scaled(lac_samples, scale),
             lac_teeth: Comb::scaled(&lac_teeth, scale),
             bezier_comb: Comb::scaled(&dense, scale),
@@ -159,8 +162,17 @@ impl Layers {
         let dashed = " stroke-dasharray=\"5 3\"";
         let envelope = pixels(&self.bezier_comb.envelope());
         polyline(svg, &envelope, BEZIER_COMB, 1.25, dashed);
-        for (b, points) in self.beziers.iter().zip(dense_points(&self.beziers)) {
-            piece_path(svg, b, &pixels(&points), view, cubic);
+        // Plain cubics exactly, as kurbo writes them (a similarity maps control points to
+        // control points); rational pieces through dense points.
+        let cubics: Option<Vec<PathSeg>> = match &self.path {
+            Some(path) if cubic => Some((view.affine() * path.clone()).segments().collect()),
+            _ => None,
+        };
+        for (i, points) in dense_points(&self.beziers).iter().enumerate() {
+            match cubics.as_ref().and_then(|c| c.get(i)) {
+                Some(&PathSeg::Cubic(c)) => piece_path(svg, &cubic_data(c)),
+                _ => piece_path(svg, &polyline_data(&pixels(points))),
+            }
         }
         polyline(svg, &pixels(&self.curve), LAC, 1.0, "");
         for b in &self.beziers[..self.beziers.len() - 1] {
@@ -196,7 +208,7 @@ fn bezier_samples(beziers: &[RationalCubic], total: usize) -> Vec<Sample> {
                 s,
                 point: b.eval(t),
                 theta: d.y.atan2(d.x),
-                kappa: b.curvature(t),
+                kappa: b.signed_curvature(t),
             });
         }
         s0 += length;
@@ -223,35 +235,17 @@ fn bezier_at_arc_lengths(beziers: &[RationalCubic], at: &[f64]) -> Vec<Sample> {
                 .expect("more than one piece was left");
             length = b.arc_length();
         }
-        let t = parameter_at(b, (s - start).clamp(0.0, length), length);
+        // Far below the drawing's hundredth of a pixel, at any size.
+        let t = b.inv_arclen((s - start).clamp(0.0, length), 1e-9 * length);
         let d = b.derivative(t);
         out.push(Sample {
             s,
             point: b.eval(t),
             theta: d.y.atan2(d.x),
-            kappa: b.curvature(t),
+            kappa: b.signed_curvature(t),
         });
     }
     out
-}
-
-/// The parameter at arc length `s` from the start of `b` (of length `length`): Newton's
-/// method on s(t), which is increasing, from the guess t = s/length; a drawing needs no
-/// more than a few steps.
-fn parameter_at(b: &RationalCubic, s: f64, length: f64) -> f64 {
-    let mut t = s / length;
-    for _ in 0..8 {
-        let speed = b.derivative(t).hypot();
-        if !speed.is_finite() || speed <= 0.0 {
-            break;
-        }
-        let step = (b.arc_length_between(0.0, t) - s) / speed;
-        t = (t - step).clamp(0.0, 1.0);
-        if step.abs() < 1e-12 {
-            break;
-        }
-    }
-    t
 }
 
 /// The points on each rational piece that its polyline is drawn through.
@@ -272,30 +266,29 @@ fn every_eighth(samples: &[Sample]) -> Vec<Sample> {
     samples.iter().step_by(8).copied().collect()
 }
 
-/// One Bézier piece as a `<path>`: plain cubics exactly, as a `C` command (a similarity maps
-/// control points to control points), rational ones through `points` (pixels).
-fn piece_path(svg: &mut String, b: &RationalCubic, points: &[Point], view: &View, cubic: bool) {
-    let _ = write!(
+/// One Bézier piece as a `<path>` with path data `d`.
+fn piece_path(svg: &mut String, d: &str) {
+    let _ = writeln!(
         svg,
-        r#"<path class="piece" stroke="{BEZIER}" stroke-opacity="0.5" stroke-width="4" d=""#
+        r#"<path class="piece" stroke="{BEZIER}" stroke-opacity="0.5" stroke-width="4" d="{d}"/>"#
     );
-    match b.to_cubic().filter(|_| cubic) {
-        Some(c) => {
-            let [p0, p1, p2, p3] = [c.p0, c.p1, c.p2, c.p3].map(|p| view.px(p));
-            let _ = write!(
-                svg,
-                "M{:.2},{:.2}C{:.2},{:.2} {:.2},{:.2} {:.2},{:.2}",
-                p0.x, p0.y, p1.x, p1.y, p2.x, p2.y, p3.x, p3.y
-            );
-        }
-        None => {
-            for (i, p) in points.iter().enumerate() {
-                let command = if i == 0 { 'M' } else { 'L' };
-                let _ = write!(svg, "{command}{:.2},{:.2}", p.x, p.y);
-            }
-        }
+}
+
+/// The path data of a plain cubic piece (pixels), to a hundredth of a pixel, from kurbo.
+fn cubic_data(c: CubicBez) -> String {
+    let r = |p: Point| Point::new((p.x * 100.0).round() / 100.0, (p.y * 100.0).round() / 100.0);
+    let c = CubicBez::new(r(c.p0), r(c.p1), r(c.p2), r(c.p3));
+    BezPath::from_path_segments(std::iter::once(PathSeg::Cubic(c))).to_svg()
+}
+
+/// The path data of a polyline through `points` (pixels).
+fn polyline_data(points: &[Point]) -> String {
+    let mut d = String::new();
+    for (i, p) in points.iter().enumerate() {
+        let command = if i == 0 { 'M' } else { 'L' };
+        let _ = write!(d, "{command}{:.2},{:.2}", p.x, p.y);
     }
-    svg.push_str("\"/>\n");
+    d
 }
 
 /// A small hollow square: an inner control point of a Bézier piece.

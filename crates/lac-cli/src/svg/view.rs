@@ -4,7 +4,7 @@
 //! ever holds pixel coordinates of moderate size: stroke widths do not depend on the input
 //! scale, and tiny drawings far from the origin (size 1e-6 at 1e7) keep their shape.
 
-use kurbo::{Point, Rect};
+use kurbo::{Affine, Point, Rect};
 
 /// Longest side of the drawn content, pixels.
 const CONTENT: f64 = 720.0;
@@ -54,6 +54,19 @@ impl View {
             self.left + (p.x - self.bounds.x0) * self.scale,
             self.top + (self.bounds.y1 - p.y) * self.scale,
         )
+    }
+
+    /// [`px`](Self::px) as an affine map, for kurbo's paths (equal up to rounding).
+    pub(crate) fn affine(&self) -> Affine {
+        let s = self.scale;
+        Affine::new([
+            s,
+            0.0,
+            0.0,
+            -s,
+            self.left - self.bounds.x0 * s,
+            self.top + self.bounds.y1 * s,
+        ])
     }
 }
 

@@ -616,3 +616,30 @@ fn space_drawings_are_clean() {
     ];
     check_all(&cases.iter().map(Vec::as_slice).collect::<Vec<_>>(), false);
 }
+
+#[test]
+fn the_readme_figures_are_clean() {
+    let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs");
+    let fonts = dejavu();
+    let mut report = String::new();
+    let mut figures = 0;
+    for entry in std::fs::read_dir(&docs).expect("docs/ is there") {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "svg") {
+            let svg = std::fs::read_to_string(&path).unwrap();
+            let found = problems(&svg, &fonts);
+            if !found.is_empty() {
+                report.push_str(&format!("{}:\n  {}\n", path.display(), found.join("\n  ")));
+            }
+            figures += 1;
+        }
+    }
+    assert!(
+        figures >= 5,
+        "segment, compound, quasi, lcg and space figures"
+    );
+    assert!(
+        report.is_empty(),
+        "figures that are not clean (regenerate them with the commands in README.md):\n{report}"
+    );
+}

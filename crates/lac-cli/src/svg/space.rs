@@ -145,7 +145,8 @@ impl Layout {
             panel.left = left[view.column];
             panel.top = top[view.row];
         }
-        let bottom = top[1] + panels.iter().map(|p| p.height).fold(0.0, f64::max);
+        let second_row = VIEWS.iter().zip(&panels).filter(|(v, _)| v.row == 1);
+        let bottom = top[1] + max(&mut second_row.map(|(_, p)| p.height));
         let footnote_top = bottom + BELOW + SPACING;
         Layout {
             panels,

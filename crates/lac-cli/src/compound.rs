@@ -3,6 +3,7 @@
 
 use kurbo::Point;
 use lac::CompoundCurve;
+use lac::Curve;
 use serde::Deserialize;
 
 use crate::batch;

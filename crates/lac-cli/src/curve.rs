@@ -1,6 +1,7 @@
 //! A log-aesthetic curve of either kind the commands take: a segment (three points and α)
 //! or a compound-rhythm curve (two pieces, α0 and α1).
 
+use lac::Curve;
 use lac::{CompoundCurve, CurvaturePoint, QuasiCurve, Sample, Segment};
 
 /// A segment or a compound curve, for the commands that treat both alike.

@@ -1,5 +1,6 @@
 //! Why a command failed: a stable kind, a message, and the exit code that goes with them.
 
+use std::borrow::Cow;
 use std::io;
 use std::path::Path;
 
@@ -15,7 +16,7 @@ use serde::Serialize;
 pub(crate) struct Failure {
     /// A snake_case name: the library's [`lac::Error::kind`], or "usage", "invalid_input",
     /// "io".
-    pub(crate) kind: &'static str,
+    pub(crate) kind: Cow<'static, str>,
     /// What was wrong and what would fix it.
     pub(crate) message: String,
     /// [`lac::NotDrawable::TorsionTooLarge`]: the largest torsion parameter Ω for which a
@@ -32,9 +33,9 @@ struct ErrorLine<'a> {
 
 impl Failure {
     /// A failure of `kind` (see [`Failure::exit_code`]) with no extra field.
-    pub(crate) fn new(kind: &'static str, message: impl Into<String>) -> Self {
+    pub(crate) fn new(kind: impl Into<Cow<'static, str>>, message: impl Into<String>) -> Self {
         Failure {
-            kind,
+            kind: kind.into(),
             message: message.into(),
             omega_max: None,
         }
@@ -61,7 +62,7 @@ impl Failure {
 
     /// The process exit code for this failure.
     pub(crate) fn exit_code(&self) -> u8 {
-        match self.kind {
+        match self.kind.as_ref() {
             "io" => 1,
             "not_drawable" | "fit_failed" | "tolerance_not_met" => 3,
             _ => 2,
@@ -93,8 +94,16 @@ impl From<lac::Error> for Failure {
         };
         Failure {
             omega_max,
-            ..Failure::new(err.kind(), err.to_string())
+            ..Failure::new(kind_name(err.kind()), err.to_string())
         }
+    }
+}
+
+/// The library's name for an error kind (its serde name: snake_case).
+fn kind_name(kind: lac::ErrorKind) -> String {
+    match serde_json::to_value(kind) {
+        Ok(serde_json::Value::String(name)) => name,
+        _ => "internal".to_string(),
     }
 }
 

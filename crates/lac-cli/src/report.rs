@@ -2,6 +2,7 @@
 //! caller's frame.
 
 use kurbo::Point;
+use lac::Curve;
 use lac::{CompoundCurve, LcgLine, Sample, Segment};
 use serde::Serialize;
 

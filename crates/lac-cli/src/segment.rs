@@ -1,6 +1,7 @@
 //! `lac segment`: one segment from `--points` and `--alpha`, or many with `--batch`.
 
 use kurbo::Point;
+use lac::Curve;
 use lac::Segment;
 use serde::Deserialize;
 

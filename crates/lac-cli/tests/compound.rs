@@ -3,6 +3,7 @@
 
 mod common;
 
+use lac::Curve;
 use std::f64::consts::{PI, TAU};
 
 use common::{assert_failure, json, lac};

@@ -8,6 +8,7 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use kurbo::Point;
+use lac::Curve;
 use lac::Segment;
 use std::hint::black_box;
 

@@ -12,10 +12,9 @@
 use kurbo::Point;
 
 use crate::bezier::RationalCubic;
-use crate::compound::CompoundCurve;
 use crate::error::{Error, Result};
 use crate::gauss::GAUSS_8;
-use crate::sampling::{check_count, Sample};
+use crate::segment::sampling::{check_count, Sample};
 use crate::segment::Segment;
 
 /// One point of a curvature plot.
@@ -203,57 +202,22 @@ fn fit_line(points: &[(f64, f64)]) -> Option<LcgFit> {
 }
 
 impl Segment {
-    /// `n ≥ 2` curvature points equally spaced in arc length, with the exact dκ/ds
-    /// (dρ/ds = Λρ^(1−α) in the standard form).
-    pub fn curvature_plot(&self, n: usize) -> Result<Vec<CurvaturePoint>> {
-        Ok(self
-            .sample_by_arc_length(n)?
-            .iter()
-            .map(|s| self.curvature_point(s))
-            .collect())
-    }
-
-    /// dκ/ds at a sample: with ρ the standard-form radius and σ the scale,
-    /// dκ/ds = −sign(κ)·dir·Λ ρ^(−1−α) / σ².
+    /// The curvature point of a sample of this segment, with the exact dκ/ds.
     pub(crate) fn curvature_point(&self, s: &Sample) -> CurvaturePoint {
-        let scale = self.scale();
-        let ln_rho = -(s.kappa.abs() * scale).ln();
-        let sign = if s.kappa >= 0.0 { 1.0 } else { -1.0 };
-        let dk = -sign * self.dir() * self.form.lambda * (-(1.0 + self.alpha) * ln_rho).exp()
-            / (scale * scale);
+        let ln_rho = -(s.kappa.abs() * self.scale()).ln();
         CurvaturePoint {
             s: s.s,
             point: s.point,
             kappa: s.kappa,
-            dkappa_ds: dk,
+            dkappa_ds: self.dkappa_ds_of(ln_rho),
         }
-    }
-}
-
-impl CompoundCurve {
-    /// `n ≥ 2` curvature points equally spaced in arc length, with the exact dκ/ds.
-    pub fn curvature_plot(&self, n: usize) -> Result<Vec<CurvaturePoint>> {
-        let joint = self.joint_s();
-        let [first, second] = self.pieces();
-        Ok(self
-            .sample_by_arc_length(n)?
-            .iter()
-            .map(|s| {
-                let mut p = if s.s <= joint {
-                    first.curvature_point(s)
-                } else {
-                    second.curvature_point(s)
-                };
-                p.s = s.s;
-                p
-            })
-            .collect())
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::Curve;
 
     #[test]
     fn a_log_aesthetic_segment_has_its_own_alpha() {

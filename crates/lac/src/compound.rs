@@ -1,14 +1,17 @@
 //! Compound-rhythm curves: two log-aesthetic pieces joined with G3 continuity (SPEC §4,
 //! seeds 004 and 002).
 
-use kurbo::{Point, Vec2};
+use std::ops::Range;
 
+use kurbo::{ParamCurve, ParamCurveArclen, ParamCurveCurvature, ParamCurveDeriv, Point, Vec2};
+
+use crate::chord_angle::ChordAngle;
+use crate::curve::{locate, Curve};
 use crate::error::{finite, Error, NotDrawable, Result};
 use crate::lcg::LcgLine;
-use crate::sampling::{check_count, Sample};
-use crate::segment::{control_triangle, Segment};
-use crate::solve::ChordAngle;
-use crate::standard_form::Station;
+use crate::numeric::Complex;
+use crate::segment::{check_alpha, control_triangle, normalized, Placement, Segment, Travel};
+use crate::turn::Turn;
 
 /// A compound-rhythm log-aesthetic curve: a piece of slope α0 from the first control point
 /// to the joint, then a piece of slope α1 to the last control point, with position,
@@ -26,7 +29,7 @@ use crate::standard_form::Station;
 ///
 /// ```
 /// use kurbo::Point;
-/// use lac::CompoundCurve;
+/// use lac::{CompoundCurve, Curve};
 ///
 /// // A "valley": clothoid-like α0 = −1 into a circle-involute-like α1 = 2.
 /// let curve = CompoundCurve::from_three_points(
@@ -45,12 +48,19 @@ pub struct CompoundCurve {
     pieces: [Segment; 2],
 }
 
+/// The shortest piece a compound curve may have, as a share of its arc length. Shorter
+/// pieces (seen where α0 > 1 meets α1 < 0 and the control points demand a curvature ratio
+/// of e^40 or more) turn by their share of the polygon's turning within less than a
+/// billionth of the curve: no sampled or exported form of the curve could show it, and
+/// its end tangent would not be the one its points suggest.
+pub const MIN_PIECE_SHARE: f64 = 1e-9;
+
 /// The caller's problem, in the caller's order.
 struct Input {
     start: Point,
     end: Point,
     theta_first: f64,
-    left: bool,
+    turn: Turn,
     alpha: [f64; 2],
     theta: [f64; 2],
     theta_e: f64,
@@ -66,8 +76,8 @@ impl CompoundCurve {
         alpha1: f64,
         ratio: f64,
     ) -> Result<Self> {
-        finite("alpha0", alpha0)?;
-        finite("alpha1", alpha1)?;
+        check_alpha("alpha0", alpha0)?;
+        check_alpha("alpha1", alpha1)?;
         finite("ratio", ratio)?;
         if !(ratio > 0.0 && ratio < 1.0) {
             return Err(Error::OutOfRange {
@@ -82,7 +92,7 @@ impl CompoundCurve {
             start: points[0],
             end: points[2],
             theta_first: tri.theta_first,
-            left: tri.left,
+            turn: tri.turn,
             alpha: [alpha0, alpha1],
             theta: [theta0, tri.turning - theta0],
             theta_e: tri.theta_e,
@@ -93,8 +103,8 @@ impl CompoundCurve {
     /// to P1 − P0, ends at P3 tangent to P3 − P2, and its joint's tangent is parallel to
     /// P2 − P1 (seed 002). The polygon must turn one way only.
     pub fn from_four_points(points: [Point; 4], alpha0: f64, alpha1: f64) -> Result<Self> {
-        finite("alpha0", alpha0)?;
-        finite("alpha1", alpha1)?;
+        check_alpha("alpha0", alpha0)?;
+        check_alpha("alpha1", alpha1)?;
         const NAMES: [[&str; 2]; 4] = [
             ["P0.x", "P0.y"],
             ["P1.x", "P1.y"],
@@ -118,6 +128,17 @@ impl CompoundCurve {
             points[2] - points[1],
             points[3] - points[2],
         ];
+        let chord = points[3] - points[0];
+        if !legs.iter().chain([&chord]).all(|v| v.x.hypot(v.y).is_finite()) {
+            return Err(Error::OutOfRange {
+                name: "control points",
+                value: f64::INFINITY,
+                expected: "coordinates whose differences do not overflow",
+            });
+        }
+        // Angles only: legs and chord scaled (exactly) to magnitudes near 1.
+        let [l0, l1, l2, chord] = normalized([legs[0], legs[1], legs[2], chord]);
+        let legs = [l0, l1, l2];
         let turn = |a: Vec2, b: Vec2| a.cross(b).atan2(a.dot(b));
         let (t0, t1) = (turn(legs[0], legs[1]), turn(legs[1], legs[2]));
         let pi = std::f64::consts::PI;
@@ -127,16 +148,15 @@ impl CompoundCurve {
         {
             return Err(Error::CollinearPoints);
         }
-        let side = |t: f64| if t > 0.0 { "left" } else { "right" };
-        if (t0 > 0.0) != (t1 > 0.0) {
+        let side = |t: f64| if t > 0.0 { Turn::Left } else { Turn::Right };
+        let direction = side(t0);
+        if direction != side(t1) {
             return Err(Error::InflectedPolygon {
-                first: side(t0),
+                first: direction,
                 second: side(t1),
             });
         }
-        let left = t0 > 0.0;
-        let sign = if left { 1.0 } else { -1.0 };
-        let chord = points[3] - points[0];
+        let sign = direction.sign();
         let theta_e = (sign * turn(legs[0], chord)).rem_euclid(std::f64::consts::TAU);
         let turning = t0.abs() + t1.abs();
         if !(theta_e > 0.0 && theta_e < turning) {
@@ -149,7 +169,7 @@ impl CompoundCurve {
             start: points[0],
             end: points[3],
             theta_first: legs[0].atan2(),
-            left,
+            turn: direction,
             alpha: [alpha0, alpha1],
             theta: [t0.abs(), t1.abs()],
             theta_e,
@@ -196,46 +216,47 @@ impl CompoundCurve {
         let chord = parts[0].chord + parts[1].chord;
         let chord = if reversed { -chord } else { chord };
         // The standard form turns left along increasing θ; traversed backwards it turns right.
-        let mirrored = input.left == reversed;
+        let mirrored = (input.turn == Turn::Left) == reversed;
         let c = input.end - input.start;
-        let c = crate::numeric::Complex::new(c.x, if mirrored { -c.y } else { c.y });
-        let rot = c.div(chord);
-        let mut origin = input.start;
-        let mut theta_first = input.theta_first;
-        let turn_sign = if input.left { 1.0 } else { -1.0 };
+        let c = Complex::new(c.x, if mirrored { -c.y } else { c.y });
+        let mut placement = Placement {
+            origin: input.start,
+            rot: c.div(chord),
+            mirrored,
+            turn: input.turn,
+            theta_first: input.theta_first,
+        };
         let pieces = [0, 1].map(|i| {
             let (k, forward) = order[i];
             let p = parts[k];
-            let (first, last, piece_chord): (Station, Station, _) = if forward {
-                (p.start, p.end, p.chord)
+            let (ends, piece_chord) = if forward {
+                ([p.start, p.end], p.chord)
             } else {
-                (p.end, p.start, -p.chord)
+                ([p.end, p.start], -p.chord)
             };
-            let seg = Segment {
-                alpha: input.alpha[i],
-                form: p.form,
-                first,
-                last,
-                chord: piece_chord,
-                origin,
-                rot,
-                scale: rot.norm(),
-                mirrored,
-                left: input.left,
-                theta_first,
-                turning: input.theta[i],
-            };
-            origin = seg.caller_point(piece_chord);
-            theta_first += turn_sign * input.theta[i];
+            let seg = Segment::new(input.alpha[i], p.form, ends, piece_chord, placement);
+            placement.origin = seg.caller_point(piece_chord);
+            placement.theta_first += input.turn.sign() * input.theta[i];
             seg
         });
+        for piece in &pieces {
+            piece.check()?;
+        }
+        // A piece too short to draw in floating point is a hook that no sample shows: its
+        // turning would happen below the rounding of the curve's own coordinates.
+        let total = pieces[0].length() + pieces[1].length();
+        for (i, piece) in pieces.iter().enumerate() {
+            let share = piece.length() / total;
+            if share < MIN_PIECE_SHARE {
+                return Err(Error::NotDrawable(NotDrawable::PieceTooShort {
+                    piece: i,
+                    alpha: piece.alpha(),
+                    share,
+                    turning: piece.turning_angle(),
+                }));
+            }
+        }
         Ok(CompoundCurve { pieces })
-    }
-
-    /// The two pieces in the caller's order: slope α0 from the first control point to the
-    /// joint, slope α1 from the joint to the last control point.
-    pub fn pieces(&self) -> &[Segment; 2] {
-        &self.pieces
     }
 
     /// The slopes [α0, α1].
@@ -248,34 +269,19 @@ impl CompoundCurve {
         self.pieces[0].lambda()
     }
 
-    /// Total arc length.
-    pub fn arc_length(&self) -> f64 {
-        self.pieces[0].arc_length() + self.pieces[1].arc_length()
-    }
-
     /// Arc length from the first control point to the joint.
     pub fn joint_s(&self) -> f64 {
-        self.pieces[0].arc_length()
+        self.pieces[0].length()
     }
 
     /// The joint.
     pub fn joint(&self) -> Point {
-        self.pieces[1].origin
-    }
-
-    /// Signed curvature at the first control point (positive for a left turn).
-    pub fn curvature_start(&self) -> f64 {
-        self.pieces[0].curvature_start()
+        self.pieces[1].first_point()
     }
 
     /// Signed curvature at the joint.
     pub fn curvature_joint(&self) -> f64 {
-        self.pieces[1].curvature_start()
-    }
-
-    /// Signed curvature at the last control point.
-    pub fn curvature_end(&self) -> f64 {
-        self.pieces[1].curvature_end()
+        self.pieces[1].end_curvatures().0
     }
 
     /// The logarithmic curvature graph of each piece (`None` for a circular arc); the two
@@ -283,109 +289,166 @@ impl CompoundCurve {
     pub fn lcg(&self) -> [Option<LcgLine>; 2] {
         [self.pieces[0].lcg(), self.pieces[1].lcg()]
     }
+}
 
-    /// The piece holding arc length `s` and the arc length within it.
-    fn locate(&self, s: f64) -> Result<(&Segment, f64)> {
-        finite("s", s)?;
+impl Curve for CompoundCurve {
+    /// The two pieces in the caller's order: slope α0 from the first control point to the
+    /// joint, slope α1 from the joint to the last control point.
+    fn pieces(&self) -> &[Segment] {
+        &self.pieces
+    }
+}
+
+// kurbo's traits, with t ∈ [0, 1] proportional to arc length over the whole curve, t
+// clamped to [0, 1] and NaN giving NaN, and kurbo's curvature sign (see `segment/kurbo.rs`).
+
+impl CompoundCurve {
+    /// The piece and its local arc length at parameter t, or `None` for a NaN t.
+    fn at_t(&self, t: f64) -> Option<(&Segment, f64)> {
+        if t.is_nan() {
+            return None;
+        }
+        locate(&self.pieces, t.clamp(0.0, 1.0) * self.arc_length()).ok()
+    }
+}
+
+impl ParamCurve for CompoundCurve {
+    fn eval(&self, t: f64) -> Point {
+        self.at_t(t)
+            .and_then(|(piece, s)| piece.station_at_s(s).ok().map(|st| piece.point_of(&st)))
+            .unwrap_or(Point::new(f64::NAN, f64::NAN))
+    }
+
+    /// The part between parameters `range.start` and `range.end` (reversed when
+    /// `range.start > range.end`), as a compound curve whose pieces are the parts of the two
+    /// pieces in the range. When the range lies within one piece, the other is an empty
+    /// (zero-length) cut of that same piece at the range's end next to the joint, so the
+    /// chain stays connected.
+    fn subsegment(&self, range: Range<f64>) -> CompoundCurve {
         let len = self.arc_length();
-        let slack = 1e-12 * len;
-        if !(s >= -slack && s <= len + slack) {
-            return Err(Error::OutOfRange {
-                name: "s",
-                value: s,
-                expected: "an arc length between 0 and arc_length()",
-            });
-        }
         let joint = self.joint_s();
-        if s <= joint {
-            Ok((&self.pieces[0], s))
+        let l1 = self.pieces[1].length();
+        let s = |t: f64| t.clamp(0.0, 1.0) * len;
+        let (a, b) = (s(range.start), s(range.end));
+        let (lo, hi) = (a.min(b), a.max(b));
+        // Forward parts as (piece, from, to) in the piece's own arc length.
+        let in0 = |x: f64| x.min(joint);
+        let in1 = |x: f64| crate::numeric::clamp(x - joint, 0.0, l1);
+        let parts = if hi <= joint {
+            [(0, lo, hi), (0, hi, hi)]
+        } else if lo >= joint {
+            [(1, in1(lo), in1(lo)), (1, in1(lo), in1(hi))]
         } else {
-            Ok((&self.pieces[1], self.second_piece_s(s)))
+            [(0, in0(lo), joint), (1, 0.0, in1(hi))]
+        };
+        let cut = |(i, p, q): (usize, f64, f64), travel: Travel| {
+            let piece: &Segment = &self.pieces[i];
+            match travel {
+                Travel::Forward => piece.between(p, q, travel),
+                Travel::Backward => piece.between(q, p, travel),
+            }
+        };
+        let pieces = match Travel::of(a, b) {
+            Travel::Forward => [
+                cut(parts[0], Travel::Forward),
+                cut(parts[1], Travel::Forward),
+            ],
+            Travel::Backward => [
+                cut(parts[1], Travel::Backward),
+                cut(parts[0], Travel::Backward),
+            ],
+        };
+        CompoundCurve { pieces }
+    }
+
+    fn start(&self) -> Point {
+        self.start_point()
+    }
+
+    fn end(&self) -> Point {
+        self.end_point()
+    }
+}
+
+impl ParamCurveArclen for CompoundCurve {
+    /// Exact: the arc length is known in closed form.
+    fn arclen(&self, _accuracy: f64) -> f64 {
+        self.arc_length()
+    }
+
+    /// Exact: t = arclen / arc_length, clamped to [0, 1].
+    fn inv_arclen(&self, arclen: f64, _accuracy: f64) -> f64 {
+        let len = self.arc_length();
+        if len > 0.0 {
+            (arclen / len).clamp(0.0, 1.0)
+        } else {
+            0.0
         }
     }
+}
 
-    /// Arc length within the second piece, measured from whichever of its ends is nearer:
-    /// when that piece is much shorter than the first, `s − joint_s` would lose the digits
-    /// of its position to the rounding of the whole length.
-    fn second_piece_s(&self, s: f64) -> f64 {
-        let (joint, total, len) = (
-            self.joint_s(),
-            self.arc_length(),
-            self.pieces[1].arc_length(),
-        );
-        let from_end = total - s;
-        if from_end < 0.5 * len {
-            (len - from_end).clamp(0.0, len)
-        } else {
-            (s - joint).clamp(0.0, len)
+/// The `order`-th derivative of a [`CompoundCurve`] with respect to t = s / arc_length
+/// (exact for orders 1 to 6, central differences above; see [`SegmentDerivative`]).
+///
+/// [`SegmentDerivative`]: crate::SegmentDerivative
+#[derive(Clone, Debug)]
+pub struct CompoundDerivative {
+    curve: CompoundCurve,
+    order: u32,
+}
+
+impl ParamCurveDeriv for CompoundCurve {
+    type DerivResult = CompoundDerivative;
+
+    fn deriv(&self) -> CompoundDerivative {
+        CompoundDerivative {
+            curve: self.clone(),
+            order: 1,
         }
     }
+}
 
-    /// Point at arc length `s` from the first control point.
-    pub fn point_at_s(&self, s: f64) -> Result<Point> {
-        let (piece, s) = self.locate(s)?;
-        piece.point_at_s(s)
+impl ParamCurveDeriv for CompoundDerivative {
+    type DerivResult = CompoundDerivative;
+
+    fn deriv(&self) -> CompoundDerivative {
+        CompoundDerivative {
+            curve: self.curve.clone(),
+            order: self.order.saturating_add(1),
+        }
+    }
+}
+
+impl ParamCurve for CompoundDerivative {
+    fn eval(&self, t: f64) -> Point {
+        if self.order > 6 {
+            let lower = CompoundDerivative {
+                curve: self.curve.clone(),
+                order: self.order - 1,
+            };
+            return crate::segment::central_difference(t, |t| lower.eval(t));
+        }
+        let speed = self.curve.arc_length();
+        self.curve
+            .at_t(t)
+            .and_then(|(piece, s)| piece.derivative_at_s(s, self.order, speed))
+            .map_or(Point::new(f64::NAN, f64::NAN), Vec2::to_point)
     }
 
-    /// Unit tangent at arc length `s`.
-    pub fn tangent_at_s(&self, s: f64) -> Result<Vec2> {
-        let (piece, s) = self.locate(s)?;
-        piece.tangent_at_s(s)
+    fn subsegment(&self, range: Range<f64>) -> CompoundDerivative {
+        CompoundDerivative {
+            curve: self.curve.subsegment(range),
+            order: self.order,
+        }
     }
+}
 
-    /// Signed curvature at arc length `s`.
-    pub fn curvature_at_s(&self, s: f64) -> Result<f64> {
-        let (piece, s) = self.locate(s)?;
-        piece.curvature_at_s(s)
-    }
-
-    /// Tangent direction (radians, continuous from the first point) at arc length `s`.
-    pub fn theta_at_s(&self, s: f64) -> Result<f64> {
-        let (piece, s) = self.locate(s)?;
-        piece.theta_at_s(s)
-    }
-
-    /// `n ≥ 2` samples equally spaced in arc length over the whole curve, ends included.
-    pub fn sample_by_arc_length(&self, n: usize) -> Result<Vec<Sample>> {
-        check_count(n)?;
-        let (len, joint) = (self.arc_length(), self.joint_s());
-        let step = len / (n - 1) as f64;
-        let at = |i: usize| if i == n - 1 { len } else { i as f64 * step };
-        let split = (0..n).take_while(|&i| at(i) <= joint).count();
-        let first: Vec<f64> = (0..split).map(at).collect();
-        let second: Vec<f64> = (split..n).map(|i| self.second_piece_s(at(i))).collect();
-        let mut out = self.pieces[0].samples_at_arc_lengths(&first)?;
-        out.extend(
-            self.pieces[1]
-                .samples_at_arc_lengths(&second)?
-                .into_iter()
-                .map(|s| Sample {
-                    s: s.s + joint,
-                    ..s
-                }),
-        );
-        Ok(out)
-    }
-
-    /// Samples within `tolerance` of the curve (see [`Segment::sample_adaptive`]); the joint
-    /// is always a sample.
-    pub fn sample_adaptive(&self, tolerance: f64) -> Result<Vec<Sample>> {
-        let joint = self.joint_s();
-        let mut out = self.pieces[0].sample_adaptive(tolerance)?;
-        let second = self.pieces[1].sample_adaptive(tolerance)?;
-        out.extend(second.into_iter().skip(1).map(|s| Sample {
-            s: s.s + joint,
-            ..s
-        }));
-        Ok(out)
-    }
-
-    /// `n ≥ 2` points of the evolute at the arc-length samples.
-    pub fn evolute(&self, n: usize) -> Result<Vec<Point>> {
-        Ok(self
-            .sample_by_arc_length(n)?
-            .iter()
-            .map(Sample::center_of_curvature)
-            .collect())
+impl ParamCurveCurvature for CompoundCurve {
+    /// Exact curvature with kurbo's sign: negative for a left turn (the opposite of
+    /// [`Curve::curvature_at_s`]). NaN for a NaN t.
+    fn curvature(&self, t: f64) -> f64 {
+        self.at_t(t)
+            .and_then(|(piece, s)| piece.station_at_s(s).ok().map(|st| -piece.kappa_of(&st)))
+            .unwrap_or(f64::NAN)
     }
 }

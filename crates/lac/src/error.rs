@@ -2,6 +2,8 @@
 
 use std::fmt;
 
+use crate::turn::Turn;
+
 /// Result alias used throughout the crate.
 pub type Result<T> = std::result::Result<T, Error>;
 
@@ -16,7 +18,7 @@ pub type Result<T> = std::result::Result<T, Error>;
 ///     [Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(2.0, 0.0)], -1.0,
 /// ).unwrap_err();
 /// assert!(matches!(err, Error::CollinearPoints));
-/// assert_eq!(err.kind(), "collinear_points");
+/// assert_eq!(err.kind(), lac::ErrorKind::CollinearPoints);
 /// ```
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
@@ -47,17 +49,19 @@ pub enum Error {
     /// The control polygon turns left at one vertex and right at another: a log-aesthetic
     /// curve (or compound curve) has monotone curvature of one sign and no inflection.
     #[error(
-        "the control polygon turns {first} at P1 but {second} at P2; a log-aesthetic curve \
-         cannot have an inflection: move P1 or P2 so that the polygon turns one way only"
+        "the control polygon turns {} at P1 but {} at P2; a log-aesthetic curve \
+         cannot have an inflection: move P1 or P2 so that the polygon turns one way only",
+        word(*first),
+        word(*second)
     )]
     InflectedPolygon {
-        /// Turning direction at the first inner vertex ("left" or "right").
-        first: &'static str,
+        /// Turning direction at the first inner vertex.
+        first: Turn,
         /// Turning direction at the second inner vertex.
-        second: &'static str,
+        second: Turn,
     },
     /// A parameter is outside the range the operation accepts.
-    #[error("{name} = {value} is out of range: {expected}")]
+    #[error("{name} = {} is out of range: {expected}", Num(*value))]
     OutOfRange {
         /// The parameter's name.
         name: &'static str,
@@ -88,20 +92,82 @@ pub enum Error {
         /// The smallest deviation reached for the piece that failed, relative.
         reached: f64,
     },
+    /// A computation that should succeed for a solved curve did not (an overflow, or a
+    /// bound of the family reached through rounding). This is a defect: please report the
+    /// input that caused it.
+    #[error("the computation of {what} failed numerically; please report this input")]
+    NumericalFailure {
+        /// What was being computed.
+        what: &'static str,
+    },
+}
+
+/// The kind of an [`Error`], without its details: what a program branches on. With the
+/// `serde` feature it serialises as a snake_case name (`"not_drawable"`, …).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "snake_case")
+)]
+#[non_exhaustive]
+pub enum ErrorKind {
+    /// [`Error::NonFinite`].
+    NonFinite,
+    /// [`Error::CoincidentPoints`].
+    CoincidentPoints,
+    /// [`Error::CollinearPoints`].
+    CollinearPoints,
+    /// [`Error::InflectedPolygon`].
+    InflectedPolygon,
+    /// [`Error::OutOfRange`].
+    OutOfRange,
+    /// [`Error::NotDrawable`].
+    NotDrawable,
+    /// [`Error::FitFailed`].
+    FitFailed,
+    /// [`Error::ToleranceNotMet`].
+    ToleranceNotMet,
+    /// [`Error::NumericalFailure`].
+    NumericalFailure,
+}
+
+/// A number for a message: plain where that is short, in exponent form otherwise (a plain
+/// 1e300 has 301 digits).
+struct Num(f64);
+
+impl fmt::Display for Num {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let a = self.0.abs();
+        if a == 0.0 || (1e-5..1e15).contains(&a) || !a.is_finite() {
+            write!(f, "{}", self.0)
+        } else {
+            write!(f, "{:e}", self.0)
+        }
+    }
+}
+
+/// A turning direction in words, for messages.
+fn word(turn: Turn) -> &'static str {
+    match turn {
+        Turn::Left => "left",
+        Turn::Right => "right",
+    }
 }
 
 impl Error {
-    /// A stable snake_case name for the error, for machine-readable output.
-    pub fn kind(&self) -> &'static str {
+    /// The kind of error, for programs that branch on it.
+    pub fn kind(&self) -> ErrorKind {
         match self {
-            Error::NonFinite { .. } => "non_finite",
-            Error::CoincidentPoints { .. } => "coincident_points",
-            Error::CollinearPoints => "collinear_points",
-            Error::InflectedPolygon { .. } => "inflected_polygon",
-            Error::OutOfRange { .. } => "out_of_range",
-            Error::NotDrawable(_) => "not_drawable",
-            Error::FitFailed => "fit_failed",
-            Error::ToleranceNotMet { .. } => "tolerance_not_met",
+            Error::NonFinite { .. } => ErrorKind::NonFinite,
+            Error::CoincidentPoints { .. } => ErrorKind::CoincidentPoints,
+            Error::CollinearPoints => ErrorKind::CollinearPoints,
+            Error::InflectedPolygon { .. } => ErrorKind::InflectedPolygon,
+            Error::OutOfRange { .. } => ErrorKind::OutOfRange,
+            Error::NotDrawable(_) => ErrorKind::NotDrawable,
+            Error::FitFailed => ErrorKind::FitFailed,
+            Error::ToleranceNotMet { .. } => ErrorKind::ToleranceNotMet,
+            Error::NumericalFailure { .. } => ErrorKind::NumericalFailure,
         }
     }
 }
@@ -154,6 +220,19 @@ pub enum NotDrawable {
         theta_e: f64,
         /// The largest angle reached within that ratio, radians.
         reached: f64,
+    },
+    /// One piece of a compound curve would be too short to draw: shorter than
+    /// [`MIN_PIECE_SHARE`](crate::MIN_PIECE_SHARE) of the curve, yet turning by its share of
+    /// the polygon's turning.
+    PieceTooShort {
+        /// Which piece, in the caller's order (0: slope α0, from the first point).
+        piece: usize,
+        /// Its slope.
+        alpha: f64,
+        /// Its arc length as a share of the whole curve's.
+        share: f64,
+        /// Its turning, radians.
+        turning: f64,
     },
     /// The torsion parameter Ω is too large for these four points, α, β and type: a
     /// segment exists for Ω up to `omega_max` (seed 003 §4).
@@ -225,6 +304,20 @@ impl fmt::Display for NotDrawable {
                  control polygon more symmetric",
                 reached.to_degrees(),
                 theta_e.to_degrees()
+            ),
+            NotDrawable::PieceTooShort {
+                piece,
+                alpha,
+                share,
+                turning,
+            } => write!(
+                f,
+                "the alpha{piece} = {alpha} piece would be only {share:.1e} of the curve's length \
+                 while turning {:.2} deg: the slopes need an extreme curvature ratio to meet \
+                 these points, and no drawing could show that piece; make the control polygon \
+                 more symmetric, change the turning ratio, or use slopes closer to the range \
+                 0..1",
+                turning.to_degrees(),
             ),
             NotDrawable::TorsionTooLarge { omega, omega_max } => write!(
                 f,

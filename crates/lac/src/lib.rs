@@ -3,13 +3,15 @@
 //! A log-aesthetic curve (LAC) has a straight logarithmic curvature graph:
 //! `log(ρ ds/dρ) = α log ρ + c`, i.e. `dρ/ds = Λ ρ^(1−α)`. The clothoid (α = −1), Nielsen
 //! spiral (α = 0), logarithmic spiral (α = 1), circle involute (α = 2) and circle (Λ = 0)
-//! are members. This crate implements the planar family of Yoshida & Saito, *Interactive
-//! Aesthetic Curve Segments* (2006):
+//! are members. This crate implements the systems of the papers by Yoshida, Saito, Miura and
+//! colleagues ("seed 000" … "seed 004" in the docs; see the README's references):
 //!
 //! * [`StandardForm`]: ρ(s), θ(s), s(θ), ρ(θ), bounds, points, and the
 //!   [`Classification`] of seed 000 Table 2;
-//! * [`Segment`]: a segment drawn from three control points and α, with evaluation,
-//!   sampling (by arc length, by tangent angle, adaptively) and the evolute;
+//! * [`Curve`]: what every planar curve offers, written once — evaluation by arc length,
+//!   sampling (equally, adaptively), the evolute, the curvature plot and the quasi-aesthetic
+//!   Bézier replacements — for any chain of log-aesthetic segments;
+//! * [`Segment`]: a segment drawn from three control points and α (seed 000 §4);
 //! * [`CompoundCurve`]: two pieces of slopes α0 and α1 joined with G3 continuity, from
 //!   three control points and a turning ratio (seed 004) or from four control points
 //!   (seed 002), with the logarithmic curvature graph of each piece ([`LcgLine`]);
@@ -17,16 +19,33 @@
 //! * [`RationalCubic`]: rational cubic Bézier curves, with a curvature-monotonicity test
 //!   whose verdict is a proof ([`RationalCubic::curvature_monotonicity`], seed 001 §5);
 //! * [`QuasiCurve`]: quasi-aesthetic curves (seed 001 §4), one rational cubic fitted as in
-//!   the seed ([`Segment::to_rational_cubic`]) or G2 chains of rational or plain cubics
-//!   within a tolerance ([`Segment::to_rational_cubics`], [`Segment::to_cubics`]);
+//!   the seed or G2 chains of rational or plain cubics within a [`Tolerance`];
 //! * [`curvature_plot`] and [`log_curvature_graph`]: the curvature plot and logarithmic
-//!   curvature graph of any chain of Bézier pieces, with a least-squares α ([`LcgFit`]).
+//!   curvature graph of any chain of Bézier pieces, with a least-squares α ([`LcgFit`]);
+//! * [`SpaceSegment`] and [`SpaceForm`]: log-aesthetic space curves (seed 003), whose
+//!   curvature and torsion graphs are both straight.
 //!
-//! The crate does no I/O. Signed curvature is positive for left turns.
+//! # Conventions
+//!
+//! * Signed curvature is positive for left turns ([`Turn`]), in the caller's coordinates,
+//!   traversed from the first control point. Inside kurbo's `ParamCurveCurvature`, which every
+//!   curve type implements, kurbo's sign is used instead (negative for a left turn).
+//! * kurbo's traits take t ∈ [0, 1] proportional to arc length for log-aesthetic curves, and
+//!   clamp it there; a NaN t gives NaN. They cannot report errors; everything else returns a
+//!   [`Result`] with an [`Error`] that says what was wrong and what would fix it.
+//! * **Accuracy**: a parameter named `accuracy` is an absolute distance in the caller's units
+//!   (as in kurbo); a [`Tolerance`] is either [`Tolerance::Absolute`] (caller's units) or
+//!   [`Tolerance::Relative`] (a fraction of the curve's arc length); reported deviations say
+//!   which they are in their names (`max_deviation` in the caller's units, `rms` and `max`
+//!   relative). Exact quantities (arc length, curvature, points) carry no tolerance: they are
+//!   computed to within a few ulps of their condition (see the README's accuracy figures).
+//! * With the `serde` feature, the types whose names a format needs (error kinds, turning
+//!   directions, monotonicity verdicts, tolerances, space-curve types) serialise with stable
+//!   snake_case names; the crate itself does no I/O.
 //!
 //! ```
 //! use kurbo::Point;
-//! use lac::Segment;
+//! use lac::{Curve, Segment};
 //!
 //! let seg = Segment::from_control_points(
 //!     [Point::new(-1.0, 0.0), Point::new(-0.2, 0.8), Point::new(1.0, 0.0)],
@@ -41,42 +60,46 @@
 
 mod analysis;
 mod bezier;
+mod chord_angle;
 mod compound;
+mod curve;
 mod error;
 mod gauss;
-mod integrate;
-mod kurbo_impl;
 mod lcg;
 mod monotone;
 mod numeric;
 mod quasi;
 pub mod region;
-mod sampling;
 mod segment;
-mod solve;
 mod space;
 mod standard_form;
+mod tolerance;
+mod turn;
+mod vec3;
 
 pub use analysis::{
     curvature_plot, log_curvature_graph, CurvaturePoint, LcgFit, LogCurvatureGraph,
 };
 pub use bezier::RationalCubic;
-pub use compound::CompoundCurve;
-pub use error::{Error, NotDrawable, Result};
-pub use kurbo_impl::SegmentDerivative;
+pub use compound::{CompoundCurve, CompoundDerivative, MIN_PIECE_SHARE};
+pub use curve::Curve;
+pub use error::{Error, ErrorKind, NotDrawable, Result};
 pub use lcg::LcgLine;
 pub use monotone::{Monotonicity, MonotonicityReport};
 pub use quasi::{QuasiCurve, QuasiPiece};
-pub use sampling::Sample;
-pub use segment::Segment;
+pub use segment::{Sample, Segment, SegmentDerivative, MAX_ABS_ALPHA};
 pub use space::{
-    BoundBy, EndBehaviour, RadiusCell, RadiusLimit, RatioLimit, SpaceClassification, SpaceEnd,
-    TurningCell,
+    BoundBy, EndBehaviour, RadiusCell, RadiusLimit, RatioLimit, SeedRow, SpaceClassification,
+    SpaceEnd, TurningCell,
 };
 pub use space::{
-    Frame, GraphPoint, Similarity3, SpaceForm, SpaceSegment, TorsionType, PLANAR_TOLERANCE,
+    Frame, GraphPoint, Similarity3, SpaceForm, SpaceFormParams, SpaceSegment, SpaceShape,
+    TorsionType, PLANAR_TOLERANCE,
 };
 pub use standard_form::{Classification, InfiniteRadiusEnd, StandardForm, ZeroRadiusEnd};
+pub use tolerance::{Tolerance, MIN_RELATIVE_TOLERANCE};
+pub use turn::Turn;
+pub use vec3::Vec3;
 
 /// The README's Rust examples, compiled and run as doc tests.
 #[cfg(doctest)]

@@ -39,11 +39,13 @@ use kurbo::{Point, Vec2};
 
 use crate::bezier::{power_basis, Hom, RationalCubic};
 use crate::compound::CompoundCurve;
+use crate::curve::Curve;
 use crate::error::{Error, Result};
 use crate::gauss::GAUSS_16;
 use crate::monotone::{Monotonicity, MonotonicityReport};
-use crate::sampling::Sample;
+use crate::segment::Sample;
 use crate::segment::Segment;
+use crate::turn::Turn;
 
 /// One piece of a [`QuasiCurve`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -149,13 +151,13 @@ pub(crate) trait TurningCurve {
     fn at_turning(&self, phi: &[f64]) -> Result<Vec<Sample>>;
 }
 
-impl TurningCurve for Segment {
+impl<C: Curve + ?Sized> TurningCurve for C {
     fn total_turning(&self) -> f64 {
-        self.turning
+        self.pieces().iter().map(Segment::turning_angle).sum()
     }
 
     fn turns_left(&self) -> bool {
-        self.left
+        self.pieces()[0].turn() == Turn::Left
     }
 
     fn length(&self) -> f64 {
@@ -167,45 +169,26 @@ impl TurningCurve for Segment {
     }
 
     fn at_turning(&self, phi: &[f64]) -> Result<Vec<Sample>> {
-        if phi.is_empty() {
-            return Ok(Vec::new());
+        let pieces = self.pieces();
+        let mut out = Vec::with_capacity(phi.len());
+        let (mut next, mut turned, mut start) = (0, 0.0, 0.0);
+        for (i, piece) in pieces.iter().enumerate() {
+            let turning = piece.turning_angle();
+            let last = i + 1 == pieces.len();
+            let mut stations = Vec::new();
+            while next < phi.len() && (last || phi[next] <= turned + turning) {
+                stations.push(piece.station_at_turning(phi[next] - turned)?);
+                next += 1;
+            }
+            if !stations.is_empty() {
+                out.extend(piece.samples_at(&stations).into_iter().map(|s| Sample {
+                    s: s.s + start,
+                    ..s
+                }));
+            }
+            turned += turning;
+            start += piece.length();
         }
-        let sign = if self.left { 1.0 } else { -1.0 };
-        let stations = phi
-            .iter()
-            .map(|&f| self.station_at_theta(self.theta_first + sign * f.clamp(0.0, self.turning)))
-            .collect::<Result<Vec<_>>>()?;
-        Ok(self.samples_at(&stations))
-    }
-}
-
-impl TurningCurve for CompoundCurve {
-    fn total_turning(&self) -> f64 {
-        self.pieces()[0].turning + self.pieces()[1].turning
-    }
-
-    fn turns_left(&self) -> bool {
-        self.pieces()[0].left
-    }
-
-    fn length(&self) -> f64 {
-        self.arc_length()
-    }
-
-    fn end_curvatures(&self) -> (f64, f64) {
-        (self.curvature_start(), self.curvature_end())
-    }
-
-    fn at_turning(&self, phi: &[f64]) -> Result<Vec<Sample>> {
-        let [first, second] = self.pieces();
-        let split = phi.partition_point(|&f| f <= first.turning);
-        let mut out = first.at_turning(&phi[..split])?;
-        let rest: Vec<f64> = phi[split..].iter().map(|f| f - first.turning).collect();
-        let joint = self.joint_s();
-        out.extend(second.at_turning(&rest)?.into_iter().map(|s| Sample {
-            s: s.s + joint,
-            ..s
-        }));
         Ok(out)
     }
 }

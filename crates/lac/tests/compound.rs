@@ -1,6 +1,7 @@
 //! Claims about compound-rhythm curves (SPEC §4, seeds 004 and 002).
 
 use kurbo::{Point, Vec2};
+use lac::Curve;
 use lac::{CompoundCurve, Error, NotDrawable, Segment};
 use proptest::prelude::*;
 
@@ -23,7 +24,9 @@ fn the_joint_is_g3() {
         (1.5, 3.0),
     ] {
         let c = CompoundCurve::from_three_points(three(), a0, a1, 0.4).unwrap();
-        let [p, q] = c.pieces();
+        let [p, q] = c.pieces() else {
+            panic!("a compound curve has two pieces")
+        };
         let j = c.joint_s();
         assert!((p.point_at_s(j).unwrap() - q.point_at_s(0.0).unwrap()).hypot() < 1e-14);
         assert!((p.theta_at_s(j).unwrap() - q.theta_at_s(0.0).unwrap()).abs() < 1e-14);
@@ -181,8 +184,8 @@ fn errors_name_the_problem() {
     assert!(matches!(
         CompoundCurve::from_four_points(zig, 0.5, 0.5),
         Err(Error::InflectedPolygon {
-            first: "left",
-            second: "right"
+            first: lac::Turn::Left,
+            second: lac::Turn::Right
         })
     ));
     // Arc lengths outside the curve are refused, not clamped to an end.

@@ -3,6 +3,7 @@
 //! the control points, whose curvature is monotone, and which contains no NaN.
 
 use kurbo::{Point, Vec2};
+use lac::Curve;
 use lac::Segment;
 use proptest::prelude::*;
 

@@ -4,6 +4,7 @@
 //! `Segment::point_at_theta`), and the distance between the two is the deviation d(φ).
 
 use kurbo::Point;
+use lac::Curve;
 use lac::{CompoundCurve, Error, Monotonicity, QuasiCurve, RationalCubic, Segment};
 
 fn seg(p: [(f64, f64); 3], alpha: f64) -> Segment {

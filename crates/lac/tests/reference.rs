@@ -5,6 +5,7 @@
 //! curvature and arc length within 1e-12 relative.
 
 use kurbo::Point;
+use lac::Curve;
 use lac::{Error, NotDrawable, Segment, StandardForm};
 use serde::Deserialize;
 

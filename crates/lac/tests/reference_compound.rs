@@ -5,6 +5,7 @@
 //! and arc lengths (total and to the joint) within 1e-12 relative.
 
 use kurbo::Point;
+use lac::Curve;
 use lac::{CompoundCurve, Error};
 use serde::Deserialize;
 

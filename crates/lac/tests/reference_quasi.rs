@@ -4,6 +4,7 @@
 //! optimised at 40 digits.
 
 use kurbo::Point;
+use lac::Curve;
 use lac::{Monotonicity, RationalCubic, Segment};
 use serde::Deserialize;
 

@@ -20,6 +20,7 @@ mod view;
 use std::fmt::Write as _;
 
 use kurbo::{Point, Rect};
+use lac::Curve;
 use lac::{Sample, Segment};
 
 use crate::failure::Failure;

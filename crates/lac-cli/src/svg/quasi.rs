@@ -6,6 +6,7 @@
 use std::fmt::Write as _;
 
 use kurbo::{Point, Rect};
+use lac::Curve;
 use lac::{QuasiCurve, RationalCubic, Sample, Segment};
 
 use super::comb::{max_curvature, Comb};
@@ -330,7 +331,7 @@ fn count_of(count: usize, cubic: bool) -> String {
 /// max = … of the arc length …", "curvature increasing, proven", and on a line of its own
 /// the colour key.
 fn caption(pieces: &[Segment], quasi: &QuasiCurve, cubic: bool) -> Block {
-    let length: f64 = pieces.iter().map(Segment::arc_length).sum();
+    let length: f64 = pieces.iter().map(Curve::arc_length).sum();
     let mut facts: Vec<Entry> = super::slopes(pieces)
         .into_iter()
         .map(|text| Entry::plain(CURVE, text))

@@ -15,9 +15,9 @@
 use kurbo::{Point, Vec2};
 
 use crate::error::{Error, Result};
-use crate::integrate::integrate;
 use crate::numeric::{expm1_ratio, ln1p_ratio, Complex};
 use crate::segment::Segment;
+use crate::standard_form::integrate::integrate;
 use crate::standard_form::{StandardForm, Station};
 
 /// One sample of a segment, in the caller's frame.
@@ -49,26 +49,15 @@ impl Sample {
 const MAX_SAMPLES: usize = 10_000_000;
 
 impl Segment {
-    /// `n ≥ 2` samples equally spaced in arc length, the first at the first control point
-    /// and the last at the last.
-    pub fn sample_by_arc_length(&self, n: usize) -> Result<Vec<Sample>> {
-        check_count(n)?;
-        let len = self.arc_length();
-        let step = len / (n - 1) as f64;
-        let at: Vec<f64> = (0..n)
-            .map(|i| if i == n - 1 { len } else { i as f64 * step })
-            .collect();
-        self.samples_at_arc_lengths(&at)
-    }
-
-    /// Samples at the given ascending arc lengths (caller's units, within [0, arc_length]).
-    pub(crate) fn samples_at_arc_lengths(&self, at: &[f64]) -> Result<Vec<Sample>> {
+    /// Samples at the given ascending arc lengths within the segment (caller's units,
+    /// within [0, length]).
+    pub(crate) fn samples_at_local(&self, at: &[f64]) -> Result<Vec<Sample>> {
         if at.is_empty() {
             return Ok(Vec::new());
         }
         // Each sample is placed from the nearer end, where ρ is known exactly (see
         // `Segment::station_at_s`), in standard-form arc length.
-        let (len, k) = (self.arc_length(), self.dir() / self.scale());
+        let (len, k) = (self.length(), self.dir() / self.scale());
         let (head, tail) = (
             Anchor::new(&self.form, self.first),
             Anchor::new(&self.form, self.last),
@@ -81,10 +70,8 @@ impl Segment {
                 } else {
                     tail.advance_s(&self.form, -k * (len - s))
                 };
-                node.ok_or(Error::OutOfRange {
-                    name: "s",
-                    value: s,
-                    expected: "arc lengths between 0 and arc_length()",
+                node.ok_or(Error::NumericalFailure {
+                    what: "a sample of the segment",
                 })
             })
             .collect::<Result<_>>()?;
@@ -94,8 +81,7 @@ impl Segment {
     /// `n ≥ 2` samples equally spaced in tangent angle, ends included.
     pub fn sample_by_tangent_angle(&self, n: usize) -> Result<Vec<Sample>> {
         check_count(n)?;
-        let sign = if self.left { 1.0 } else { -1.0 };
-        let step = sign * self.turning / (n - 1) as f64;
+        let step = self.turn.sign() * self.turning / (n - 1) as f64;
         let stations: Vec<Station> = (0..n)
             .map(|i| {
                 if i == n - 1 {
@@ -108,19 +94,19 @@ impl Segment {
         Ok(self.samples_at(&stations))
     }
 
-    /// Samples such that the polyline through them stays within `tolerance` (caller's
+    /// Samples such that the polyline through them stays within `accuracy` (caller's
     /// units) of the curve. Each span is split at its point of largest deviation, where the
     /// tangent is parallel to the chord, until that deviation is within tolerance.
-    pub fn sample_adaptive(&self, tolerance: f64) -> Result<Vec<Sample>> {
-        let len = self.arc_length();
-        if !(tolerance.is_finite() && tolerance >= 1e-14 * len) {
+    pub(crate) fn adaptive_samples(&self, accuracy: f64) -> Result<Vec<Sample>> {
+        let len = self.length();
+        if !(accuracy.is_finite() && accuracy >= 1e-14 * len) {
             return Err(Error::OutOfRange {
-                name: "tolerance",
-                value: tolerance,
-                expected: "a finite tolerance of at least 1e-14 times the arc length",
+                name: "accuracy",
+                value: accuracy,
+                expected: "a finite distance of at least 1e-14 times the arc length",
             });
         }
-        let scaled = tolerance / self.scale();
+        let scaled = accuracy / self.scale();
         let mut out = vec![(self.first, Complex::ZERO)];
         let mut stack = vec![(self.last, self.chord)];
         let mut current = (self.first, Complex::ZERO);
@@ -143,16 +129,6 @@ impl Segment {
         Ok(out
             .iter()
             .map(|(st, z)| self.sample_from_station(st, *z))
-            .collect())
-    }
-
-    /// `n ≥ 2` points of the evolute (the locus of centres of curvature), at the arc-length
-    /// samples: `P + N/κ` with N the left normal.
-    pub fn evolute(&self, n: usize) -> Result<Vec<Point>> {
-        Ok(self
-            .sample_by_arc_length(n)?
-            .iter()
-            .map(Sample::center_of_curvature)
             .collect())
     }
 
@@ -181,7 +157,7 @@ impl Segment {
         while target < lo - 1e-9 {
             target += tau;
         }
-        let target = target.clamp(lo, hi);
+        let target = crate::numeric::clamp(target, lo, hi);
         let st = self.form.advance_theta(a, target - a.theta)?;
         let z = span(self, a, &st);
         let dev = (chord.conj() * z).im.abs() / chord.norm();
@@ -219,7 +195,7 @@ impl Segment {
             s: self.s_of(&node.st),
             point: self.caller_point(z),
             theta: self.theta_of(&node.st),
-            kappa: if self.left { k } else { -k },
+            kappa: self.turn.sign() * k,
         }
     }
 
@@ -283,8 +259,13 @@ impl Segment {
         }
         // The order-9 rule's error is about |order11 − order9|; order 11's is smaller by
         // about (hκ)²/600, and a difference below 1e-11·h implies hκ < 0.85.
-        if (order11 - order9).norm_max() <= 0.7e-11 * h.abs() {
+        let estimate = (order11 - order9).norm_max();
+        if estimate <= 0.7e-11 * h.abs() {
             return order11;
+        }
+        if estimate.is_nan() {
+            // Halving cannot mend an undefined estimate (it would only repeat it 4096 times).
+            return span(self, &a.st, &b.st);
         }
         let mid = match self.form.advance_s(&a.st, 0.5 * h) {
             Some(st) if depth < 12 => Node::new(&self.form, st),

@@ -20,9 +20,9 @@
 
 use std::cell::OnceCell;
 
+use super::{StandardForm, Station};
 use crate::gauss::{GAUSS_16, GAUSS_8};
 use crate::numeric::{expm1_ratio, ln1p_ratio, Complex};
-use crate::standard_form::{StandardForm, Station};
 
 /// Below this distance (radians) from ψₛ the power series is used.
 const SERIES_RADIUS: f64 = 4.0;

@@ -1,0 +1,847 @@
+//! The JSON shapes of log-aesthetic curves, defined once for every front end.
+//!
+//! *Inputs* are what a request (or one line of a `--batch`) holds: [`SegmentInput`],
+//! [`CompoundInput`], [`CurveInput`] (either of them), [`QuasiInput`], [`MonotoneInput`],
+//! [`PiecesInput`]. Each solves itself with the core library. *Reports* are what is printed
+//! or answered: [`SegmentReport`], [`CompoundReport`], [`QuasiReport`], [`MonotoneReport`],
+//! [`LcgReport`], [`RegionReport`], and on failure [`ErrorReport`].
+//!
+//! Numbers are written by serde_json as the shortest decimal that reads back to the same
+//! `f64`, and read correctly rounded; points are `[x, y]` arrays; names are snake_case.
+//! Reports never hold NaN or infinities (serde_json would write `null`): a front end checks
+//! [`Report::is_finite`] before it answers.
+
+use kurbo::Point;
+use lac::{
+    CompoundCurve, CurvaturePoint, Curve, LcgFit, LcgLine, Monotonicity, MonotonicityReport,
+    QuasiCurve, QuasiPiece, RationalCubic, Sample, Segment,
+};
+use serde::{Deserialize, Serialize};
+
+/// A planar point, `[x, y]`.
+pub type Xy = [f64; 2];
+
+fn xy(p: Point) -> Xy {
+    [p.x, p.y]
+}
+
+fn point(p: Xy) -> Point {
+    Point::new(p[0], p[1])
+}
+
+// ---------------------------------------------------------------------------------------
+// Errors
+
+/// What went wrong, in every front end's words: `{"kind":…,"message":…}`.
+///
+/// `kind` is the library's [`lac::ErrorKind`] in snake_case (`"not_drawable"`,
+/// `"collinear_points"`, …) or one of the front ends' own: `"usage"`, `"invalid_input"`
+/// (unreadable JSON or numbers, wrong shapes), `"limit"` (a request over a stated limit),
+/// `"io"`, `"internal"`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ErrorBody {
+    /// A stable snake_case name.
+    pub kind: String,
+    /// What was wrong and what would fix it.
+    pub message: String,
+    /// For `not_drawable` space segments whose Ω is too large: the largest Ω that works.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub omega_max: Option<f64>,
+}
+
+/// How a front end should treat a failure.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ErrorClass {
+    /// The request itself is wrong (syntax, NaN, coincident points, a limit): exit code 2,
+    /// HTTP 400.
+    Invalid,
+    /// The request is valid but no curve (or fit) exists for it: exit code 3, HTTP 422.
+    Undrawable,
+    /// Reading or writing failed: exit code 1.
+    Io,
+    /// A defect of lac: exit code 70, HTTP 500.
+    Internal,
+}
+
+impl ErrorBody {
+    /// A failure of `kind` with `message`.
+    pub fn new(kind: impl Into<String>, message: impl Into<String>) -> Self {
+        ErrorBody {
+            kind: kind.into(),
+            message: message.into(),
+            omega_max: None,
+        }
+    }
+
+    /// Unreadable or ill-shaped input.
+    pub fn invalid_input(message: impl Into<String>) -> Self {
+        ErrorBody::new("invalid_input", message)
+    }
+
+    /// A request over a stated limit.
+    pub fn limit(message: impl Into<String>) -> Self {
+        ErrorBody::new("limit", message)
+    }
+
+    /// How a front end should treat it.
+    pub fn class(&self) -> ErrorClass {
+        match self.kind.as_str() {
+            "not_drawable" | "fit_failed" | "tolerance_not_met" => ErrorClass::Undrawable,
+            "io" => ErrorClass::Io,
+            "internal" | "numerical_failure" => ErrorClass::Internal,
+            _ => ErrorClass::Invalid,
+        }
+    }
+
+    /// The one line `{"error":{…}}`, without a newline.
+    pub fn to_json_line(&self) -> String {
+        to_line(&ErrorReport {
+            error: self.clone(),
+        })
+    }
+}
+
+impl From<lac::Error> for ErrorBody {
+    fn from(err: lac::Error) -> Self {
+        let omega_max = match &err {
+            lac::Error::NotDrawable(lac::NotDrawable::TorsionTooLarge { omega_max, .. }) => {
+                Some(*omega_max)
+            }
+            _ => None,
+        };
+        let kind = match serde_json::to_value(err.kind()) {
+            Ok(serde_json::Value::String(name)) => name,
+            _ => "internal".to_string(),
+        };
+        ErrorBody {
+            kind,
+            message: err.to_string(),
+            omega_max,
+        }
+    }
+}
+
+impl std::fmt::Display for ErrorBody {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: {}", self.kind, self.message)
+    }
+}
+
+impl std::error::Error for ErrorBody {}
+
+/// `{"error":{"kind":…,"message":…}}`: a failed command's standard error line, a failed
+/// batch line, a server's error body.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ErrorReport {
+    /// What went wrong.
+    pub error: ErrorBody,
+}
+
+/// Parse one JSON document as a `T`, or say what was wrong and that `shape` was expected.
+pub fn parse<T: serde::de::DeserializeOwned>(text: &str, shape: &str) -> Result<T, ErrorBody> {
+    if text.trim().is_empty() {
+        return Err(ErrorBody::invalid_input(format!(
+            "empty input; expected {shape}"
+        )));
+    }
+    serde_json::from_str(text)
+        .map_err(|e| ErrorBody::invalid_input(format!("{e}; expected {shape}")))
+}
+
+/// A report as one line of JSON, without a newline.
+pub fn to_line<T: Serialize>(report: &T) -> String {
+    // Reports are plain numbers, strings and arrays: serialising them cannot fail.
+    serde_json::to_string(report).unwrap_or_else(|e| {
+        ErrorBody::new("internal", format!("a report did not serialise: {e}")).to_json_line()
+    })
+}
+
+/// Reports that can say whether all their numbers are finite (JSON has no NaN).
+pub trait Report: Serialize {
+    /// Are all numbers finite?
+    fn is_finite(&self) -> bool;
+
+    /// The report, or an `internal` error when a number is not finite.
+    fn checked(self) -> Result<Self, ErrorBody>
+    where
+        Self: Sized,
+    {
+        if self.is_finite() {
+            Ok(self)
+        } else {
+            Err(ErrorBody::new(
+                "internal",
+                "a result is not finite (NaN or infinite); please report this input",
+            ))
+        }
+    }
+}
+
+fn all_finite(values: impl IntoIterator<Item = f64>) -> bool {
+    values.into_iter().all(f64::is_finite)
+}
+
+// ---------------------------------------------------------------------------------------
+// Inputs
+
+/// A segment from three control points and α (seed 000): `{"points":[[x,y]×3],"alpha":A}`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SegmentInput {
+    /// P0 (start), P1 (the end tangents' intersection), P2 (end).
+    pub points: [Xy; 3],
+    /// The slope α of the logarithmic curvature graph.
+    pub alpha: f64,
+}
+
+impl SegmentInput {
+    /// The shape, for error messages.
+    pub const SHAPE: &'static str = r#"{"points":[[x,y],[x,y],[x,y]],"alpha":A}"#;
+
+    /// Solve it.
+    pub fn solve(&self) -> Result<Segment, ErrorBody> {
+        Ok(Segment::from_control_points(
+            self.points.map(point),
+            self.alpha,
+        )?)
+    }
+}
+
+/// A compound-rhythm curve (seeds 004 and 002): three points with `ratio`, or four points
+/// without: `{"points":[…],"alpha0":A,"alpha1":B,"ratio":R}`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CompoundInput {
+    /// Three points (ends and the end tangents' intersection) or four control points.
+    pub points: Vec<Xy>,
+    /// Slope of the piece from the first point.
+    pub alpha0: f64,
+    /// Slope of the piece to the last point.
+    pub alpha1: f64,
+    /// Share of the turning made by the α0 piece (three points only).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub ratio: Option<f64>,
+}
+
+impl CompoundInput {
+    /// The shape, for error messages.
+    pub const SHAPE: &'static str = r#"{"points":[[x,y],[x,y],[x,y]],"alpha0":A,"alpha1":B,"ratio":R} or {"points":[[x,y],[x,y],[x,y],[x,y]],"alpha0":A,"alpha1":B}"#;
+
+    /// Solve it.
+    pub fn solve(&self) -> Result<CompoundCurve, ErrorBody> {
+        let p = &self.points;
+        match (p.len(), self.ratio) {
+            (3, Some(ratio)) => Ok(CompoundCurve::from_three_points(
+                [point(p[0]), point(p[1]), point(p[2])],
+                self.alpha0,
+                self.alpha1,
+                ratio,
+            )?),
+            (4, None) => Ok(CompoundCurve::from_four_points(
+                [point(p[0]), point(p[1]), point(p[2]), point(p[3])],
+                self.alpha0,
+                self.alpha1,
+            )?),
+            (3, None) => Err(ErrorBody::invalid_input(
+                "three points need a ratio (the share of the turning made by the alpha0 \
+                 piece, between 0 and 1); or give four control points",
+            )),
+            (4, Some(_)) => Err(ErrorBody::invalid_input(
+                "four control points fix the joint's tangent; a ratio applies to three \
+                 points only: drop it",
+            )),
+            (n, _) => Err(ErrorBody::invalid_input(format!(
+                "a compound curve takes three points (with a ratio) or four, not {n}"
+            ))),
+        }
+    }
+}
+
+/// Either kind of planar log-aesthetic curve: a [`SegmentInput`] (with `alpha`) or a
+/// [`CompoundInput`] (with `alpha0` and `alpha1`). Other fields are ignored, so a report
+/// reads back as the input it was solved from.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum CurveInput {
+    /// A segment.
+    Segment(SegmentInput),
+    /// A compound curve.
+    Compound(CompoundInput),
+}
+
+/// A solved planar curve of either kind.
+#[derive(Clone, Debug)]
+pub enum Solved {
+    /// A segment.
+    Segment(Segment),
+    /// A compound curve.
+    Compound(CompoundCurve),
+}
+
+impl Solved {
+    /// The curve, whatever its kind.
+    pub fn curve(&self) -> &dyn Curve {
+        match self {
+            Solved::Segment(s) => s,
+            Solved::Compound(c) => c,
+        }
+    }
+}
+
+impl CurveInput {
+    /// Solve it.
+    pub fn solve(&self) -> Result<Solved, ErrorBody> {
+        match self {
+            CurveInput::Segment(s) => s.solve().map(Solved::Segment),
+            CurveInput::Compound(c) => c.solve().map(Solved::Compound),
+        }
+    }
+
+    /// The control points as given.
+    pub fn points(&self) -> Vec<Xy> {
+        match self {
+            CurveInput::Segment(s) => s.points.to_vec(),
+            CurveInput::Compound(c) => c.points.clone(),
+        }
+    }
+}
+
+/// A quasi-aesthetic replacement of a curve (seed 001): the curve's fields, plus
+/// `"tolerance"` (relative to the arc length; absent for the seed's single rational cubic)
+/// and `"cubic"` (plain cubics, all weights 1).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct QuasiInput {
+    /// The curve to replace.
+    #[serde(flatten)]
+    pub curve: CurveInput,
+    /// Largest deviation, relative to the arc length.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub tolerance: Option<f64>,
+    /// Plain cubics instead of rational ones.
+    #[serde(default)]
+    pub cubic: bool,
+}
+
+/// One (rational) cubic Bézier piece: `{"points":[[x,y]×4],"weights":[w0,w1,w2,w3]}`
+/// (weights optional: a plain cubic).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PieceInput {
+    /// Control points b0..b3.
+    pub points: [Xy; 4],
+    /// Weights w0..w3 (all 1 when absent).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub weights: Option<[f64; 4]>,
+}
+
+impl PieceInput {
+    /// The rational cubic.
+    pub fn to_rational_cubic(&self) -> Result<RationalCubic, ErrorBody> {
+        Ok(RationalCubic::new(
+            self.points.map(point),
+            self.weights.unwrap_or([1.0; 4]),
+        )?)
+    }
+}
+
+/// A chain of Bézier pieces, `{"pieces":[…]}`: what `lac quasi` prints, read back.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PiecesInput {
+    /// The pieces in order.
+    pub pieces: Vec<PieceInput>,
+}
+
+impl PiecesInput {
+    /// The shape, for error messages.
+    pub const SHAPE: &'static str =
+        r#"{"pieces":[{"points":[[x,y],[x,y],[x,y],[x,y]],"weights":[w0,w1,w2,w3]},…]}"#;
+
+    /// The rational cubics.
+    pub fn to_rational_cubics(&self) -> Result<Vec<RationalCubic>, ErrorBody> {
+        if self.pieces.is_empty() {
+            return Err(ErrorBody::invalid_input("no pieces given"));
+        }
+        self.pieces
+            .iter()
+            .map(PieceInput::to_rational_cubic)
+            .collect()
+    }
+}
+
+/// The monotonicity question for one (rational) cubic: `{"points":[[x,y]×4],"weights":…}`.
+pub type MonotoneInput = PieceInput;
+
+// ---------------------------------------------------------------------------------------
+// Reports
+
+/// One sample: arc length, position, tangent direction (radians) and signed curvature.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SampleRow {
+    /// Arc length from the first control point.
+    pub s: f64,
+    /// Position, x.
+    pub x: f64,
+    /// Position, y.
+    pub y: f64,
+    /// Tangent direction, radians, continuous from the first control point.
+    pub theta: f64,
+    /// Signed curvature, + for a left turn.
+    pub kappa: f64,
+}
+
+impl From<&Sample> for SampleRow {
+    fn from(s: &Sample) -> Self {
+        SampleRow {
+            s: s.s,
+            x: s.point.x,
+            y: s.point.y,
+            theta: s.theta,
+            kappa: s.kappa,
+        }
+    }
+}
+
+impl SampleRow {
+    fn values(&self) -> [f64; 5] {
+        [self.s, self.x, self.y, self.theta, self.kappa]
+    }
+}
+
+/// Samples as CSV with the header `s,x,y,theta,kappa` (shortest round-trip numbers).
+pub fn samples_csv(samples: &[SampleRow]) -> String {
+    let mut out = String::from("s,x,y,theta,kappa\n");
+    for r in samples {
+        let [s, x, y, theta, kappa] = r.values();
+        out.push_str(&format!("{s:?},{x:?},{y:?},{theta:?},{kappa:?}\n"));
+    }
+    out
+}
+
+/// A solved segment: `lac segment`'s JSON and each good line of its `--batch`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SegmentReport {
+    /// The slope of the logarithmic curvature graph.
+    pub alpha: f64,
+    /// Λ of the solved standard-form piece.
+    pub lambda: f64,
+    /// Arc length from the first to the last control point.
+    pub arc_length: f64,
+    /// Signed curvature (+ for a left turn) at the first control point.
+    pub curvature_start: f64,
+    /// Signed curvature at the last control point.
+    pub curvature_end: f64,
+    /// Turning angle of the control polygon, radians, in (0, π).
+    pub turning_angle: f64,
+    /// The control points as given.
+    pub points: [Xy; 3],
+    /// Samples equally spaced in arc length, first and last at the end points.
+    pub samples: Vec<SampleRow>,
+}
+
+impl SegmentReport {
+    /// The report of `segment` with `n` samples.
+    pub fn new(segment: &Segment, n: usize) -> Result<Self, ErrorBody> {
+        let samples = segment.sample_by_arc_length(n)?;
+        SegmentReport {
+            alpha: segment.alpha(),
+            lambda: segment.lambda(),
+            arc_length: segment.arc_length(),
+            curvature_start: segment.curvature_start(),
+            curvature_end: segment.curvature_end(),
+            turning_angle: segment.turning_angle(),
+            points: segment.control_points().map(xy),
+            samples: samples.iter().map(SampleRow::from).collect(),
+        }
+        .checked()
+    }
+
+    /// The report with the control points exactly as the caller gave them (the solved
+    /// segment's own are within rounding of them).
+    pub fn with_points(mut self, points: [Xy; 3]) -> Self {
+        self.points = points;
+        self
+    }
+}
+
+impl Report for SegmentReport {
+    fn is_finite(&self) -> bool {
+        all_finite([
+            self.alpha,
+            self.lambda,
+            self.arc_length,
+            self.curvature_start,
+            self.curvature_end,
+            self.turning_angle,
+        ]) && all_finite(self.points.iter().flatten().copied())
+            && self.samples.iter().all(|s| all_finite(s.values()))
+    }
+}
+
+/// One piece's logarithmic curvature graph: log(ρ ds/dρ) = alpha log ρ + intercept over
+/// log ρ ∈ log_rho (natural logarithms, in the order of travel).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LcgRow {
+    /// The slope α of the piece.
+    pub alpha: f64,
+    /// log(ρ ds/dρ) at log ρ = 0.
+    pub intercept: f64,
+    /// The range of log ρ covered by the piece, [from, to] in the order of travel.
+    pub log_rho: [f64; 2],
+}
+
+impl From<LcgLine> for LcgRow {
+    fn from(line: LcgLine) -> Self {
+        LcgRow {
+            alpha: line.alpha,
+            intercept: line.intercept,
+            log_rho: [line.log_rho.0, line.log_rho.1],
+        }
+    }
+}
+
+/// A solved compound curve: `lac compound`'s JSON and each good line of its `--batch`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CompoundReport {
+    /// The slope of the piece from the first point to the joint.
+    pub alpha0: f64,
+    /// The slope of the piece from the joint to the last point.
+    pub alpha1: f64,
+    /// The share of the turning made by the α0 piece, as given (three-point form only).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub ratio: Option<f64>,
+    /// Λ of the joint-reference standard form (ρ = 1 at the joint).
+    pub lambda: f64,
+    /// Arc length from the first to the last point.
+    pub arc_length: f64,
+    /// Arc length from the first point to the joint.
+    pub joint_s: f64,
+    /// Signed curvature (+ for a left turn) at the first point.
+    pub curvature_start: f64,
+    /// Signed curvature at the joint (the same from both pieces: G2 and G3 there).
+    pub curvature_joint: f64,
+    /// Signed curvature at the last point.
+    pub curvature_end: f64,
+    /// Total turning of the control polygon, radians, in (0, 2π) (below π for three points).
+    pub turning_angle: f64,
+    /// The joint.
+    pub joint: Xy,
+    /// The logarithmic curvature graph of each piece; `null` for a circular arc.
+    pub lcg: [Option<LcgRow>; 2],
+    /// The control points as given: three, or four.
+    pub points: Vec<Xy>,
+    /// Samples equally spaced in arc length over the whole curve.
+    pub samples: Vec<SampleRow>,
+}
+
+impl CompoundReport {
+    /// The report of `curve`, solved from `input`, with `n` samples.
+    pub fn new(curve: &CompoundCurve, input: &CompoundInput, n: usize) -> Result<Self, ErrorBody> {
+        let samples = curve.sample_by_arc_length(n)?;
+        let [alpha0, alpha1] = curve.alpha();
+        CompoundReport {
+            alpha0,
+            alpha1,
+            ratio: input.ratio,
+            lambda: curve.lambda(),
+            arc_length: curve.arc_length(),
+            joint_s: curve.joint_s(),
+            curvature_start: curve.curvature_start(),
+            curvature_joint: curve.curvature_joint(),
+            curvature_end: curve.curvature_end(),
+            turning_angle: curve.turning().abs(),
+            joint: xy(curve.joint()),
+            lcg: curve.lcg().map(|line| line.map(LcgRow::from)),
+            points: input.points.clone(),
+            samples: samples.iter().map(SampleRow::from).collect(),
+        }
+        .checked()
+    }
+}
+
+impl Report for CompoundReport {
+    fn is_finite(&self) -> bool {
+        all_finite([
+            self.alpha0,
+            self.alpha1,
+            self.ratio.unwrap_or(0.0),
+            self.lambda,
+            self.arc_length,
+            self.joint_s,
+            self.curvature_start,
+            self.curvature_joint,
+            self.curvature_end,
+            self.turning_angle,
+        ]) && all_finite(self.joint)
+            && self
+                .lcg
+                .iter()
+                .flatten()
+                .all(|l| all_finite([l.alpha, l.intercept, l.log_rho[0], l.log_rho[1]]))
+            && all_finite(self.points.iter().flatten().copied())
+            && self.samples.iter().all(|s| all_finite(s.values()))
+    }
+}
+
+/// The name of a monotonicity verdict: `increasing`, `decreasing`, `constant`,
+/// `not_monotone`.
+pub fn verdict_name(verdict: Monotonicity) -> &'static str {
+    match verdict {
+        Monotonicity::Increasing => "increasing",
+        Monotonicity::Decreasing => "decreasing",
+        Monotonicity::Constant => "constant",
+        Monotonicity::NotMonotone { .. } => "not_monotone",
+    }
+}
+
+/// Whether the curvature of a (rational) cubic is monotone: `lac monotone`'s JSON.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct MonotoneReport {
+    /// `increasing`, `decreasing`, `constant` or `not_monotone`.
+    pub verdict: String,
+    /// Whether the verdict is proven for the exact curve the numbers describe.
+    pub proven: bool,
+    /// Not monotone: a parameter where dκ/ds changes sign.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub t: Option<f64>,
+}
+
+impl From<&MonotonicityReport> for MonotoneReport {
+    fn from(m: &MonotonicityReport) -> Self {
+        MonotoneReport {
+            verdict: verdict_name(m.verdict).to_string(),
+            proven: m.proven,
+            t: match m.verdict {
+                Monotonicity::NotMonotone { t } => Some(t),
+                _ => None,
+            },
+        }
+    }
+}
+
+/// One Bézier piece of a [`QuasiReport`].
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct QuasiPieceRow {
+    /// Control points b0..b3.
+    pub points: [Xy; 4],
+    /// Weights w0..w3.
+    pub weights: [f64; 4],
+    /// How its curvature varies: increasing, decreasing, constant, not_monotone.
+    pub monotone: String,
+    /// Whether `monotone` is proven for the exact curve the numbers describe.
+    pub proven: bool,
+    /// Not monotone: a parameter where dκ/ds changes sign.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub t: Option<f64>,
+    /// The turning of the log-aesthetic curve at the piece's ends, radians from its start.
+    pub turning: [f64; 2],
+    /// Largest distance to the log-aesthetic curve over the piece, in the points' units.
+    pub max_deviation: f64,
+}
+
+impl From<&QuasiPiece> for QuasiPieceRow {
+    fn from(p: &QuasiPiece) -> Self {
+        let m = MonotoneReport::from(&p.monotonicity);
+        QuasiPieceRow {
+            points: p.curve.points().map(xy),
+            weights: p.curve.weights(),
+            monotone: m.verdict,
+            proven: m.proven,
+            t: m.t,
+            turning: [p.turning.0, p.turning.1],
+            max_deviation: p.max_deviation,
+        }
+    }
+}
+
+/// A quasi-aesthetic replacement: `lac quasi`'s JSON.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct QuasiReport {
+    /// The pieces in order from the first control point.
+    pub pieces: Vec<QuasiPieceRow>,
+    /// Root mean square deviation, relative to the arc length.
+    pub rms: f64,
+    /// Largest deviation, relative to the arc length.
+    pub max: f64,
+    /// Arc length of the log-aesthetic curve.
+    pub arc_length: f64,
+    /// The tolerance asked for (relative); `null` for the single piece of seed 001.
+    pub tolerance: Option<f64>,
+    /// `rational`, or `cubic` (all weights 1).
+    pub kind: String,
+}
+
+impl QuasiReport {
+    /// The report of `quasi`, the replacement of a curve of length `arc_length`.
+    pub fn new(quasi: &QuasiCurve, arc_length: f64, tolerance: Option<f64>, cubic: bool) -> Self {
+        QuasiReport {
+            pieces: quasi.pieces.iter().map(QuasiPieceRow::from).collect(),
+            rms: quasi.rms,
+            max: quasi.max,
+            arc_length,
+            tolerance,
+            kind: if cubic { "cubic" } else { "rational" }.to_string(),
+        }
+    }
+}
+
+impl Report for QuasiReport {
+    fn is_finite(&self) -> bool {
+        all_finite([self.rms, self.max, self.arc_length])
+            && self.pieces.iter().all(|p| {
+                all_finite(p.points.iter().flatten().copied())
+                    && all_finite(p.weights)
+                    && all_finite(p.turning)
+                    && p.max_deviation.is_finite()
+                    && p.t.is_none_or(f64::is_finite)
+            })
+    }
+}
+
+/// One point of a curvature plot and, where it has one, of the logarithmic curvature graph.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PlotRow {
+    /// Arc length from the start.
+    pub s: f64,
+    /// Signed curvature, + for a left turn.
+    pub kappa: f64,
+    /// dκ/ds.
+    pub dkappa_ds: f64,
+    /// ln ρ; `null` where κ = 0.
+    pub log_rho: Option<f64>,
+    /// ln(ρ |ds/dρ|); `null` where κ = 0 or dκ/ds = 0.
+    pub log_lcg: Option<f64>,
+}
+
+impl From<&CurvaturePoint> for PlotRow {
+    fn from(p: &CurvaturePoint) -> Self {
+        let graph = p.lcg();
+        PlotRow {
+            s: p.s,
+            kappa: p.kappa,
+            dkappa_ds: p.dkappa_ds,
+            log_rho: graph.map(|g| g.0),
+            log_lcg: graph.map(|g| g.1),
+        }
+    }
+}
+
+/// The line y = alpha x + intercept fitted to a logarithmic curvature graph, over
+/// x ∈ log_rho (natural logarithms).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct FitRow {
+    /// The slope: the α of the log-aesthetic curve that matches best.
+    pub alpha: f64,
+    /// The value at ln ρ = 0.
+    pub intercept: f64,
+    /// Root mean square residual, weighted along ln ρ.
+    pub rms_residual: f64,
+    /// Largest residual.
+    pub max_residual: f64,
+    /// The range of ln ρ covered.
+    pub log_rho: [f64; 2],
+}
+
+impl From<&LcgFit> for FitRow {
+    fn from(f: &LcgFit) -> Self {
+        FitRow {
+            alpha: f.alpha,
+            intercept: f.intercept,
+            rms_residual: f.rms_residual,
+            max_residual: f.max_residual,
+            log_rho: [f.log_rho.0, f.log_rho.1],
+        }
+    }
+}
+
+/// A curvature plot and logarithmic curvature graph with its fitted line: `lac lcg`'s JSON.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LcgReport {
+    /// The plot, equally spaced in arc length (or per Bézier piece).
+    pub points: Vec<PlotRow>,
+    /// The line fitted to the whole graph; `null` for a circle (no graph) or when the
+    /// curvature is not monotone (then `note` says so).
+    pub fit: Option<FitRow>,
+}
+
+/// Where the middle control point may go: `lac region --format json`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct RegionReport {
+    /// α, or α0 for compound curves.
+    pub alpha: f64,
+    /// α1 of compound curves.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub alpha1: Option<f64>,
+    /// The turning ratio of compound curves.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub ratio: Option<f64>,
+    /// Pixels per side.
+    pub size: usize,
+    /// [x_min, x_max, y_min, y_max] of the map.
+    pub extent: [f64; 4],
+    /// The first control point.
+    pub first: Xy,
+    /// The last control point.
+    pub last: Xy,
+    /// The share of the map that is drawable.
+    pub drawable_fraction: f64,
+    /// Rows top (y = y_max) to bottom, columns left (x = x_min) to right.
+    pub drawable: Vec<Vec<bool>>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_segment_report_reads_back_as_its_input() {
+        let input: SegmentInput = parse(
+            r#"{"points":[[-1,0],[0.2,0.8],[1,0]],"alpha":0.5}"#,
+            SegmentInput::SHAPE,
+        )
+        .unwrap();
+        let report = SegmentReport::new(&input.solve().unwrap(), 5)
+            .unwrap()
+            .with_points(input.points);
+        let line = to_line(&report);
+        let back: CurveInput = parse(&line, "a curve").unwrap();
+        assert_eq!(back, CurveInput::Segment(input));
+    }
+
+    #[test]
+    fn errors_carry_the_library_kind_in_snake_case() {
+        let input = SegmentInput {
+            points: [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]],
+            alpha: 0.5,
+        };
+        let err = input.solve().unwrap_err();
+        assert_eq!(err.kind, "collinear_points");
+        assert_eq!(err.class(), ErrorClass::Invalid);
+        let far = SegmentInput {
+            points: [[-1.0, 0.0], [0.9, 0.9], [1.0, 0.0]],
+            alpha: -1.0,
+        };
+        let err = far.solve().unwrap_err();
+        assert_eq!(
+            (err.kind.as_str(), err.class()),
+            ("not_drawable", ErrorClass::Undrawable)
+        );
+        assert!(err
+            .to_json_line()
+            .starts_with(r#"{"error":{"kind":"not_drawable","message":"#));
+    }
+
+    #[test]
+    fn compound_inputs_say_what_is_missing() {
+        let three = CompoundInput {
+            points: vec![[0.0, 0.0], [2.0, 0.0], [2.6, 1.2]],
+            alpha0: -1.0,
+            alpha1: 2.0,
+            ratio: None,
+        };
+        assert!(three.solve().unwrap_err().message.contains("ratio"));
+        let curve = CompoundInput {
+            ratio: Some(0.5),
+            ..three
+        };
+        let report = CompoundReport::new(&curve.solve().unwrap(), &curve, 9).unwrap();
+        assert_eq!(report.samples.len(), 9);
+        assert!(report.is_finite());
+    }
+}

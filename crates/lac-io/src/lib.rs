@@ -1,0 +1,8 @@
+//! File formats and shared JSON shapes for log-aesthetic curves.
+//!
+//! The core crate `lac` does no I/O and knows no format vocabulary. This crate holds what
+//! the front ends share: the JSON that the `lac` command prints and reads (one curve, or one
+//! line of a `--batch`), which the editor's server speaks and the Python bindings mirror, in
+//! [`json`].
+
+pub mod json;

@@ -1,0 +1,268 @@
+//! What every planar log-aesthetic curve offers, written once: a chain of log-aesthetic
+//! [`Segment`]s joined end to end, evaluated and sampled by arc length.
+//!
+//! A [`Segment`] is a chain of one piece, a [`CompoundCurve`](crate::CompoundCurve) a chain
+//! of two joined with G3 continuity. Only [`Curve::pieces`] is required; everything else is
+//! provided, so a new kind of curve built from segments gets all of it by naming its pieces.
+//!
+//! Arc length `s` runs from 0 at the first point to [`Curve::arc_length`] at the last. A
+//! sample at `s` inside piece `i` is placed from that piece's nearer end, so that the digits
+//! of a short piece's position are not lost to the rounding of the whole length.
+
+use kurbo::{Point, Vec2};
+
+use crate::analysis::CurvaturePoint;
+use crate::error::{finite, Error, Result};
+use crate::numeric::clamp;
+use crate::segment::sampling::{check_count, Sample};
+use crate::segment::Segment;
+
+/// A planar log-aesthetic curve: one or more log-aesthetic [`Segment`]s joined end to end
+/// (at least G1: each piece starts where the previous one ends, with its tangent).
+///
+/// Signed curvature is positive where the curve turns left (SPEC §1); `theta` is the tangent
+/// direction in radians, continuous from the first point.
+///
+/// The method names avoid kurbo's (`eval`, `start`, `end`, `curvature`, `arclen`), which
+/// every curve type also implements with kurbo's conventions (parameter t ∈ [0, 1]
+/// proportional to arc length, kurbo's curvature sign).
+///
+/// ```
+/// use kurbo::Point;
+/// use lac::{CompoundCurve, Curve, Segment};
+///
+/// let segment = Segment::from_control_points(
+///     [Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(1.6, 0.9)], -1.0)?;
+/// let compound = CompoundCurve::from_three_points(
+///     [Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(1.6, 0.9)], -1.0, 2.0, 0.5)?;
+/// // Both are curves: the same questions, the same answers' shapes.
+/// for curve in [&segment as &dyn Curve, &compound] {
+///     let samples = curve.sample_by_arc_length(9)?;
+///     assert!((samples[8].point - Point::new(1.6, 0.9)).hypot() < 1e-12);
+///     assert!((curve.end_point() - Point::new(1.6, 0.9)).hypot() < 1e-12);
+/// }
+/// assert_eq!(compound.joints(), vec![compound.pieces()[0].arc_length()]);
+/// # Ok::<(), lac::Error>(())
+/// ```
+pub trait Curve {
+    /// The log-aesthetic pieces in order from the first point (at least one).
+    fn pieces(&self) -> &[Segment];
+
+    /// Arc length from the first to the last point.
+    fn arc_length(&self) -> f64 {
+        self.pieces().iter().map(Segment::length).sum()
+    }
+
+    /// The arc lengths of the joints between consecutive pieces (empty for one piece).
+    fn joints(&self) -> Vec<f64> {
+        let pieces = self.pieces();
+        let mut s = 0.0;
+        pieces[..pieces.len().saturating_sub(1)]
+            .iter()
+            .map(|p| {
+                s += p.length();
+                s
+            })
+            .collect()
+    }
+
+    /// The first point.
+    fn start_point(&self) -> Point {
+        self.pieces()[0].first_point()
+    }
+
+    /// The last point.
+    fn end_point(&self) -> Point {
+        self.pieces()[self.pieces().len() - 1].last_point()
+    }
+
+    /// Signed curvature at the first point.
+    fn curvature_start(&self) -> f64 {
+        self.pieces()[0].end_curvatures().0
+    }
+
+    /// Signed curvature at the last point.
+    fn curvature_end(&self) -> f64 {
+        self.pieces()[self.pieces().len() - 1].end_curvatures().1
+    }
+
+    /// Total turning of the tangent from the first to the last point, radians, signed
+    /// (positive for a left turn).
+    fn turning(&self) -> f64 {
+        self.pieces()
+            .iter()
+            .map(|p| p.turn().sign() * p.turning_angle())
+            .sum()
+    }
+
+    /// Point at arc length `s`, 0 ≤ s ≤ [`Curve::arc_length`].
+    fn point_at_s(&self, s: f64) -> Result<Point> {
+        let (piece, s) = locate(self.pieces(), s)?;
+        Ok(piece.point_of(&piece.station_at_s(s)?))
+    }
+
+    /// Unit tangent at arc length `s`, in the direction of travel.
+    fn tangent_at_s(&self, s: f64) -> Result<Vec2> {
+        Ok(Vec2::from_angle(self.theta_at_s(s)?))
+    }
+
+    /// Tangent direction at arc length `s` (radians, continuous from the first point).
+    fn theta_at_s(&self, s: f64) -> Result<f64> {
+        let (piece, s) = locate(self.pieces(), s)?;
+        Ok(piece.theta_of(&piece.station_at_s(s)?))
+    }
+
+    /// Signed curvature at arc length `s` (positive for a left turn).
+    fn curvature_at_s(&self, s: f64) -> Result<f64> {
+        let (piece, s) = locate(self.pieces(), s)?;
+        Ok(piece.kappa_of(&piece.station_at_s(s)?))
+    }
+
+    /// `n ≥ 2` samples equally spaced in arc length, the first at the first point and the
+    /// last at the last.
+    fn sample_by_arc_length(&self, n: usize) -> Result<Vec<Sample>> {
+        check_count(n)?;
+        let len = self.arc_length();
+        let step = len / (n - 1) as f64;
+        let at: Vec<f64> = (0..n)
+            .map(|i| if i == n - 1 { len } else { i as f64 * step })
+            .collect();
+        Ok(by_piece(self.pieces(), &at)?
+            .into_iter()
+            .map(|(_, s)| s)
+            .collect())
+    }
+
+    /// Samples at the given arc lengths, which must ascend within [0, arc_length].
+    fn samples_at_arc_lengths(&self, at: &[f64]) -> Result<Vec<Sample>> {
+        Ok(by_piece(self.pieces(), at)?
+            .into_iter()
+            .map(|(_, s)| s)
+            .collect())
+    }
+
+    /// Samples such that the polyline through them stays within `accuracy` (an absolute
+    /// distance, caller's units) of the curve; every joint is a sample.
+    fn sample_adaptive(&self, accuracy: f64) -> Result<Vec<Sample>> {
+        let mut out: Vec<Sample> = Vec::new();
+        let mut start = 0.0;
+        for piece in self.pieces() {
+            let samples = piece.adaptive_samples(accuracy)?;
+            let skip = usize::from(!out.is_empty());
+            out.extend(samples.into_iter().skip(skip).map(|s| Sample {
+                s: s.s + start,
+                ..s
+            }));
+            start += piece.length();
+        }
+        Ok(out)
+    }
+
+    /// `n ≥ 2` points of the evolute (the locus of centres of curvature) at the arc-length
+    /// samples: `P + N/κ` with N the left normal.
+    fn evolute(&self, n: usize) -> Result<Vec<Point>> {
+        Ok(self
+            .sample_by_arc_length(n)?
+            .iter()
+            .map(Sample::center_of_curvature)
+            .collect())
+    }
+
+    /// `n ≥ 2` points of the curvature plot equally spaced in arc length, with the exact
+    /// dκ/ds (dρ/ds = Λρ^(1−α) in each piece's standard form).
+    fn curvature_plot(&self, n: usize) -> Result<Vec<CurvaturePoint>> {
+        check_count(n)?;
+        let pieces = self.pieces();
+        let len = self.arc_length();
+        let step = len / (n - 1) as f64;
+        let at: Vec<f64> = (0..n)
+            .map(|i| if i == n - 1 { len } else { i as f64 * step })
+            .collect();
+        Ok(by_piece(pieces, &at)?
+            .into_iter()
+            .map(|(i, s)| pieces[i].curvature_point(&s))
+            .collect())
+    }
+}
+
+impl Curve for Segment {
+    fn pieces(&self) -> &[Segment] {
+        std::slice::from_ref(self)
+    }
+}
+
+/// The piece holding arc length `s` and the arc length within it, measured from whichever
+/// end of the piece is nearer (see the module documentation), within [0, piece length]. A
+/// joint belongs to the piece after it, so the last point is always on the last piece.
+pub(crate) fn locate(pieces: &[Segment], s: f64) -> Result<(&Segment, f64)> {
+    finite("s", s)?;
+    let len: f64 = pieces.iter().map(Segment::length).sum();
+    let slack = 1e-12 * len;
+    if !(s >= -slack && s <= len + slack) {
+        return Err(Error::OutOfRange {
+            name: "s",
+            value: s,
+            expected: "an arc length between 0 and arc_length()",
+        });
+    }
+    let mut start = 0.0;
+    for (i, piece) in pieces.iter().enumerate() {
+        let length = piece.length();
+        let end = start + length;
+        if s < end || i + 1 == pieces.len() {
+            return Ok((piece, local_s(s, start, end, length)));
+        }
+        start = end;
+    }
+    unreachable!("a curve has at least one piece")
+}
+
+/// Arc length `s` of the whole curve within the piece spanning [start, end].
+fn local_s(s: f64, start: f64, end: f64, length: f64) -> f64 {
+    let from_end = end - s;
+    if from_end < 0.5 * length {
+        clamp(length - from_end, 0.0, length)
+    } else {
+        clamp(s - start, 0.0, length)
+    }
+}
+
+/// Samples at ascending arc lengths `at`, each with the index of its piece; a sample on a
+/// joint belongs to the piece after it.
+fn by_piece(pieces: &[Segment], at: &[f64]) -> Result<Vec<(usize, Sample)>> {
+    let len: f64 = pieces.iter().map(Segment::length).sum();
+    let slack = 1e-12 * len;
+    for (k, &s) in at.iter().enumerate() {
+        finite("s", s)?;
+        if !(s >= -slack && s <= len + slack) || (k > 0 && s < at[k - 1]) {
+            return Err(Error::OutOfRange {
+                name: "s",
+                value: s,
+                expected: "ascending arc lengths between 0 and arc_length()",
+            });
+        }
+    }
+    let mut out = Vec::with_capacity(at.len());
+    let (mut next, mut start) = (0, 0.0);
+    for (i, piece) in pieces.iter().enumerate() {
+        let length = piece.length();
+        let end = start + length;
+        let last = i + 1 == pieces.len();
+        let mut local = Vec::new();
+        while next < at.len() && (last || at[next] < end) {
+            local.push(local_s(at[next], start, end, length));
+            next += 1;
+        }
+        out.extend(piece.samples_at_local(&local)?.into_iter().map(|s| {
+            (
+                i,
+                Sample {
+                    s: s.s + start,
+                    ..s
+                },
+            )
+        }));
+        start = end;
+    }
+    Ok(out)
+}

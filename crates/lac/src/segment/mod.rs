@@ -1,0 +1,496 @@
+//! A log-aesthetic segment from three control points and α (SPEC §3, seed 000 §4).
+
+use ::kurbo::{Point, Vec2};
+
+use crate::chord_angle::solve;
+use crate::error::{finite, Error, Result};
+use crate::lcg::LcgLine;
+use crate::numeric::{clamp, Complex};
+use crate::standard_form::integrate::integrate;
+use crate::standard_form::{StandardForm, Station};
+use crate::turn::Turn;
+
+mod kurbo;
+pub(crate) mod sampling;
+
+pub use kurbo::SegmentDerivative;
+pub(crate) use kurbo::{central_difference, Travel};
+pub use sampling::Sample;
+
+/// The angles of a three-point control polygon (SPEC §3 steps 1 and 3).
+pub(crate) struct Triangle {
+    /// Turning angle θd ∈ (0, π).
+    pub(crate) turning: f64,
+    /// The polygon's turning direction.
+    pub(crate) turn: Turn,
+    /// Direction of P1 − P0.
+    pub(crate) theta_first: f64,
+    /// Angle at P0 between P1 − P0 and P2 − P0, in (0, θd).
+    pub(crate) theta_e: f64,
+}
+
+/// The vectors scaled by one power of two (exact) so that the largest component is in
+/// [1, 2): products of them then neither underflow nor overflow.
+pub(crate) fn normalized<const N: usize>(vectors: [Vec2; N]) -> [Vec2; N] {
+    let largest = vectors
+        .iter()
+        .fold(0.0f64, |m, v| m.max(v.x.abs()).max(v.y.abs()));
+    if !(largest.is_finite() && largest > 0.0) {
+        return vectors;
+    }
+    // 2^(−k) applied in two halves, each representable even for k near ±1074.
+    let k = largest.log2().floor() as i32;
+    let (h1, h2) = (2f64.powi(-(k / 2)), 2f64.powi(-(k - k / 2)));
+    vectors.map(|v| (v * h1) * h2)
+}
+
+/// The slope α, checked: finite and |α| ≤ [`MAX_ABS_ALPHA`].
+pub(crate) fn check_alpha(name: &'static str, alpha: f64) -> Result<f64> {
+    finite(name, alpha)?;
+    if alpha.abs() > MAX_ABS_ALPHA {
+        return Err(Error::OutOfRange {
+            name,
+            value: alpha,
+            expected: "a slope with |alpha| <= 1e6 (segments hardly change beyond it, and \
+                       rho^alpha overflows)",
+        });
+    }
+    Ok(alpha)
+}
+
+/// The largest |α| accepted. Segments converge as |α| grows (for one triangle the largest
+/// chord angle a segment can make changes by 2.5e-5 rad from |α| = 1e4 to 1e6), and far
+/// beyond it ρ^α overflows.
+pub const MAX_ABS_ALPHA: f64 = 1e6;
+
+/// Validate three control points and measure their triangle.
+pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
+    const NAMES: [[&str; 2]; 3] = [["P0.x", "P0.y"], ["P1.x", "P1.y"], ["P2.x", "P2.y"]];
+    for (p, names) in points.iter().zip(NAMES) {
+        finite(names[0], p.x)?;
+        finite(names[1], p.y)?;
+    }
+    for (i, j) in [(0, 1), (1, 2), (0, 2)] {
+        if points[i] == points[j] {
+            return Err(Error::CoincidentPoints {
+                first: i,
+                second: j,
+            });
+        }
+    }
+    let [p0, p1, p2] = points;
+    let (u, v, c) = (p1 - p0, p2 - p1, p2 - p0);
+    // (std's hypot: kurbo's squares the components, which overflows from 1e154 on.)
+    if ![u, v, c].iter().all(|w| w.x.hypot(w.y).is_finite()) {
+        return Err(Error::OutOfRange {
+            name: "control points",
+            value: f64::INFINITY,
+            expected: "coordinates whose differences do not overflow",
+        });
+    }
+    // Angles only: scale the legs by a power of two (exactly) to magnitudes near 1, so that
+    // cross and dot products neither underflow (coordinates ~1e-160) nor overflow (~1e+160).
+    let [u, v, c] = normalized([u, v, c]);
+    let cross = u.cross(v);
+    let turning = cross.abs().atan2(u.dot(v));
+    if !(turning > 1e-13 && turning < std::f64::consts::PI - 1e-13) {
+        return Err(Error::CollinearPoints);
+    }
+    Ok(Triangle {
+        turning,
+        turn: if cross > 0.0 { Turn::Left } else { Turn::Right },
+        theta_first: u.atan2(),
+        theta_e: u.cross(c).abs().atan2(u.dot(c)),
+    })
+}
+
+/// A planar log-aesthetic curve segment defined like a quadratic Bézier curve: it starts
+/// at `P0` tangent to `P1 − P0` and ends at `P2` tangent to `P2 − P1` (seed 000 §4.1).
+///
+/// It is a piece of a [`StandardForm`] curve with the tangent-angle range [0, θd]
+/// (α ≤ 1) or [−θd, 0] (α > 1), θd the turning angle of the control polygon, mapped by a
+/// similarity (and a reflection for right turns) onto the control points. Λ is found so that
+/// the piece's chord makes the same angle with its start tangent as `P2 − P0` makes with
+/// `P1 − P0` at the end with the shorter leg.
+///
+/// Arc length `s` runs from 0 at `P0` to [`Curve::arc_length`](crate::Curve::arc_length) at `P2`; `theta` is the
+/// tangent direction in the caller's frame, starting at the direction of `P1 − P0` and
+/// continuous along the curve; curvature is signed, positive for a left turn.
+///
+/// ```
+/// use kurbo::Point;
+/// use lac::{Curve, Segment};
+///
+/// // A clothoid (α = −1) segment.
+/// let seg = Segment::from_control_points(
+///     [Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(1.6, 0.9)],
+///     -1.0,
+/// )?;
+/// let samples = seg.sample_by_arc_length(65)?;
+/// assert_eq!(samples.len(), 65);
+/// assert!((samples[64].point - Point::new(1.6, 0.9)).hypot() < 1e-12);
+/// // Curvature varies monotonically along a log-aesthetic segment.
+/// assert!(samples.windows(2).all(|w| w[1].kappa >= w[0].kappa)
+///     || samples.windows(2).all(|w| w[1].kappa <= w[0].kappa));
+/// # Ok::<(), lac::Error>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct Segment {
+    alpha: f64,
+    form: StandardForm,
+    /// Standard-form stations at the caller's first and last point.
+    first: Station,
+    last: Station,
+    /// P(last) − P(first) in the standard form.
+    chord: Complex,
+    /// The caller's first point.
+    origin: Point,
+    /// caller = origin + M(rot · (P − P(first))), M = conjugation when `mirrored`.
+    rot: Complex,
+    /// |rot|: standard-form lengths to the caller's.
+    scale: f64,
+    mirrored: bool,
+    /// The caller's curve turns left (positive curvature) or right.
+    turn: Turn,
+    /// Tangent direction at the first point, radians.
+    theta_first: f64,
+    /// Turning angle θd = |θ(last) − θ(first)|.
+    turning: f64,
+}
+
+/// Where a standard-form piece lies in the caller's plane: the similarity (and reflection)
+/// `caller = origin + M(rot · (P − P(first)))`, and the caller's turning direction and start
+/// tangent.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Placement {
+    /// The caller's first point.
+    pub(crate) origin: Point,
+    /// Rotation and scale, as a complex factor.
+    pub(crate) rot: Complex,
+    /// Whether M is the conjugation (the caller's curve is the mirror image).
+    pub(crate) mirrored: bool,
+    /// The caller's turning direction.
+    pub(crate) turn: Turn,
+    /// Tangent direction at the first point, radians.
+    pub(crate) theta_first: f64,
+}
+
+impl Segment {
+    /// Solve for the segment with control points `points = [P0, P1, P2]` and slope `alpha`.
+    ///
+    /// Errors: non-finite input ([`Error::NonFinite`]), coincident or collinear control
+    /// points, or [`Error::NotDrawable`] when no segment of this α fits the triangle.
+    pub fn from_control_points(points: [Point; 3], alpha: f64) -> Result<Segment> {
+        check_alpha("alpha", alpha)?;
+        let tri = control_triangle(points)?;
+        // The shorter leg goes first (SPEC §3 step 2): there the angle is at least θd/2.
+        let (u, v) = (points[1] - points[0], points[2] - points[1]);
+        let reversed = u.x.hypot(u.y) > v.x.hypot(v.y);
+        let theta_e = if reversed {
+            tri.turning - tri.theta_e
+        } else {
+            tri.theta_e
+        };
+        let piece = solve(alpha, tri.turning, theta_e.max(0.5 * tri.turning))?;
+        let (first, last, chord) = if reversed {
+            (piece.end, piece.start, -piece.chord)
+        } else {
+            (piece.start, piece.end, piece.chord)
+        };
+        // The standard form turns left along increasing θ; traversed backwards it turns right.
+        let mirrored = (tri.turn == Turn::Left) == reversed;
+        let c = points[2] - points[0];
+        let c = Complex::new(c.x, if mirrored { -c.y } else { c.y });
+        let placement = Placement {
+            origin: points[0],
+            rot: c.div(chord),
+            mirrored,
+            turn: tri.turn,
+            theta_first: tri.theta_first,
+        };
+        let segment = Segment::new(alpha, piece.form, [first, last], chord, placement);
+        segment.check()?;
+        Ok(segment)
+    }
+
+    /// The one constructor: the piece of `form` from station `ends[0]` to `ends[1]` (in the
+    /// caller's order; `chord` = P(ends[1]) − P(ends[0]) in the standard form), placed by
+    /// `placement`.
+    pub(crate) fn new(
+        alpha: f64,
+        form: StandardForm,
+        [first, last]: [Station; 2],
+        chord: Complex,
+        placement: Placement,
+    ) -> Segment {
+        Segment {
+            alpha,
+            form,
+            first,
+            last,
+            chord,
+            origin: placement.origin,
+            rot: placement.rot,
+            scale: placement.rot.norm(),
+            mirrored: placement.mirrored,
+            turn: placement.turn,
+            theta_first: placement.theta_first,
+            turning: (last.theta - first.theta).abs(),
+        }
+    }
+
+    /// A solver's last look at its answer before returning it: every number finite, a
+    /// positive scale and length, and finite non-zero end curvatures.
+    pub(crate) fn check(&self) -> Result<()> {
+        let stations = [self.first, self.last];
+        let numbers = stations
+            .iter()
+            .flat_map(|st| [st.theta, st.s, st.ln_rho])
+            .chain([
+                self.alpha,
+                self.form.lambda,
+                self.chord.re,
+                self.chord.im,
+                self.rot.re,
+                self.rot.im,
+                self.theta_first,
+            ]);
+        let (k0, k1) = self.end_curvatures();
+        let ok = numbers.into_iter().all(f64::is_finite)
+            && self.scale > 0.0
+            && self.scale.is_finite()
+            && self.length() > 0.0
+            && self.length().is_finite()
+            && [k0, k1].iter().all(|k| k.is_finite() && *k != 0.0);
+        if ok {
+            Ok(())
+        } else {
+            Err(Error::NumericalFailure {
+                what: "the solved segment (a number overflowed or is not finite)",
+            })
+        }
+    }
+
+    /// The placement of this segment (to place a neighbour built on the same standard form).
+    pub(crate) fn placement(&self) -> Placement {
+        Placement {
+            origin: self.origin,
+            rot: self.rot,
+            mirrored: self.mirrored,
+            turn: self.turn,
+            theta_first: self.theta_first,
+        }
+    }
+
+    /// The slope α of the logarithmic curvature graph.
+    pub fn alpha(&self) -> f64 {
+        self.alpha
+    }
+
+    /// The Λ of the solved standard-form piece (ρ = 1 at the end that stays regular).
+    pub fn lambda(&self) -> f64 {
+        self.form.lambda
+    }
+
+    /// The standard-form curve this segment is a similar copy of.
+    pub fn standard_form(&self) -> StandardForm {
+        self.form
+    }
+
+    /// The turning angle θd of the control polygon, in (0, π) (for a piece of a compound
+    /// curve, the piece's own turning).
+    pub fn turning_angle(&self) -> f64 {
+        self.turning
+    }
+
+    /// Which way the segment turns.
+    pub fn turn(&self) -> Turn {
+        self.turn
+    }
+
+    /// Is this an exact circular arc (isosceles control triangle, Λ = 0)?
+    pub fn is_circle(&self) -> bool {
+        self.form.lambda == 0.0
+    }
+
+    /// The control points `[P0, P1, P2]`: the ends and the intersection of the end tangents.
+    pub fn control_points(&self) -> [Point; 3] {
+        let p0 = self.origin;
+        let p2 = self.caller_point(self.chord);
+        let t0 = Vec2::from_angle(self.theta_first);
+        let t1 = Vec2::from_angle(self.theta_of(&self.last));
+        // P1 = P0 + a t0 with (P2 − P0 − a t0) × t1 = 0.
+        let a = (p2 - p0).cross(t1) / t0.cross(t1);
+        [p0, p0 + a * t0, p2]
+    }
+
+    /// Arc length at which the tangent direction is `theta` (caller's frame, between
+    /// the start direction and the start direction ± θd).
+    pub fn s_at_theta(&self, theta: f64) -> Result<f64> {
+        Ok(self.s_of(&self.station_at_theta(theta)?))
+    }
+
+    /// Point where the tangent direction is `theta`.
+    pub fn point_at_theta(&self, theta: f64) -> Result<Point> {
+        Ok(self.point_of(&self.station_at_theta(theta)?))
+    }
+
+    /// Signed curvature where the tangent direction is `theta`.
+    pub fn curvature_at_theta(&self, theta: f64) -> Result<f64> {
+        Ok(self.kappa_of(&self.station_at_theta(theta)?))
+    }
+
+    /// The segment's logarithmic curvature graph, or `None` for a circular arc (Λ = 0,
+    /// where ρ is constant and the graph degenerates to a point at infinity).
+    ///
+    /// ```
+    /// use kurbo::Point;
+    /// use lac::Segment;
+    /// let seg = Segment::from_control_points(
+    ///     [Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(1.5, 1.0)], -1.0)?;
+    /// let lcg = seg.lcg().unwrap();
+    /// assert_eq!(lcg.alpha, -1.0);
+    /// # Ok::<(), lac::Error>(())
+    /// ```
+    pub fn lcg(&self) -> Option<LcgLine> {
+        let lambda = self.form.lambda;
+        if lambda <= 0.0 {
+            return None;
+        }
+        let ln_scale = self.scale.ln();
+        Some(LcgLine {
+            alpha: self.alpha,
+            intercept: (1.0 - self.alpha) * ln_scale - lambda.ln(),
+            log_rho: (ln_scale + self.first.ln_rho, ln_scale + self.last.ln_rho),
+        })
+    }
+
+    // The primitives the `Curve` trait, the sampling and the Bézier fits are built on.
+
+    /// Scale factor from standard-form lengths to the caller's.
+    #[inline]
+    pub(crate) fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    /// Arc length from the first to the last point.
+    pub(crate) fn length(&self) -> f64 {
+        (self.last.s - self.first.s).abs() * self.scale
+    }
+
+    /// Signed curvature at the first (`Which::First`) or last point.
+    pub(crate) fn end_curvatures(&self) -> (f64, f64) {
+        (self.kappa_of(&self.first), self.kappa_of(&self.last))
+    }
+
+    /// The first point.
+    pub(crate) fn first_point(&self) -> Point {
+        self.origin
+    }
+
+    /// The last point.
+    pub(crate) fn last_point(&self) -> Point {
+        self.caller_point(self.chord)
+    }
+
+    /// +1 along increasing standard-form θ, −1 when the caller's direction is reversed.
+    #[inline]
+    pub(crate) fn dir(&self) -> f64 {
+        if self.last.theta >= self.first.theta {
+            1.0
+        } else {
+            -1.0
+        }
+    }
+
+    /// The station at arc length `s` ∈ [0, length] (checked by the caller, see
+    /// `curve::locate`), anchored at the nearer end: near a singular end its ρ is known
+    /// exactly.
+    pub(crate) fn station_at_s(&self, s: f64) -> Result<Station> {
+        let len = self.length();
+        let s = clamp(s, 0.0, len);
+        let k = self.dir() / self.scale;
+        let st = if s <= 0.5 * len {
+            self.form.advance_s(&self.first, k * s)
+        } else {
+            self.form.advance_s(&self.last, -k * (len - s))
+        };
+        st.ok_or(Error::NumericalFailure {
+            what: "the station at an arc length of the segment",
+        })
+    }
+
+    pub(crate) fn station_at_theta(&self, theta: f64) -> Result<Station> {
+        finite("theta", theta)?;
+        let turn = self.turn.sign() * (theta - self.theta_first);
+        let slack = 1e-12 * self.turning;
+        if !(turn >= -slack && turn <= self.turning + slack) {
+            return Err(Error::OutOfRange {
+                name: "theta",
+                value: theta,
+                expected: "a tangent direction between those at the two ends of the segment",
+            });
+        }
+        self.station_at_turning(turn)
+    }
+
+    /// The station where the tangent has turned by `turn` ∈ [0, θd] from the first point.
+    pub(crate) fn station_at_turning(&self, turn: f64) -> Result<Station> {
+        let turn = clamp(turn, 0.0, self.turning);
+        let st = if turn <= 0.5 * self.turning {
+            self.form.advance_theta(&self.first, self.dir() * turn)
+        } else {
+            self.form
+                .advance_theta(&self.last, -self.dir() * (self.turning - turn))
+        };
+        st.ok_or(Error::NumericalFailure {
+            what: "the station at a tangent angle of the segment",
+        })
+    }
+
+    /// P(st) − P(first) in the standard form, integrating from the nearer end.
+    pub(crate) fn offset_of(&self, st: &Station) -> Complex {
+        let span = |a: &Station, b: &Station| {
+            if a.theta <= b.theta {
+                integrate(&self.form, a, b, false).value
+            } else {
+                -integrate(&self.form, b, a, false).value
+            }
+        };
+        if (st.theta - self.first.theta).abs() <= (self.last.theta - st.theta).abs() {
+            span(&self.first, st)
+        } else {
+            self.chord - span(st, &self.last)
+        }
+    }
+
+    pub(crate) fn caller_point(&self, offset: Complex) -> Point {
+        let z = self.rot * offset;
+        let z = if self.mirrored { z.conj() } else { z };
+        Point::new(self.origin.x + z.re, self.origin.y + z.im)
+    }
+
+    pub(crate) fn point_of(&self, st: &Station) -> Point {
+        self.caller_point(self.offset_of(st))
+    }
+
+    pub(crate) fn kappa_of(&self, st: &Station) -> f64 {
+        self.turn.sign() * st.kappa() / self.scale
+    }
+
+    pub(crate) fn theta_of(&self, st: &Station) -> f64 {
+        self.theta_first + self.turn.sign() * (st.theta - self.first.theta).abs()
+    }
+
+    pub(crate) fn s_of(&self, st: &Station) -> f64 {
+        (st.s - self.first.s).abs() * self.scale
+    }
+
+    /// dκ/ds at a station: with ρ the standard-form radius and σ the scale,
+    /// dκ/ds = −sign(κ)·dir·Λ ρ^(−1−α) / σ².
+    pub(crate) fn dkappa_ds_of(&self, ln_rho: f64) -> f64 {
+        let scale = self.scale;
+        -self.turn.sign() * self.dir() * self.form.lambda * (-(1.0 + self.alpha) * ln_rho).exp()
+            / (scale * scale)
+    }
+}

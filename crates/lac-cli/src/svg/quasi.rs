@@ -10,10 +10,11 @@ use lac::Curve;
 use lac::{QuasiCurve, RationalCubic, Sample, Segment};
 
 use super::comb::{max_curvature, Comb};
+use super::text::{Block, Entry, Key, Labels};
 use super::view::View;
 use super::{
-    bounding_box, caption_width, dot, drawing_size, marker, polyline, segments, short,
-    write_caption, write_runs, COMB, COMB_LENGTH, CURVE, JOINT, POLYGON, TOLERANCE,
+    bounding_box, control_points, dot, drawing_size, polyline, segments, short, CAPTION_SIZE, COMB,
+    COMB_LENGTH, CURVE, JOINT, LABEL_SIZE, POLYGON, TOLERANCE,
 };
 use crate::failure::Failure;
 
@@ -62,17 +63,12 @@ pub(crate) fn render(
     cubic: bool,
 ) -> Result<String, Failure> {
     let layers = Layers::new(pieces, points, lac_samples, quasi)?;
-    let legend = legend(quasi.pieces.len());
     let caption = caption(pieces, quasi, cubic);
-    let view = View::fit(
-        layers.bounds(),
-        caption_width(&legend).max(caption_width(&caption)),
-    );
+    let view = View::fit(layers.bounds(), &caption);
     let mut svg = String::new();
     open(&mut svg, &view, pieces, quasi.pieces.len(), cubic);
     layers.draw(&mut svg, &view, cubic);
-    write_runs(&mut svg, 20.0, &legend);
-    write_caption(&mut svg, &view, &caption);
+    view.caption(&mut svg, &caption);
     svg.push_str("</svg>\n");
     Ok(svg)
 }
@@ -178,9 +174,7 @@ impl Layers {
         for b in &self.beziers[..self.beziers.len() - 1] {
             dot(svg, view.px(b.points()[3]), JOINT);
         }
-        for (i, p) in polygon.iter().enumerate() {
-            marker(svg, *p, i);
-        }
+        control_points(svg, &polygon, &mut Labels::new(LABEL_SIZE), view.room());
     }
 }
 
@@ -326,57 +320,73 @@ fn count_of(count: usize, cubic: bool) -> String {
     format!("{count} {kind}{plural}")
 }
 
-/// The colour key, drawn above the picture.
-fn legend(count: usize) -> Vec<(&'static str, String)> {
-    let mut runs = vec![
-        (LAC, "▬ log-aesthetic curve".to_string()),
-        (BEZIER, "&#8195;▬ Bézier pieces and control polygons".into()),
-        (COMB, "&#8195;▬ curvature comb".into()),
-        (BEZIER_COMB, "&#8195;╍ comb of the pieces".into()),
-    ];
-    if count > 1 {
-        runs.push((JOINT, "&#8195;● joints".into()));
-    }
-    runs
-}
-
-/// "3 rational cubics  rms = …  max = … of the arc length  curvature increasing, proven".
-fn caption(pieces: &[Segment], quasi: &QuasiCurve, cubic: bool) -> Vec<(&'static str, String)> {
+/// The caption: the numbers of the fit, "α = …", "3 rational cubics", "deviation rms = …,
+/// max = … of the arc length …", "curvature increasing, proven", and on a line of its own
+/// the colour key.
+fn caption(pieces: &[Segment], quasi: &QuasiCurve, cubic: bool) -> Block {
     let length: f64 = pieces.iter().map(Curve::arc_length).sum();
-    let mut runs = vec![(
+    let mut facts: Vec<Entry> = super::slopes(pieces)
+        .into_iter()
+        .map(|text| Entry::plain(CURVE, text))
+        .collect();
+    facts.push(Entry::plain(CURVE, count_of(quasi.pieces.len(), cubic)));
+    facts.push(Entry::plain(
         CURVE,
         format!(
-            "{}&#8195;{}&#8195;deviation rms = {:.2e}, max = {:.2e} of the arc length {}",
-            super::slopes(pieces).join("&#8195;"),
-            count_of(quasi.pieces.len(), cubic),
+            "deviation rms = {:.2e}, max = {:.2e} of the arc length {}",
             quasi.rms,
             quasi.max,
             short(length)
         ),
-    )];
+    ));
     let verdicts: Vec<_> = quasi.pieces.iter().map(|p| p.monotonicity).collect();
     let bad = verdicts.iter().filter(|m| !m.verdict.is_monotone()).count();
     let first = verdicts[0].verdict.name();
-    let (colour, text) = if bad > 0 {
+    facts.push(if bad > 0 {
         let n = verdicts.len();
         let of = if n == 1 {
             String::new()
         } else {
             format!(" on {bad} of {n} pieces")
         };
-        (COMB, format!("&#8195;curvature not monotone{of}"))
+        Entry::plain(COMB, format!("curvature not monotone{of}"))
     } else if verdicts.iter().all(|m| m.verdict.name() == first) {
         let proven = if verdicts.iter().all(|m| m.proven) {
             ", proven"
         } else {
             ""
         };
-        (CURVE, format!("&#8195;curvature {first}{proven}"))
+        Entry::plain(CURVE, format!("curvature {first}{proven}"))
     } else {
-        (CURVE, "&#8195;curvature monotone on each piece".to_string())
-    };
-    runs.push((colour, text));
-    runs
+        Entry::plain(CURVE, "curvature monotone on each piece")
+    });
+    let mut key = vec![
+        Entry::keyed(Key::line(LAC, 1.0), "log-aesthetic curve"),
+        Entry::keyed(
+            Key::Line {
+                colour: BEZIER,
+                width: 4.0,
+                opacity: 0.5,
+                dash: None,
+            },
+            "Bézier pieces",
+        ),
+        Entry::keyed(Key::line(BEZIER_POLYGON, 0.8), "their control polygons"),
+        Entry::keyed(Key::line(COMB, 1.25), "curvature comb"),
+        Entry::keyed(
+            Key::Line {
+                colour: BEZIER_COMB,
+                width: 1.25,
+                opacity: 1.0,
+                dash: Some("5 3"),
+            },
+            "comb of the pieces",
+        ),
+    ];
+    if quasi.pieces.len() > 1 {
+        key.push(Entry::keyed(Key::Dot(JOINT), "joints"));
+    }
+    Block::new(CAPTION_SIZE).list(facts).list(key)
 }
 
 #[cfg(test)]

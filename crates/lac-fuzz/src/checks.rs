@@ -222,7 +222,7 @@ fn check_curve(
         &[len, curve.curvature_start(), curve.curvature_end()],
     )?;
     let (start, end) = (first_leg[0], last_leg[1]);
-    let chord = (end - start).hypot();
+    let chord = dist(end, start);
     let tol = bounds::POSITION * chord + rounding(&all);
     if !(len > 0.0 && len >= chord * (1.0 - 1e-12) - tol) {
         return Err(format!(
@@ -237,17 +237,14 @@ fn check_curve(
         finite("sample", &[s.s, s.point.x, s.point.y, s.theta, s.kappa])?;
     }
     let (a, b) = (samples[0], samples[samples.len() - 1]);
-    if (a.point - start).hypot() > tol {
+    if dist(a.point, start) > tol {
         return Err(format!(
             "starts {:e} from the first point",
-            (a.point - start).hypot()
+            dist(a.point, start)
         ));
     }
-    if (b.point - end).hypot() > 64.0 * tol {
-        return Err(format!(
-            "ends {:e} from the last point",
-            (b.point - end).hypot()
-        ));
+    if dist(b.point, end) > 64.0 * tol {
+        return Err(format!("ends {:e} from the last point", dist(b.point, end)));
     }
     let angle_tol = bounds::TANGENT + 1e3 * tol / chord;
     let leg0 = first_leg[1] - first_leg[0];
@@ -507,6 +504,11 @@ fn check_quasi(
         }
     }
     Ok(())
+}
+
+/// |a − b| without kurbo's overflow of the squares from 1e154 on.
+fn dist(a: Point, b: Point) -> f64 {
+    (a.x - b.x).hypot(a.y - b.y)
 }
 
 fn distance_to_segment(x: Point, p: Point, q: Point) -> f64 {

@@ -12,10 +12,10 @@
 use kurbo::{Point, Vec2};
 
 use crate::analysis::CurvaturePoint;
-use crate::error::{finite, Error, Result};
+use crate::error::{finite, Error, NotDrawable, Result};
 use crate::numeric::clamp;
 use crate::quasi::{self, Kind, QuasiCurve};
-use crate::segment::sampling::{check_count, Sample};
+use crate::segment::sampling::{check_count, Sample, MAX_ADAPTIVE_SAMPLES};
 use crate::segment::Segment;
 use crate::tolerance::Tolerance;
 
@@ -145,7 +145,21 @@ pub trait Curve {
 
     /// Samples such that the polyline through them stays within `accuracy` (an absolute
     /// distance, caller's units) of the curve; every joint is a sample.
+    ///
+    /// The work is bounded: a polyline within d of a curve of length L turning by Θ needs
+    /// about √(LΘ/(8d)) chords at most (∫√κ ds ≤ √(LΘ)), so an accuracy that would need
+    /// more than [`MAX_ADAPTIVE_SAMPLES`](crate::MAX_ADAPTIVE_SAMPLES) samples is refused.
     fn sample_adaptive(&self, accuracy: f64) -> Result<Vec<Sample>> {
+        finite("accuracy", accuracy)?;
+        let needed = (self.arc_length() * self.turning().abs() / (8.0 * accuracy)).sqrt();
+        if !(needed <= MAX_ADAPTIVE_SAMPLES as f64) {
+            return Err(Error::OutOfRange {
+                name: "accuracy",
+                value: accuracy,
+                expected: "an accuracy reachable with at most 1000000 samples (about \
+                           arc_length * turning / 8e12 or more)",
+            });
+        }
         let mut out: Vec<Sample> = Vec::new();
         let mut start = 0.0;
         for piece in self.pieces() {
@@ -205,6 +219,46 @@ pub trait Curve {
     fn to_cubics(&self, tolerance: Tolerance) -> Result<QuasiCurve> {
         quasi::replace(self.pieces(), Some(tolerance), Kind::Polynomial)
     }
+}
+
+/// The share of a curve's arc length next to each end in which it may not turn by more
+/// than [`HIDDEN_TURNING`]: a feature below a trillionth of the curve's size is resolved by
+/// its own coordinates (16 digits) to 4 digits or fewer, so no sample, polyline or export
+/// shows it.
+pub const HIDDEN_SHARE: f64 = 1e-12;
+
+/// The largest turning (radians) allowed within [`HIDDEN_SHARE`] of an end. A cusp end
+/// (α > 1, ρ → 0 with a definite tangent) turns by O(share^((α−1)/α)) there, well below it
+/// for α ≥ 1.2; a hook (all the turning at a radius far below the curve's size, as when a
+/// flat triangle meets α near 1) turns by tens of degrees.
+pub const HIDDEN_TURNING: f64 = 1e-2;
+
+/// A solver's check that no turning hides at an end of the chain: the turning within
+/// [`HIDDEN_SHARE`] of the arc length from the first and from the last point.
+pub(crate) fn check_visible_ends(pieces: &[Segment]) -> Result<()> {
+    let len: f64 = pieces.iter().map(Segment::length).sum();
+    let near = HIDDEN_SHARE * len;
+    let (first, last) = (&pieces[0], &pieces[pieces.len() - 1]);
+    let at_start = {
+        let s = near.min(first.length());
+        (first.theta_of(&first.station_at_s(s)?) - first.theta_of(&first.station_at_s(0.0)?)).abs()
+    };
+    let at_end = {
+        let l = last.length();
+        let s = (l - near).max(0.0);
+        (last.theta_of(&last.station_at_s(l)?) - last.theta_of(&last.station_at_s(s)?)).abs()
+    };
+    for (turning, at_first) in [(at_start, true), (at_end, false)] {
+        if turning > HIDDEN_TURNING {
+            let (k0, k1) = (first.end_curvatures().0, last.end_curvatures().1);
+            return Err(Error::NotDrawable(NotDrawable::HiddenTurn {
+                at_first,
+                turning,
+                curvature_ratio: if at_first { k0 / k1 } else { k1 / k0 }.abs(),
+            }));
+        }
+    }
+    Ok(())
 }
 
 /// Any run of consecutive pieces, as a curve.

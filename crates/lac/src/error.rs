@@ -234,6 +234,18 @@ pub enum NotDrawable {
         /// Its turning, radians.
         turning: f64,
     },
+    /// The curve would make a turn too small to draw at one of its ends: more than
+    /// [`HIDDEN_TURNING`](crate::HIDDEN_TURNING) within [`HIDDEN_SHARE`](crate::HIDDEN_SHARE)
+    /// of its length, at a radius of curvature far below its size. Its points would not
+    /// show the end tangent asked for.
+    HiddenTurn {
+        /// At the first point (else at the last).
+        at_first: bool,
+        /// The turning within that share of the length, radians.
+        turning: f64,
+        /// The curvature at that end divided by the curvature at the other.
+        curvature_ratio: f64,
+    },
     /// The torsion parameter Ω is too large for these four points, α, β and type: a
     /// segment exists for Ω up to `omega_max` (seed 003 §4).
     TorsionTooLarge {
@@ -318,6 +330,21 @@ impl fmt::Display for NotDrawable {
                  more symmetric, change the turning ratio, or use slopes closer to the range \
                  0..1",
                 turning.to_degrees(),
+            ),
+            NotDrawable::HiddenTurn {
+                at_first,
+                turning,
+                curvature_ratio,
+            } => write!(
+                f,
+                "the curve would turn by {:.2} deg within a trillionth of its length at its {} \
+                 point, where its curvature is {} times that at the other end: no drawing \
+                 could show that turn, and its points would not show the tangent asked for \
+                 there; make the legs of the control polygon more alike, or choose another \
+                 alpha",
+                turning.to_degrees(),
+                if at_first { "first" } else { "last" },
+                Num(curvature_ratio),
             ),
             NotDrawable::TorsionTooLarge { omega, omega_max } => write!(
                 f,

@@ -86,12 +86,12 @@ pub use analysis::{
 pub use bezier::{RationalCubic, RationalCubicDerivative};
 pub use bezier_chain::{BezierChain, BezierChainDerivative};
 pub use compound::{CompoundCurve, CompoundDerivative, MIN_PIECE_SHARE};
-pub use curve::Curve;
+pub use curve::{Curve, HIDDEN_SHARE, HIDDEN_TURNING};
 pub use error::{Error, ErrorKind, NotDrawable, Result};
 pub use lcg::LcgLine;
 pub use monotone::{Monotonicity, MonotonicityReport};
 pub use quasi::{QuasiCurve, QuasiPiece};
-pub use segment::{Sample, Segment, SegmentDerivative, MAX_ABS_ALPHA};
+pub use segment::{Sample, Segment, SegmentDerivative, MAX_ABS_ALPHA, MAX_ADAPTIVE_SAMPLES};
 pub use space::{
     BoundBy, EndBehaviour, RadiusCell, RadiusLimit, RatioLimit, SeedRow, SpaceClassification,
     SpaceEnd, TurningCell,

@@ -152,7 +152,7 @@ pub trait Curve {
     fn sample_adaptive(&self, accuracy: f64) -> Result<Vec<Sample>> {
         finite("accuracy", accuracy)?;
         let needed = (self.arc_length() * self.turning().abs() / (8.0 * accuracy)).sqrt();
-        if !(needed <= MAX_ADAPTIVE_SAMPLES as f64) {
+        if needed.is_nan() || needed > MAX_ADAPTIVE_SAMPLES as f64 {
             return Err(Error::OutOfRange {
                 name: "accuracy",
                 value: accuracy,

@@ -292,10 +292,12 @@ fn check_curve(
             }
         }
     }
-    for p in curve.evolute(9).map_err(|e| e.to_string())? {
+    // These may refuse with a typed error (dκ/ds beyond double range for tiny curves), but
+    // what they return must be finite.
+    for p in curve.evolute(9).unwrap_or_default() {
         finite("evolute", &[p.x, p.y])?;
     }
-    for p in curve.curvature_plot(9).map_err(|e| e.to_string())? {
+    for p in curve.curvature_plot(9).unwrap_or_default() {
         finite("curvature plot", &[p.s, p.kappa, p.dkappa_ds])?;
     }
     Ok(())
@@ -321,7 +323,7 @@ fn check_samples(samples: &[Sample], tol: f64, len: f64) -> Result<(), String> {
             return Err("samples not ascending in arc length".to_string());
         }
         let d = q.point - p.point;
-        let step = d.hypot();
+        let step = dist(q.point, p.point);
         polyline += step;
         // Skip chords that rounding dominates.
         if step > 1e6 * tol {
@@ -471,8 +473,8 @@ fn check_quasi(
         let m = p.monotonicity;
         let faithful = match m.verdict {
             Monotonicity::Constant => true,
-            Monotonicity::Increasing => m.proven && (constant || k1.abs() >= k0.abs()),
-            Monotonicity::Decreasing => m.proven && (constant || k1.abs() <= k0.abs()),
+            Monotonicity::Increasing => m.proven && (constant || k1 >= k0),
+            Monotonicity::Decreasing => m.proven && (constant || k1 <= k0),
             Monotonicity::NotMonotone { .. } => constant,
         };
         if !faithful {

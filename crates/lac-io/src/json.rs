@@ -86,7 +86,9 @@ impl ErrorBody {
     /// How a front end should treat it.
     pub fn class(&self) -> ErrorClass {
         match self.kind.as_str() {
-            "not_drawable" | "fit_failed" | "tolerance_not_met" => ErrorClass::Undrawable,
+            "not_drawable" | "fit_failed" | "tolerance_not_met" | "too_many_pieces" => {
+                ErrorClass::Undrawable
+            }
             "io" => ErrorClass::Io,
             "internal" | "numerical_failure" => ErrorClass::Internal,
             _ => ErrorClass::Invalid,

@@ -11,7 +11,7 @@ PY := $(VENV)/bin/python
 CARGO_TEST := cargo test --locked --workspace
 LAC_BIN := $(or $(CARGO_TARGET_DIR),$(CURDIR)/target)/debug/lac
 
-.PHONY: test rust python docs fixtures bench example
+.PHONY: test rust python docs fixtures bench example fuzz
 
 test: rust python
 
@@ -34,6 +34,14 @@ $(VENV)/.installed: tools/reference/requirements.txt
 # `lac`; `make test` fails while a committed figure differs from what its command draws.
 docs:
 	LAC_WRITE_FIGURES=1 $(CARGO_TEST) --test readme_figures -- --nocapture
+
+# The seeded random and adversarial driver, a million inputs per entry point (make test runs
+# a hundred thousand); FUZZ_SEED picks another stream. Exit code 1 on any panic, invariant
+# violation or call over a second; `lac-fuzz --replay FILE` reruns printed inputs.
+FUZZ_COUNT ?= 1000000
+FUZZ_SEED ?= 1
+fuzz:
+	cargo run --locked --release -p lac-fuzz -- --count $(FUZZ_COUNT) --seed $(FUZZ_SEED)
 
 # Regenerate the 40-digit reference fixtures (about 15 minutes; the output is committed).
 fixtures: $(VENV)/.installed

@@ -6,7 +6,7 @@
 
 use std::fmt::Write as _;
 
-use lac::Frame;
+use lac::{Frame, Vec3};
 
 /// Wavefront OBJ: `header` as `#` comments, a vertex `v x y z` per frame and one polyline
 /// `l 1 2 … n` through them (OBJ indices start at 1).
@@ -17,7 +17,7 @@ pub(crate) fn obj(frames: &[Frame], header: &[String]) -> String {
     }
     out.push_str("o lac_space_segment\n");
     for f in frames {
-        let [x, y, z] = f.point;
+        let Vec3 { x, y, z } = f.point;
         let _ = writeln!(out, "v {x:?} {y:?} {z:?}");
     }
     out.push('l');
@@ -43,7 +43,7 @@ pub(crate) fn ply(frames: &[Frame], header: &[String]) -> String {
     let _ = writeln!(out, "element edge {}", frames.len().saturating_sub(1));
     out.push_str("property int vertex1\nproperty int vertex2\nend_header\n");
     for f in frames {
-        let [x, y, z] = f.point;
+        let Vec3 { x, y, z } = f.point;
         let _ = writeln!(out, "{x:?} {y:?} {z:?} {:?} {:?}", f.curvature, f.torsion);
     }
     for i in 1..frames.len() {
@@ -65,10 +65,10 @@ mod tests {
         (0..n)
             .map(|i| Frame {
                 s: i as f64,
-                point: [i as f64, 0.5, -1e-20],
-                tangent: [1.0, 0.0, 0.0],
-                normal: [0.0, 1.0, 0.0],
-                binormal: [0.0, 0.0, 1.0],
+                point: Vec3::new(i as f64, 0.5, -1e-20),
+                tangent: Vec3::X,
+                normal: Vec3::Y,
+                binormal: Vec3::Z,
                 curvature: 2.0,
                 torsion: -0.25,
             })

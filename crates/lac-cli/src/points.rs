@@ -2,6 +2,7 @@
 //! spaces and/or semicolons.
 
 use kurbo::Point;
+use lac::Vec3;
 
 use crate::failure::Failure;
 
@@ -25,9 +26,9 @@ pub(crate) fn parse_point_list(text: &str, counts: &[usize]) -> Result<Vec<Point
 
 /// Parse exactly four space points "x0,y0,z0 x1,y1,z1 x2,y2,z2 x3,y3,z3", as
 /// [`parse_points`] does.
-pub(crate) fn parse_space_points(text: &str) -> Result<[[f64; 3]; 4], Failure> {
+pub(crate) fn parse_space_points(text: &str) -> Result<[Vec3; 4], Failure> {
     let points = parse_coordinates::<3>(text, &[4])?;
-    Ok([points[0], points[1], points[2], points[3]])
+    Ok([points[0], points[1], points[2], points[3]].map(Vec3::from_array))
 }
 
 /// Parse as many points of `N` coordinates as one of `counts` (ascending) allows.
@@ -201,10 +202,10 @@ mod tests {
         assert_eq!(
             parse_space_points("0,0,0 1,0,0; 2, 1, 0.5 -2,2,-1e0").unwrap(),
             [
-                [0.0, 0.0, 0.0],
-                [1.0, 0.0, 0.0],
-                [2.0, 1.0, 0.5],
-                [-2.0, 2.0, -1.0]
+                Vec3::new(0.0, 0.0, 0.0),
+                Vec3::new(1.0, 0.0, 0.0),
+                Vec3::new(2.0, 1.0, 0.5),
+                Vec3::new(-2.0, 2.0, -1.0)
             ]
         );
         for text in [

@@ -1,7 +1,7 @@
 //! `lac space`: a log-aesthetic space curve segment (seed 003, SPEC §6) from four 3-D control
 //! points, α, β, Ω and the torsion type, as JSON, SVG, OBJ or PLY.
 
-use lac::{Frame, SpaceSegment, TorsionType};
+use lac::{Frame, SpaceSegment, SpaceShape, TorsionType, Vec3};
 use serde::Serialize;
 
 use crate::cli::{SpaceArgs, SpaceFormat};
@@ -85,7 +85,7 @@ struct SampleRow {
 
 impl SampleRow {
     fn new(f: &Frame, frames: bool) -> Self {
-        let [x, y, z] = f.point;
+        let Vec3 { x, y, z } = f.point;
         SampleRow {
             s: f.s,
             x,
@@ -93,9 +93,9 @@ impl SampleRow {
             z,
             kappa: f.curvature,
             tau: f.torsion,
-            t: frames.then_some(f.tangent),
-            n: frames.then_some(f.normal),
-            b: frames.then_some(f.binormal),
+            t: frames.then_some(f.tangent.to_array()),
+            n: frames.then_some(f.normal.to_array()),
+            b: frames.then_some(f.binormal.to_array()),
         }
     }
 }
@@ -120,9 +120,13 @@ pub(crate) fn run(args: &SpaceArgs) -> Result<(), Failure> {
         ));
     }
     let points = parse_space_points(&args.points)?;
-    let kind = TorsionType::from_number(args.torsion_type)?;
-    let segment =
-        SpaceSegment::from_control_points(points, args.alpha, args.beta, args.omega, kind)?;
+    let shape = SpaceShape {
+        alpha: args.alpha,
+        beta: args.beta,
+        omega: args.omega,
+        torsion: TorsionType::from_number(args.torsion_type)?,
+    };
+    let segment = SpaceSegment::from_control_points(points, shape)?;
     let samples = args.samples as usize;
     let document = match args.format {
         SpaceFormat::Json => to_json_line(&segment, samples, args.frames)? + "\n",
@@ -149,7 +153,7 @@ fn to_json_line(segment: &SpaceSegment, samples: usize, frames: bool) -> Result<
         transform: segment.transform().map(|t| TransformRow {
             scale: t.scale,
             rotation: t.rotation,
-            translation: t.translation,
+            translation: t.translation.to_array(),
             mirror_z: t.mirror_z,
             reversed: t.reversed,
         }),
@@ -167,7 +171,7 @@ fn to_json_line(segment: &SpaceSegment, samples: usize, frames: bool) -> Result<
             PlanarRow {
                 alpha: planar.alpha(),
                 lambda: planar.lambda(),
-                control_points,
+                control_points: control_points.map(Vec3::to_array),
             }
         }),
         note: segment.is_planar().then_some(PLANAR_NOTE),
@@ -178,17 +182,16 @@ fn to_json_line(segment: &SpaceSegment, samples: usize, frames: bool) -> Result<
 /// The control points of the planar segment drawn for coplanar points, in the caller's
 /// coordinates: the planar segment lives in the plane with origin P0, x along P1 − P0 and y
 /// toward the chord ([`SpaceSegment::planar`]). `None` when the segment is not planar.
-pub(crate) fn planar_control_points(segment: &SpaceSegment) -> Option<[[f64; 3]; 3]> {
+pub(crate) fn planar_control_points(segment: &SpaceSegment) -> Option<[Vec3; 3]> {
     let planar = segment.planar()?;
     let [p0, p1, _, p3] = segment.control_points();
-    let e1 = unit(sub(p1, p0));
-    let chord = sub(p3, p0);
-    let e2 = unit(add_scaled(chord, -dot(chord, e1), e1));
-    Some(
-        planar
-            .control_points()
-            .map(|q| add_scaled(add_scaled(p0, q.x, e1), q.y, e2)),
-    )
+    // Divided by the length rather than `Vec3::normalize`d (a product with its reciprocal),
+    // so that the printed digits stay those the command has always printed.
+    let unit = |v: Vec3| v / v.length();
+    let e1 = unit(p1 - p0);
+    let chord = p3 - p0;
+    let e2 = unit(chord - chord.dot(e1) * e1);
+    Some(planar.control_points().map(|q| p0 + q.x * e1 + q.y * e2))
 }
 
 /// The comment lines of OBJ and PLY files: what was solved and how to read the numbers.
@@ -196,7 +199,7 @@ fn header(segment: &SpaceSegment, samples: usize) -> Vec<String> {
     let points: Vec<String> = segment
         .control_points()
         .iter()
-        .map(|[x, y, z]| format!("{x:?},{y:?},{z:?}"))
+        .map(|Vec3 { x, y, z }| format!("{x:?},{y:?},{z:?}"))
         .collect();
     let mut lines = vec![
         format!(
@@ -231,30 +234,4 @@ fn header(segment: &SpaceSegment, samples: usize) -> Vec<String> {
         segment.arc_length()
     ));
     lines
-}
-
-pub(crate) fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-pub(crate) fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-pub(crate) fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-/// `a + k b`.
-pub(crate) fn add_scaled(a: [f64; 3], k: f64, b: [f64; 3]) -> [f64; 3] {
-    [a[0] + k * b[0], a[1] + k * b[1], a[2] + k * b[2]]
-}
-
-pub(crate) fn unit(a: [f64; 3]) -> [f64; 3] {
-    let n = dot(a, a).sqrt();
-    [a[0] / n, a[1] / n, a[2] / n]
 }

@@ -5,7 +5,7 @@
 mod common;
 
 use common::{assert_failure, assert_keys, json, lac, Run};
-use lac::{SpaceForm, TorsionType};
+use lac::{SpaceForm, SpaceFormParams, TorsionType, Vec3};
 use serde_json::Value;
 
 /// Non-coplanar, solved as given (not reversed, not mirrored).
@@ -39,65 +39,38 @@ fn f(v: &Value) -> f64 {
     v.as_f64().unwrap_or_else(|| panic!("{v} is not a number"))
 }
 
-fn vec3(v: &Value) -> [f64; 3] {
+fn vec3(v: &Value) -> Vec3 {
     let a = v
         .as_array()
         .unwrap_or_else(|| panic!("{v} is not an array"));
     assert_eq!(a.len(), 3, "{v}");
-    [f(&a[0]), f(&a[1]), f(&a[2])]
+    Vec3::new(f(&a[0]), f(&a[1]), f(&a[2]))
 }
 
-fn at(sample: &Value) -> [f64; 3] {
-    [f(&sample["x"]), f(&sample["y"]), f(&sample["z"])]
+fn at(sample: &Value) -> Vec3 {
+    Vec3::new(f(&sample["x"]), f(&sample["y"]), f(&sample["z"]))
 }
 
-fn control_points(text: &str) -> [[f64; 3]; 4] {
-    let p: Vec<[f64; 3]> = text
+fn control_points(text: &str) -> [Vec3; 4] {
+    let p: Vec<Vec3> = text
         .split_whitespace()
         .map(|t| {
             let c: Vec<f64> = t.split(',').map(|x| x.parse().unwrap()).collect();
-            [c[0], c[1], c[2]]
+            Vec3::new(c[0], c[1], c[2])
         })
         .collect();
     [p[0], p[1], p[2], p[3]]
 }
 
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {
-    dot(sub(a, b), sub(a, b)).sqrt()
-}
-
-fn unit(a: [f64; 3]) -> [f64; 3] {
-    let n = dot(a, a).sqrt();
-    a.map(|c| c / n)
-}
-
 /// `translation + scale · rotation · M · p`, as the JSON documents it.
-fn apply(transform: &Value, p: [f64; 3]) -> [f64; 3] {
+fn apply(transform: &Value, p: Vec3) -> Vec3 {
     let scale = f(&transform["scale"]);
-    let t = vec3(&transform["translation"]);
-    let q = direction(transform, p);
-    [0, 1, 2].map(|i| t[i] + scale * q[i])
+    vec3(&transform["translation"]) + scale * direction(transform, p)
 }
 
 /// `rotation · M · v`.
-fn direction(transform: &Value, v: [f64; 3]) -> [f64; 3] {
-    let r: Vec<[f64; 3]> = transform["rotation"]
+fn direction(transform: &Value, v: Vec3) -> Vec3 {
+    let r: Vec<Vec3> = transform["rotation"]
         .as_array()
         .unwrap()
         .iter()
@@ -105,37 +78,37 @@ fn direction(transform: &Value, v: [f64; 3]) -> [f64; 3] {
         .collect();
     assert_eq!(r.len(), 3);
     let m = if transform["mirror_z"].as_bool().unwrap() {
-        [v[0], v[1], -v[2]]
+        Vec3::new(v.x, v.y, -v.z)
     } else {
         v
     };
-    [0, 1, 2].map(|i| dot(r[i], m))
+    Vec3::new(r[0].dot(m), r[1].dot(m), r[2].dot(m))
 }
 
 /// The standard form the JSON describes, built by the library.
 fn standard_form(v: &Value) -> SpaceForm {
     let form = &v["standard_form"];
-    SpaceForm::new(
-        f(&form["alpha"]),
-        f(&form["beta"]),
-        f(&form["lambda"]),
-        f(&form["omega"]),
-        f(&form["nu"]),
-        TorsionType::from_number(form["type"].as_u64().unwrap() as u8).unwrap(),
-    )
+    SpaceForm::new(SpaceFormParams {
+        alpha: f(&form["alpha"]),
+        beta: f(&form["beta"]),
+        lambda: f(&form["lambda"]),
+        omega: f(&form["omega"]),
+        nu: f(&form["nu"]),
+        torsion: TorsionType::from_number(form["type"].as_u64().unwrap() as u8).unwrap(),
+    })
     .unwrap()
 }
 
 /// The checks every solved result passes: ends at P0 and P3 within 1e-9 of the chord, equal
 /// spacing in arc length, positive curvature, exactly the documented sample keys.
-fn assert_samples_span_the_points(v: &Value, points: [[f64; 3]; 4], n: usize) {
+fn assert_samples_span_the_points(v: &Value, points: [Vec3; 4], n: usize) {
     let samples = v["samples"].as_array().unwrap();
     assert_eq!(samples.len(), n);
-    let chord = dist(points[0], points[3]);
+    let chord = points[0].distance(points[3]);
     let first = at(&samples[0]);
     let last = at(&samples[n - 1]);
-    assert!(dist(first, points[0]) <= 1e-9 * chord, "{first:?}");
-    assert!(dist(last, points[3]) <= 1e-9 * chord, "{last:?}");
+    assert!(first.distance(points[0]) <= 1e-9 * chord, "{first:?}");
+    assert!(last.distance(points[3]) <= 1e-9 * chord, "{last:?}");
     let length = f(&v["arc_length"]);
     assert!(length > chord);
     for (i, s) in samples.iter().enumerate() {
@@ -148,7 +121,10 @@ fn assert_samples_span_the_points(v: &Value, points: [[f64; 3]; 4], n: usize) {
         assert!(f(&s["kappa"]) > 0.0, "sample {i}: {s}");
     }
     // The polyline through the samples is a little shorter than the curve.
-    let polyline: f64 = samples.windows(2).map(|w| dist(at(&w[0]), at(&w[1]))).sum();
+    let polyline: f64 = samples
+        .windows(2)
+        .map(|w| at(&w[0]).distance(at(&w[1])))
+        .sum();
     assert!(polyline <= length * (1.0 + 1e-12), "{polyline} {length}");
     if n >= 33 {
         assert!(polyline > (1.0 - 1e-3) * length, "{polyline} {length}");
@@ -247,7 +223,7 @@ fn the_transform_maps_the_standard_form_onto_the_samples() {
                 ],
             );
             let p = control_points(points);
-            let chord = dist(p[0], p[3]);
+            let chord = p[0].distance(p[3]);
             let transform = &v["transform"];
             assert_eq!(transform["reversed"], reversed, "{points}");
             let form = standard_form(&v);
@@ -257,18 +233,18 @@ fn the_transform_maps_the_standard_form_onto_the_samples() {
             // The standard form starts at the origin, tangent +x: at P0 along P1 − P0, or,
             // reversed, at P3 along P2 − P3.
             let (start, towards) = if reversed { (p[3], p[2]) } else { (p[0], p[1]) };
-            assert!(dist(vec3(&transform["translation"]), start) <= 1e-12 * chord);
-            let t = direction(transform, [1.0, 0.0, 0.0]);
-            assert!(dist(t, unit(sub(towards, start))) < 1e-12, "{t:?}");
+            assert!(vec3(&transform["translation"]).distance(start) <= 1e-12 * chord);
+            let t = direction(transform, Vec3::X);
+            assert!(t.distance((towards - start).normalize()) < 1e-12, "{t:?}");
             let end = if reversed { p[0] } else { p[3] };
             let mapped = apply(transform, form.frame_at(s_end).unwrap().point);
-            assert!(dist(mapped, end) <= 1e-9 * chord, "{mapped:?} {end:?}");
+            assert!(mapped.distance(end) <= 1e-9 * chord, "{mapped:?} {end:?}");
             // Every sample is the standard form's point at the matching arc length.
             for sample in v["samples"].as_array().unwrap().iter().step_by(8) {
                 let s = f(&sample["s"]) / scale;
                 let s = if reversed { s_end - s } else { s };
                 let frame = form.frame_at(s.max(0.0)).unwrap();
-                assert!(dist(apply(transform, frame.point), at(sample)) <= 1e-9 * chord);
+                assert!(apply(transform, frame.point).distance(at(sample)) <= 1e-9 * chord);
                 assert!((frame.curvature / scale - f(&sample["kappa"])).abs() < 1e-9);
             }
         }
@@ -279,7 +255,7 @@ fn the_transform_maps_the_standard_form_onto_the_samples() {
 fn torsion_has_the_handedness_of_the_control_polygon() {
     for points in [PLAIN, MIRRORED, REVERSED, ABOVE] {
         let p = control_points(points);
-        let handed = dot(cross(sub(p[1], p[0]), sub(p[2], p[1])), sub(p[3], p[2]));
+        let handed = (p[1] - p[0]).cross(p[2] - p[1]).dot(p[3] - p[2]);
         for omega in ["0", "0.3"] {
             let (v, _) = solved(points, &["--alpha", "0", "--beta", "0", "--omega", omega]);
             let mirrored = v["transform"]["mirror_z"].as_bool().unwrap();
@@ -335,19 +311,19 @@ fn frames_adds_orthonormal_frenet_frames() {
             (t, b, 0.0),
             (n, b, 0.0),
         ] {
-            assert!((dot(u, w) - want).abs() < 1e-12, "sample {i}");
+            assert!((u.dot(w) - want).abs() < 1e-12, "sample {i}");
         }
-        assert!(dist(cross(t, n), b) < 1e-12, "right-handed");
+        assert!(t.cross(n).distance(b) < 1e-12, "right-handed");
         if i + 1 < samples.len() {
             // The chord to the next sample leans along t and toward n.
-            let step = sub(at(&samples[i + 1]), at(s));
-            assert!(dot(step, t) > 0.99 * dot(step, step).sqrt());
-            assert!(dot(step, n) > 0.0);
+            let step = at(&samples[i + 1]) - at(s);
+            assert!(step.dot(t) > 0.99 * step.length());
+            assert!(step.dot(n) > 0.0);
         }
     }
     let p = control_points(PLAIN);
-    assert!(dist(vec3(&samples[0]["t"]), unit(sub(p[1], p[0]))) < 1e-12);
-    assert!(dist(vec3(&samples[8]["t"]), unit(sub(p[3], p[2]))) < 1e-9);
+    assert!(vec3(&samples[0]["t"]).distance((p[1] - p[0]).normalize()) < 1e-12);
+    assert!(vec3(&samples[8]["t"]).distance((p[3] - p[2]).normalize()) < 1e-9);
 }
 
 #[test]
@@ -373,18 +349,19 @@ fn coplanar_points_give_the_planar_segment_with_a_note() {
     let planar_text = &text[text.find(r#""planar_segment""#).unwrap()..];
     assert_keys(planar_text, planar, &["alpha", "lambda", "control_points"]);
     assert_eq!(planar["alpha"], 0.0);
-    let cp: Vec<[f64; 3]> = planar["control_points"]
+    let cp: Vec<Vec3> = planar["control_points"]
         .as_array()
         .unwrap()
         .iter()
         .map(vec3)
         .collect();
     // P0, the tangents' intersection (2, 0, 0), P3.
-    for (got, want) in cp
-        .iter()
-        .zip([[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [2.0, 2.0, 0.0]])
-    {
-        assert!(dist(*got, want) < 1e-12, "{got:?}");
+    for (got, want) in cp.iter().zip([
+        Vec3::new(0.0, 0.0, 0.0),
+        Vec3::new(2.0, 0.0, 0.0),
+        Vec3::new(2.0, 2.0, 0.0),
+    ]) {
+        assert!(got.distance(want) < 1e-12, "{got:?}");
     }
     assert_samples_span_the_points(&v, control_points("0,0,0 1,0,0 2,1,0 2,2,0"), 65);
     for s in v["samples"].as_array().unwrap() {
@@ -557,13 +534,13 @@ fn obj_is_one_vertex_per_sample_and_one_polyline() {
     assert_eq!(run.code, 0, "{}", run.stderr);
     let lines: Vec<&str> = run.stdout.lines().collect();
     assert!(lines[0].starts_with("# lac space"));
-    let vertices: Vec<[f64; 3]> = lines
+    let vertices: Vec<Vec3> = lines
         .iter()
         .filter_map(|l| l.strip_prefix("v "))
         .map(|l| {
             let c: Vec<f64> = l.split(' ').map(|x| x.parse().unwrap()).collect();
             assert_eq!(c.len(), 3);
-            [c[0], c[1], c[2]]
+            Vec3::new(c[0], c[1], c[2])
         })
         .collect();
     assert_eq!(vertices.len(), 33);

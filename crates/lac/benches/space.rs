@@ -7,14 +7,14 @@
 //! |P3 − P2| uniform in [0.3, 1], Ω uniform in [0, 0.5], type 1 or 2 with equal chance.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
-use lac::{SpaceSegment, TorsionType};
+use lac::{SpaceSegment, SpaceShape, TorsionType, Vec3};
 use std::hint::black_box;
 
 mod common;
 use common::{median_per_call, Rng};
 
 /// One random input: points, Ω and type.
-type Input = ([[f64; 3]; 4], f64, TorsionType);
+type Input = ([Vec3; 4], f64, TorsionType);
 
 fn random_inputs(seed: u64, n: usize) -> Vec<Input> {
     let mut rng = Rng(seed);
@@ -26,14 +26,14 @@ fn random_inputs(seed: u64, n: usize) -> Vec<Input> {
             let t2 = sign * (0.05 + (std::f64::consts::PI - 0.1) * rng.next());
             let (l0, l1) = (0.3 + 0.7 * rng.next(), 0.3 + 0.7 * rng.next());
             let p = [
-                [-1.0, 0.0, 0.0],
-                [-1.0 + l0 * t0.cos(), l0 * t0.sin(), 0.0],
-                [
+                Vec3::new(-1.0, 0.0, 0.0),
+                Vec3::new(-1.0 + l0 * t0.cos(), l0 * t0.sin(), 0.0),
+                Vec3::new(
                     1.0 - l1 * t1.cos(),
                     l1 * t1.sin() * t2.cos(),
                     l1 * t1.sin() * t2.sin(),
-                ],
-                [1.0, 0.0, 0.0],
+                ),
+                Vec3::new(1.0, 0.0, 0.0),
             ];
             let omega = 0.5 * rng.next();
             let kind = if rng.next() < 0.5 {
@@ -51,8 +51,14 @@ fn bench_solve(c: &mut Criterion) {
     for alpha in [-1.0, 0.0, 1.0] {
         for beta in [-1.0, 0.0, 1.0] {
             let inputs = random_inputs(0x3D_5EED, 256);
-            let solve = |(p, omega, kind): &Input| {
-                SpaceSegment::from_control_points(*p, alpha, beta, *omega, *kind)
+            let solve = |&(p, omega, torsion): &Input| {
+                let shape = SpaceShape {
+                    alpha,
+                    beta,
+                    omega,
+                    torsion,
+                };
+                SpaceSegment::from_control_points(p, shape)
             };
             let (solvable, failing): (Vec<Input>, Vec<Input>) =
                 inputs.iter().partition(|i| solve(i).is_ok());

@@ -10,7 +10,7 @@ use crate::curve::{locate, Curve};
 use crate::error::{finite, Error, NotDrawable, Result};
 use crate::lcg::LcgLine;
 use crate::numeric::Complex;
-use crate::segment::{control_triangle, Placement, Segment, Travel};
+use crate::segment::{check_alpha, control_triangle, normalized, Placement, Segment, Travel};
 use crate::turn::Turn;
 
 /// A compound-rhythm log-aesthetic curve: a piece of slope α0 from the first control point
@@ -48,6 +48,13 @@ pub struct CompoundCurve {
     pieces: [Segment; 2],
 }
 
+/// The shortest piece a compound curve may have, as a share of its arc length. Shorter
+/// pieces (seen where α0 > 1 meets α1 < 0 and the control points demand a curvature ratio
+/// of e^40 or more) turn by their share of the polygon's turning within less than a
+/// billionth of the curve: no sampled or exported form of the curve could show it, and
+/// its end tangent would not be the one its points suggest.
+pub const MIN_PIECE_SHARE: f64 = 1e-9;
+
 /// The caller's problem, in the caller's order.
 struct Input {
     start: Point,
@@ -69,8 +76,8 @@ impl CompoundCurve {
         alpha1: f64,
         ratio: f64,
     ) -> Result<Self> {
-        finite("alpha0", alpha0)?;
-        finite("alpha1", alpha1)?;
+        check_alpha("alpha0", alpha0)?;
+        check_alpha("alpha1", alpha1)?;
         finite("ratio", ratio)?;
         if !(ratio > 0.0 && ratio < 1.0) {
             return Err(Error::OutOfRange {
@@ -96,8 +103,8 @@ impl CompoundCurve {
     /// to P1 − P0, ends at P3 tangent to P3 − P2, and its joint's tangent is parallel to
     /// P2 − P1 (seed 002). The polygon must turn one way only.
     pub fn from_four_points(points: [Point; 4], alpha0: f64, alpha1: f64) -> Result<Self> {
-        finite("alpha0", alpha0)?;
-        finite("alpha1", alpha1)?;
+        check_alpha("alpha0", alpha0)?;
+        check_alpha("alpha1", alpha1)?;
         const NAMES: [[&str; 2]; 4] = [
             ["P0.x", "P0.y"],
             ["P1.x", "P1.y"],
@@ -121,6 +128,17 @@ impl CompoundCurve {
             points[2] - points[1],
             points[3] - points[2],
         ];
+        let chord = points[3] - points[0];
+        if !legs.iter().chain([&chord]).all(|v| v.x.hypot(v.y).is_finite()) {
+            return Err(Error::OutOfRange {
+                name: "control points",
+                value: f64::INFINITY,
+                expected: "coordinates whose differences do not overflow",
+            });
+        }
+        // Angles only: legs and chord scaled (exactly) to magnitudes near 1.
+        let [l0, l1, l2, chord] = normalized([legs[0], legs[1], legs[2], chord]);
+        let legs = [l0, l1, l2];
         let turn = |a: Vec2, b: Vec2| a.cross(b).atan2(a.dot(b));
         let (t0, t1) = (turn(legs[0], legs[1]), turn(legs[1], legs[2]));
         let pi = std::f64::consts::PI;
@@ -139,7 +157,6 @@ impl CompoundCurve {
             });
         }
         let sign = direction.sign();
-        let chord = points[3] - points[0];
         let theta_e = (sign * turn(legs[0], chord)).rem_euclid(std::f64::consts::TAU);
         let turning = t0.abs() + t1.abs();
         if !(theta_e > 0.0 && theta_e < turning) {
@@ -222,6 +239,23 @@ impl CompoundCurve {
             placement.theta_first += input.turn.sign() * input.theta[i];
             seg
         });
+        for piece in &pieces {
+            piece.check()?;
+        }
+        // A piece too short to draw in floating point is a hook that no sample shows: its
+        // turning would happen below the rounding of the curve's own coordinates.
+        let total = pieces[0].length() + pieces[1].length();
+        for (i, piece) in pieces.iter().enumerate() {
+            let share = piece.length() / total;
+            if share < MIN_PIECE_SHARE {
+                return Err(Error::NotDrawable(NotDrawable::PieceTooShort {
+                    piece: i,
+                    alpha: piece.alpha(),
+                    share,
+                    turning: piece.turning_angle(),
+                }));
+            }
+        }
         Ok(CompoundCurve { pieces })
     }
 
@@ -299,7 +333,7 @@ impl ParamCurve for CompoundCurve {
         let (lo, hi) = (a.min(b), a.max(b));
         // Forward parts as (piece, from, to) in the piece's own arc length.
         let in0 = |x: f64| x.min(joint);
-        let in1 = |x: f64| (x - joint).clamp(0.0, l1);
+        let in1 = |x: f64| crate::numeric::clamp(x - joint, 0.0, l1);
         let parts = if hi <= joint {
             [(0, lo, hi), (0, hi, hi)]
         } else if lo >= joint {

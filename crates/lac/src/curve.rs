@@ -13,6 +13,7 @@ use kurbo::{Point, Vec2};
 
 use crate::analysis::CurvaturePoint;
 use crate::error::{finite, Error, Result};
+use crate::numeric::clamp;
 use crate::segment::sampling::{check_count, Sample};
 use crate::segment::Segment;
 
@@ -191,7 +192,8 @@ impl Curve for Segment {
 }
 
 /// The piece holding arc length `s` and the arc length within it, measured from whichever
-/// end of the piece is nearer (see the module documentation), within [0, piece length].
+/// end of the piece is nearer (see the module documentation), within [0, piece length]. A
+/// joint belongs to the piece after it, so the last point is always on the last piece.
 pub(crate) fn locate(pieces: &[Segment], s: f64) -> Result<(&Segment, f64)> {
     finite("s", s)?;
     let len: f64 = pieces.iter().map(Segment::length).sum();
@@ -207,7 +209,7 @@ pub(crate) fn locate(pieces: &[Segment], s: f64) -> Result<(&Segment, f64)> {
     for (i, piece) in pieces.iter().enumerate() {
         let length = piece.length();
         let end = start + length;
-        if s <= end || i + 1 == pieces.len() {
+        if s < end || i + 1 == pieces.len() {
             return Ok((piece, local_s(s, start, end, length)));
         }
         start = end;
@@ -219,14 +221,14 @@ pub(crate) fn locate(pieces: &[Segment], s: f64) -> Result<(&Segment, f64)> {
 fn local_s(s: f64, start: f64, end: f64, length: f64) -> f64 {
     let from_end = end - s;
     if from_end < 0.5 * length {
-        (length - from_end).clamp(0.0, length)
+        clamp(length - from_end, 0.0, length)
     } else {
-        (s - start).clamp(0.0, length)
+        clamp(s - start, 0.0, length)
     }
 }
 
 /// Samples at ascending arc lengths `at`, each with the index of its piece; a sample on a
-/// joint belongs to the piece before it.
+/// joint belongs to the piece after it.
 fn by_piece(pieces: &[Segment], at: &[f64]) -> Result<Vec<(usize, Sample)>> {
     let len: f64 = pieces.iter().map(Segment::length).sum();
     let slack = 1e-12 * len;
@@ -247,7 +249,7 @@ fn by_piece(pieces: &[Segment], at: &[f64]) -> Result<Vec<(usize, Sample)>> {
         let end = start + length;
         let last = i + 1 == pieces.len();
         let mut local = Vec::new();
-        while next < at.len() && (last || at[next] <= end) {
+        while next < at.len() && (last || at[next] < end) {
             local.push(local_s(at[next], start, end, length));
             next += 1;
         }

@@ -61,7 +61,7 @@ pub enum Error {
         second: Turn,
     },
     /// A parameter is outside the range the operation accepts.
-    #[error("{name} = {value} is out of range: {expected}")]
+    #[error("{name} = {} is out of range: {expected}", Num(*value))]
     OutOfRange {
         /// The parameter's name.
         name: &'static str,
@@ -130,6 +130,21 @@ pub enum ErrorKind {
     ToleranceNotMet,
     /// [`Error::NumericalFailure`].
     NumericalFailure,
+}
+
+/// A number for a message: plain where that is short, in exponent form otherwise (a plain
+/// 1e300 has 301 digits).
+struct Num(f64);
+
+impl fmt::Display for Num {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let a = self.0.abs();
+        if a == 0.0 || (1e-5..1e15).contains(&a) || !a.is_finite() {
+            write!(f, "{}", self.0)
+        } else {
+            write!(f, "{:e}", self.0)
+        }
+    }
 }
 
 /// A turning direction in words, for messages.
@@ -206,6 +221,19 @@ pub enum NotDrawable {
         /// The largest angle reached within that ratio, radians.
         reached: f64,
     },
+    /// One piece of a compound curve would be too short to draw: shorter than
+    /// [`MIN_PIECE_SHARE`](crate::MIN_PIECE_SHARE) of the curve, yet turning by its share of
+    /// the polygon's turning.
+    PieceTooShort {
+        /// Which piece, in the caller's order (0: slope α0, from the first point).
+        piece: usize,
+        /// Its slope.
+        alpha: f64,
+        /// Its arc length as a share of the whole curve's.
+        share: f64,
+        /// Its turning, radians.
+        turning: f64,
+    },
     /// The torsion parameter Ω is too large for these four points, α, β and type: a
     /// segment exists for Ω up to `omega_max` (seed 003 §4).
     TorsionTooLarge {
@@ -276,6 +304,20 @@ impl fmt::Display for NotDrawable {
                  control polygon more symmetric",
                 reached.to_degrees(),
                 theta_e.to_degrees()
+            ),
+            NotDrawable::PieceTooShort {
+                piece,
+                alpha,
+                share,
+                turning,
+            } => write!(
+                f,
+                "the alpha{piece} = {alpha} piece would be only {share:.1e} of the curve's length \
+                 while turning {:.2} deg: the slopes need an extreme curvature ratio to meet \
+                 these points, and no drawing could show that piece; make the control polygon \
+                 more symmetric, change the turning ratio, or use slopes closer to the range \
+                 0..1",
+                turning.to_degrees(),
             ),
             NotDrawable::TorsionTooLarge { omega, omega_max } => write!(
                 f,

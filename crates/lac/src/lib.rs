@@ -75,28 +75,31 @@ mod space;
 mod standard_form;
 mod tolerance;
 mod turn;
+mod vec3;
 
 pub use analysis::{
     curvature_plot, log_curvature_graph, CurvaturePoint, LcgFit, LogCurvatureGraph,
 };
 pub use bezier::RationalCubic;
-pub use compound::{CompoundCurve, CompoundDerivative};
+pub use compound::{CompoundCurve, CompoundDerivative, MIN_PIECE_SHARE};
 pub use curve::Curve;
 pub use error::{Error, ErrorKind, NotDrawable, Result};
 pub use lcg::LcgLine;
 pub use monotone::{Monotonicity, MonotonicityReport};
 pub use quasi::{QuasiCurve, QuasiPiece};
-pub use segment::{Sample, Segment, SegmentDerivative};
+pub use segment::{Sample, Segment, SegmentDerivative, MAX_ABS_ALPHA};
 pub use space::{
-    BoundBy, EndBehaviour, RadiusCell, RadiusLimit, RatioLimit, SpaceClassification, SpaceEnd,
-    TurningCell,
+    BoundBy, EndBehaviour, RadiusCell, RadiusLimit, RatioLimit, SeedRow, SpaceClassification,
+    SpaceEnd, TurningCell,
 };
 pub use space::{
-    Frame, GraphPoint, Similarity3, SpaceForm, SpaceSegment, TorsionType, PLANAR_TOLERANCE,
+    Frame, GraphPoint, Similarity3, SpaceForm, SpaceFormParams, SpaceSegment, SpaceShape,
+    TorsionType, PLANAR_TOLERANCE,
 };
 pub use standard_form::{Classification, InfiniteRadiusEnd, StandardForm, ZeroRadiusEnd};
 pub use tolerance::{Tolerance, MIN_RELATIVE_TOLERANCE};
 pub use turn::Turn;
+pub use vec3::Vec3;
 
 /// The README's Rust examples, compiled and run as doc tests.
 #[cfg(doctest)]

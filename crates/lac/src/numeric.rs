@@ -3,6 +3,13 @@
 
 use std::ops::{Add, AddAssign, Mul, Neg, Sub};
 
+/// `x` limited to [`lo`, `hi`] without `f64::clamp`'s panic when a bound is NaN (a NaN `x`
+/// gives `lo`). Used where the bounds are computed.
+#[inline]
+pub(crate) fn clamp(x: f64, lo: f64, hi: f64) -> f64 {
+    x.max(lo).min(hi)
+}
+
 /// `expm1(y) / y`, continued by 1 at y = 0.
 ///
 /// Every removable singularity of SPEC §2 (α = 0, α = 1, Λ = 0) is a quotient of this form;

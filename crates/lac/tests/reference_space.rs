@@ -2,7 +2,7 @@
 //! fixture `space_family.json`): valid ranges, curvature, torsion, positions and Frenet
 //! frames of 152 curves, α, β ∈ {−1, −0.5, 0, 0.5, 1, 2} and next to 0 and 1, Λ, Ω ∈ {0, …}.
 
-use lac::{SpaceForm, TorsionType};
+use lac::{SpaceForm, SpaceFormParams, TorsionType, Vec3};
 use serde::Deserialize;
 
 #[derive(Deserialize)]
@@ -39,12 +39,19 @@ fn fixture() -> Fixture {
 }
 
 fn form(c: &Case) -> SpaceForm {
-    let kind = TorsionType::from_number(c.kind).unwrap();
-    SpaceForm::new(c.alpha, c.beta, c.lambda, c.omega, c.nu, kind).unwrap()
+    SpaceForm::new(SpaceFormParams {
+        alpha: c.alpha,
+        beta: c.beta,
+        lambda: c.lambda,
+        omega: c.omega,
+        nu: c.nu,
+        torsion: TorsionType::from_number(c.kind).unwrap(),
+    })
+    .unwrap()
 }
 
-fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {
-    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+fn dist(a: Vec3, b: [f64; 3]) -> f64 {
+    a.distance(Vec3::from(b))
 }
 
 #[test]

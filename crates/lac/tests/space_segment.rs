@@ -3,7 +3,8 @@
 //! classical Runge–Kutta with step doubling on the closed-form κ(s), τ(s) written out
 //! below, not the library's Taylor integrator).
 
-use lac::{Error, NotDrawable, SpaceForm, SpaceSegment, TorsionType};
+use lac::{Error, NotDrawable, SpaceForm, SpaceFormParams, SpaceSegment, SpaceShape};
+use lac::{TorsionType, Vec3};
 
 struct Rng(u64);
 impl Rng {
@@ -15,27 +16,29 @@ impl Rng {
     }
 }
 
-type V = [f64; 3];
-fn sub(a: V, b: V) -> V {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+/// The shape α, β, Ω, type.
+fn shape(alpha: f64, beta: f64, omega: f64, torsion: TorsionType) -> SpaceShape {
+    SpaceShape {
+        alpha,
+        beta,
+        omega,
+        torsion,
+    }
 }
-fn dot(a: V, b: V) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+/// Four points from their coordinates.
+fn points(p: [[f64; 3]; 4]) -> [Vec3; 4] {
+    p.map(Vec3::from_array)
 }
-fn norm(a: V) -> f64 {
-    dot(a, a).sqrt()
-}
-fn unit(a: V) -> V {
-    let n = norm(a);
-    [a[0] / n, a[1] / n, a[2] / n]
-}
-fn angle(a: V, b: V) -> f64 {
-    let c = [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ];
-    norm(c).atan2(dot(a, b))
+
+/// The control points most tests use: a right-handed, non-planar polygon.
+fn twisted() -> [Vec3; 4] {
+    points([
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [2.0, 1.0, 0.5],
+        [2.0, 2.0, 1.5],
+    ])
 }
 
 /// κ(s) and τ(s) of the standard form straight from SPEC §6 (ρ and μ, then reciprocals).
@@ -61,7 +64,7 @@ fn kappa_tau(f: &SpaceForm, s: f64) -> (f64, f64) {
 /// Classical RK4 on (x, t, n, b) from 0 to `s_end`, with step doubling: each step is taken
 /// whole and as two halves, accepted when they agree to 1e-14 and Richardson-combined, and
 /// the step adapts (κ and τ may vary on very different scales along one segment).
-fn independent_end(f: &SpaceForm, s_end: f64) -> (V, V) {
+fn independent_end(f: &SpaceForm, s_end: f64) -> (Vec3, Vec3) {
     let deriv = |s: f64, y: &[f64; 12]| -> [f64; 12] {
         let (k, t) = kappa_tau(f, s);
         let mut d = [0.0; 12];
@@ -111,41 +114,43 @@ fn independent_end(f: &SpaceForm, s_end: f64) -> (V, V) {
             h *= 2.0;
         }
     }
-    ([y[0], y[1], y[2]], [y[3], y[4], y[5]])
+    (Vec3::new(y[0], y[1], y[2]), Vec3::new(y[3], y[4], y[5]))
 }
 
 /// Check the ends and end tangents of `seg` against `points`, by the independent
 /// integration; returns (position error / chord, tangent error in radians).
-fn check_ends(seg: &SpaceSegment, p: [V; 4]) -> (f64, f64) {
+fn check_ends(seg: &SpaceSegment, p: [Vec3; 4]) -> (f64, f64) {
     let form = seg.standard_form().unwrap();
     let tr = seg.transform().unwrap();
     let s_end = seg.s_end().unwrap();
     let (x_end, t_end) = independent_end(form, s_end);
-    let start = tr.apply([0.0; 3]);
+    let start = tr.apply(Vec3::ZERO);
     let end = tr.apply(x_end);
-    let t_start = tr.apply_vector([1.0, 0.0, 0.0]);
+    let t_start = tr.apply_vector(Vec3::X);
     let t_end = tr.apply_vector(t_end);
     let (first, last, t_first, t_last) = if tr.reversed {
-        (end, start, t_end.map(|c| -c), t_start.map(|c| -c))
+        (end, start, -t_end, -t_start)
     } else {
         (start, end, t_start, t_end)
     };
-    let chord = norm(sub(p[3], p[0]));
-    let pos = (norm(sub(first, p[0])).max(norm(sub(last, p[3])))) / chord;
-    let tan = angle(t_first, unit(sub(p[1], p[0]))).max(angle(t_last, unit(sub(p[3], p[2]))));
+    let chord = p[3].distance(p[0]);
+    let pos = first.distance(p[0]).max(last.distance(p[3])) / chord;
+    let tan = t_first
+        .angle_to(p[1] - p[0])
+        .max(t_last.angle_to(p[3] - p[2]));
     (pos, tan)
 }
 
 /// Four control points from a standard-form piece, moved by a rotation, scale, translation
 /// and (optionally) a mirror: solvable by construction.
-fn constructed(rng: &mut Rng, form: &SpaceForm, s_end: f64) -> [V; 4] {
+fn constructed(rng: &mut Rng, form: &SpaceForm, s_end: f64) -> [Vec3; 4] {
     let f0 = form.frame_at(0.0).unwrap();
     let f1 = form.frame_at(s_end).unwrap();
     let (a, b) = (0.3 + 0.5 * rng.next(), 0.3 + 0.5 * rng.next());
     let mut p = [
         f0.point,
-        [a, 0.0, 0.0],
-        sub(f1.point, f1.tangent.map(|c| c * b)),
+        Vec3::new(a, 0.0, 0.0),
+        f1.point - b * f1.tangent,
         f1.point,
     ];
     // Half the time the caller gives the points the other way round (θ0 < θ1): the
@@ -156,22 +161,18 @@ fn constructed(rng: &mut Rng, form: &SpaceForm, s_end: f64) -> [V; 4] {
     let mirror = rng.next() < 0.3;
     let (yaw, pitch, roll) = (6.0 * rng.next(), 3.0 * rng.next(), 6.0 * rng.next());
     let k = 0.1 + 10.0 * rng.next();
-    let shift = [rng.next() * 5.0, -rng.next() * 5.0, rng.next()];
+    let shift = Vec3::new(rng.next() * 5.0, -rng.next() * 5.0, rng.next());
     for q in &mut p {
         if mirror {
-            q[2] = -q[2];
+            q.z = -q.z;
         }
         let (c, s) = (yaw.cos(), yaw.sin());
-        *q = [c * q[0] - s * q[1], s * q[0] + c * q[1], q[2]];
+        *q = Vec3::new(c * q.x - s * q.y, s * q.x + c * q.y, q.z);
         let (c, s) = (pitch.cos(), pitch.sin());
-        *q = [c * q[0] + s * q[2], q[1], -s * q[0] + c * q[2]];
+        *q = Vec3::new(c * q.x + s * q.z, q.y, -s * q.x + c * q.z);
         let (c, s) = (roll.cos(), roll.sin());
-        *q = [q[0], c * q[1] - s * q[2], s * q[1] + c * q[2]];
-        *q = [
-            k * q[0] + shift[0],
-            k * q[1] + shift[1],
-            k * q[2] + shift[2],
-        ];
+        *q = Vec3::new(q.x, c * q.y - s * q.z, s * q.y + c * q.z);
+        *q = k * *q + shift;
     }
     p
 }
@@ -193,7 +194,15 @@ fn solved_segments_reproduce_ends_and_tangents_within_1e_9() {
                 } else {
                     TorsionType::Two
                 };
-                let form = SpaceForm::new(alpha, beta, lambda, omega, nu, kind).unwrap();
+                let form = SpaceForm::new(SpaceFormParams {
+                    alpha,
+                    beta,
+                    lambda,
+                    omega,
+                    nu,
+                    torsion: kind,
+                })
+                .unwrap();
                 let s_end = 0.3 + 3.0 * rng.next();
                 if s_end >= 0.999 * form.s_range().1
                     || form.theta(s_end).unwrap() > 5.5
@@ -204,7 +213,8 @@ fn solved_segments_reproduce_ends_and_tangents_within_1e_9() {
                 made += 1;
                 total += 1;
                 let p = constructed(&mut rng, &form, s_end);
-                let Ok(seg) = SpaceSegment::from_control_points(p, alpha, beta, omega, kind) else {
+                let Ok(seg) = SpaceSegment::from_control_points(p, shape(alpha, beta, omega, kind))
+                else {
                     continue;
                 };
                 solved += 1;
@@ -241,49 +251,35 @@ fn solved_segments_reproduce_ends_and_tangents_within_1e_9() {
 
 #[test]
 fn frames_are_orthonormal_right_handed_and_match_the_ends() {
-    let p = [
-        [0.0, 0.0, 0.0],
-        [1.0, 0.0, 0.0],
-        [2.0, 1.0, 0.5],
-        [2.0, 2.0, 1.5],
-    ];
-    let seg = SpaceSegment::from_control_points(p, 0.0, 0.0, 0.2, TorsionType::One).unwrap();
+    let p = twisted();
+    let seg = SpaceSegment::from_control_points(p, shape(0.0, 0.0, 0.2, TorsionType::One)).unwrap();
     let frames = seg.sample(33).unwrap();
     assert_eq!(frames.len(), 33);
-    assert!(norm(sub(frames[0].point, p[0])) < 1e-12);
-    assert!(norm(sub(frames[32].point, p[3])) < 1e-9 * 3.0);
+    assert!(frames[0].point.distance(p[0]) < 1e-12);
+    assert!(frames[32].point.distance(p[3]) < 1e-9 * 3.0);
     for (i, f) in frames.iter().enumerate() {
         assert!((f.s - seg.arc_length() * i as f64 / 32.0).abs() < 1e-12);
         for v in [f.tangent, f.normal, f.binormal] {
-            assert!((norm(v) - 1.0).abs() < 1e-14);
+            assert!((v.length() - 1.0).abs() < 1e-14);
         }
-        assert!(dot(f.tangent, f.normal).abs() < 1e-14);
-        let c = [
-            f.tangent[1] * f.normal[2] - f.tangent[2] * f.normal[1],
-            f.tangent[2] * f.normal[0] - f.tangent[0] * f.normal[2],
-            f.tangent[0] * f.normal[1] - f.tangent[1] * f.normal[0],
-        ];
-        assert!(norm(sub(c, f.binormal)) < 1e-14);
+        assert!(f.tangent.dot(f.normal).abs() < 1e-14);
+        assert!(f.tangent.cross(f.normal).distance(f.binormal) < 1e-14);
         assert!(f.curvature > 0.0 && f.torsion != 0.0);
     }
     // The tangent is the derivative of the position (central differences).
     for w in frames.windows(3) {
         let h = w[2].s - w[0].s;
-        let d = sub(w[2].point, w[0].point).map(|c| c / h);
-        assert!(norm(sub(d, w[1].tangent)) < 1e-3);
+        let d = (w[2].point - w[0].point) / h;
+        assert!(d.distance(w[1].tangent) < 1e-3);
     }
 }
 
 #[test]
 fn curvature_and_torsion_graphs_are_lines_of_slopes_alpha_and_beta() {
-    let p = [
-        [0.0, 0.0, 0.0],
-        [1.0, 0.0, 0.0],
-        [2.0, 1.0, 0.5],
-        [2.0, 2.0, 1.5],
-    ];
+    let p = twisted();
     for (alpha, beta) in [(-1.0, 0.5), (0.0, 0.0), (1.0, -1.0)] {
-        let seg = SpaceSegment::from_control_points(p, alpha, beta, 0.1, TorsionType::Two).unwrap();
+        let seg = SpaceSegment::from_control_points(p, shape(alpha, beta, 0.1, TorsionType::Two))
+            .unwrap();
         for (graph, slope) in [
             (seg.log_curvature_graph(9).unwrap(), alpha),
             (seg.log_torsion_graph(9).unwrap(), beta),
@@ -307,47 +303,42 @@ fn curvature_and_torsion_graphs_are_lines_of_slopes_alpha_and_beta() {
 
 #[test]
 fn coplanar_points_give_the_planar_segment() {
-    let p = [
+    let p = points([
         [0.0, 0.0, 1.0],
         [1.0, 0.0, 1.0],
         [2.0, 0.5, 1.0],
         [2.5, 1.5, 1.0],
-    ];
-    let seg = SpaceSegment::from_control_points(p, 0.5, 0.0, 0.0, TorsionType::One).unwrap();
+    ]);
+    let seg = SpaceSegment::from_control_points(p, shape(0.5, 0.0, 0.0, TorsionType::One)).unwrap();
     assert!(seg.is_planar() && seg.standard_form().is_none() && seg.transform().is_none());
     let planar = seg.planar().unwrap();
     assert_eq!(planar.alpha(), 0.5);
     let frames = seg.sample(17).unwrap();
-    assert!(norm(sub(frames[0].point, p[0])) < 1e-12);
-    assert!(norm(sub(frames[16].point, p[3])) < 1e-12);
-    assert!(angle(frames[16].tangent, unit(sub(p[3], p[2]))) < 1e-12);
+    assert!(frames[0].point.distance(p[0]) < 1e-12);
+    assert!(frames[16].point.distance(p[3]) < 1e-12);
+    assert!(frames[16].tangent.angle_to(p[3] - p[2]) < 1e-12);
     assert!(frames
         .iter()
-        .all(|f| f.torsion == 0.0 && (f.point[2] - 1.0).abs() < 1e-12));
+        .all(|f| f.torsion == 0.0 && (f.point.z - 1.0).abs() < 1e-12));
     // A coplanar S has an inflection: no log-aesthetic segment.
-    let s = [
+    let s = points([
         [0.0, 0.0, 0.0],
         [1.0, 1.0, 0.0],
         [2.0, -1.0, 0.0],
         [3.0, 0.0, 0.0],
-    ];
+    ]);
     assert!(matches!(
-        SpaceSegment::from_control_points(s, 0.5, 0.0, 0.0, TorsionType::One),
+        SpaceSegment::from_control_points(s, shape(0.5, 0.0, 0.0, TorsionType::One)),
         Err(Error::InflectedPolygon { .. })
     ));
 }
 
 #[test]
 fn bad_input_gives_typed_errors() {
-    let p = [
-        [0.0, 0.0, 0.0],
-        [1.0, 0.0, 0.0],
-        [2.0, 1.0, 0.5],
-        [2.0, 2.0, 1.5],
-    ];
-    let solve = |p, a, b, w| SpaceSegment::from_control_points(p, a, b, w, TorsionType::One);
+    let p = twisted();
+    let solve = |p, a, b, w| SpaceSegment::from_control_points(p, shape(a, b, w, TorsionType::One));
     let mut nan = p;
-    nan[2][1] = f64::NAN;
+    nan[2].y = f64::NAN;
     assert!(matches!(
         solve(nan, 0.0, 0.0, 0.0),
         Err(Error::NonFinite { .. })
@@ -370,12 +361,12 @@ fn bad_input_gives_typed_errors() {
         })
     ));
     // Start tangent along the chord.
-    let along = [
+    let along = points([
         [0.0, 0.0, 0.0],
         [1.0, 1.0, 1.0],
         [2.0, 1.0, 0.5],
         [2.0, 2.0, 2.0],
-    ];
+    ]);
     assert!(matches!(
         solve(along, 0.0, 0.0, 0.0),
         Err(Error::CollinearPoints)
@@ -385,19 +376,16 @@ fn bad_input_gives_typed_errors() {
 
 #[test]
 fn too_large_omega_reports_the_largest_that_works() {
-    let p = [
-        [0.0, 0.0, 0.0],
-        [1.0, 0.0, 0.0],
-        [2.0, 1.0, 0.5],
-        [2.0, 2.0, 1.5],
-    ];
-    let err = SpaceSegment::from_control_points(p, 0.0, 1.0, 50.0, TorsionType::One).unwrap_err();
+    let p = twisted();
+    let solve =
+        |omega| SpaceSegment::from_control_points(p, shape(0.0, 1.0, omega, TorsionType::One));
+    let err = solve(50.0).unwrap_err();
     let Error::NotDrawable(NotDrawable::TorsionTooLarge { omega, omega_max }) = err else {
         panic!("expected TorsionTooLarge, got {err:?}");
     };
     assert_eq!(omega, 50.0);
     assert!(omega_max > 0.0 && omega_max < 50.0);
-    let seg = SpaceSegment::from_control_points(p, 0.0, 1.0, omega_max, TorsionType::One).unwrap();
+    let seg = solve(omega_max).unwrap();
     let (pos, tan) = check_ends(&seg, p);
     let f = seg.standard_form().unwrap();
     assert!(
@@ -406,18 +394,11 @@ fn too_large_omega_reports_the_largest_that_works() {
         seg.s_end()
     );
     // Some way beyond Ω_max it still fails.
-    assert!(SpaceSegment::from_control_points(
-        p,
-        0.0,
-        1.0,
-        omega_max * 1.05 + 1e-3,
-        TorsionType::One
-    )
-    .is_err());
+    assert!(solve(omega_max * 1.05 + 1e-3).is_err());
 }
 
 mod never_panics {
-    use lac::{SpaceSegment, TorsionType};
+    use lac::{SpaceSegment, SpaceShape, TorsionType, Vec3};
     use proptest::prelude::*;
 
     fn coord() -> impl Strategy<Value = f64> {
@@ -440,15 +421,16 @@ mod never_panics {
             two in any::<bool>(),
         ) {
             let p = [
-                [c[0], c[1], c[2]],
-                [c[3], c[4], c[5]],
-                [c[6], c[7], c[8]],
-                [c[9], c[10], c[11]],
+                Vec3::new(c[0], c[1], c[2]),
+                Vec3::new(c[3], c[4], c[5]),
+                Vec3::new(c[6], c[7], c[8]),
+                Vec3::new(c[9], c[10], c[11]),
             ];
-            let kind = if two { TorsionType::Two } else { TorsionType::One };
-            if let Ok(seg) = SpaceSegment::from_control_points(p, alpha, beta, omega, kind) {
+            let torsion = if two { TorsionType::Two } else { TorsionType::One };
+            let shape = SpaceShape { alpha, beta, omega, torsion };
+            if let Ok(seg) = SpaceSegment::from_control_points(p, shape) {
                 let frames = seg.sample(5).unwrap();
-                prop_assert!(frames.iter().all(|f| f.point.iter().all(|x| x.is_finite())));
+                prop_assert!(frames.iter().all(|f| f.point.is_finite()));
             }
         }
     }

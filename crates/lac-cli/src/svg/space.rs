@@ -6,12 +6,11 @@
 use std::fmt::Write as _;
 
 use kurbo::Point;
-use lac::SpaceSegment;
+use lac::{SpaceSegment, Vec3};
 
 use super::plot::{panel_title, Axis, Panel};
 use super::{as_given, caption_width, document, labelled_marker, polyline, short, CURVE, POLYGON};
 use crate::failure::Failure;
-use crate::space::{add_scaled, cross, dot, sub, unit};
 
 /// The smallest canvas width, pixels, for the heading and the footnote.
 const MIN_WIDTH: f64 = 1000.0;
@@ -131,15 +130,15 @@ const NAMES: [&str; 3] = ["x", "y", "z"];
 
 /// What every panel shows, in the caller's coordinates.
 struct Scene {
-    curve: Vec<[f64; 3]>,
-    points: [[f64; 3]; 4],
+    curve: Vec<Vec3>,
+    points: [Vec3; 4],
     /// x, y and z at one scale: each covers the curve and the control points.
     axes: [Axis; 3],
 }
 
 /// The SVG document for `segment`.
 pub(crate) fn render(segment: &SpaceSegment) -> Result<String, Failure> {
-    let curve: Vec<[f64; 3]> = segment
+    let curve: Vec<Vec3> = segment
         .sample(CURVE_POINTS)?
         .iter()
         .map(|f| f.point)
@@ -151,7 +150,7 @@ pub(crate) fn render(segment: &SpaceSegment) -> Result<String, Failure> {
                 .iter()
                 .chain(&points)
                 .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-                    (lo.min(p[c]), hi.max(p[c]))
+                    (lo.min(coordinate(p, c)), hi.max(coordinate(p, c)))
                 })
         })
         .collect();
@@ -274,7 +273,7 @@ fn orthographic(svg: &mut String, scene: &Scene, view: &Ortho, layout: &Layout) 
         NAMES[view.across],
         NAMES[view.up],
     );
-    let px = |p: &[f64; 3]| panel.px(p[view.across], p[view.up]);
+    let px = |p: &Vec3| panel.px(coordinate(p, view.across), coordinate(p, view.up));
     draw_curve(
         svg,
         &scene.points.iter().map(px).collect::<Vec<_>>(),
@@ -302,33 +301,39 @@ fn draw_curve(svg: &mut String, polygon: &[Point], curve: &[Point]) {
     }
 }
 
+/// Coordinate `c` of `p`: x, y, z for 0, 1, 2 (the views pick theirs by number).
+fn coordinate(p: &Vec3, c: usize) -> f64 {
+    p.to_array()[c]
+}
+
 /// A pinhole camera looking at the centre of the box.
 struct Camera {
-    eye: [f64; 3],
-    forward: [f64; 3],
-    right: [f64; 3],
-    up: [f64; 3],
+    eye: Vec3,
+    forward: Vec3,
+    right: Vec3,
+    up: Vec3,
 }
 
 impl Camera {
-    fn new(centre: [f64; 3], distance: f64) -> Camera {
+    fn new(centre: Vec3, distance: f64) -> Camera {
         let (az, el) = (AZIMUTH.to_radians(), ELEVATION.to_radians());
-        let towards_eye = [el.cos() * az.sin(), -el.cos() * az.cos(), el.sin()];
-        let forward = towards_eye.map(|c| -c);
-        let right = unit(cross(forward, [0.0, 0.0, 1.0]));
+        let towards_eye = Vec3::new(el.cos() * az.sin(), -el.cos() * az.cos(), el.sin());
+        let forward = -towards_eye;
+        let right = forward.cross(Vec3::Z);
+        let right = right / right.length();
         Camera {
-            eye: add_scaled(centre, distance, towards_eye),
+            eye: centre + distance * towards_eye,
             forward,
             right,
-            up: cross(right, forward),
+            up: right.cross(forward),
         }
     }
 
     /// The point on the image plane at distance 1 (y up).
-    fn project(&self, p: [f64; 3]) -> Point {
-        let q = sub(p, self.eye);
-        let depth = dot(q, self.forward);
-        Point::new(dot(q, self.right) / depth, dot(q, self.up) / depth)
+    fn project(&self, p: Vec3) -> Point {
+        let q = p - self.eye;
+        let depth = q.dot(self.forward);
+        Point::new(q.dot(self.right) / depth, q.dot(self.up) / depth)
     }
 }
 
@@ -339,38 +344,27 @@ fn perspective(svg: &mut String, scene: &Scene, layout: &Layout) -> f64 {
     let (width, height) = (CELL, layout.perspective_height);
     let [ax, ay, az] = &scene.axes;
     let floor = az.lo;
-    let centre = [
+    let centre = Vec3::new(
         0.5 * (ax.lo + ax.hi),
         0.5 * (ay.lo + ay.hi),
         0.5 * (az.lo + az.hi),
-    ];
-    let half_diagonal = 0.5
-        * [ax.hi - ax.lo, ay.hi - ay.lo, az.hi - az.lo]
-            .iter()
-            .map(|d| d * d)
-            .sum::<f64>()
-            .sqrt();
+    );
+    let half_diagonal = 0.5 * Vec3::new(ax.hi - ax.lo, ay.hi - ay.lo, az.hi - az.lo).length();
     let camera = Camera::new(centre, DISTANCE * half_diagonal);
-    let on_floor = |p: &[f64; 3]| [p[0], p[1], floor];
+    let on_floor = |p: &Vec3| Vec3::new(p.x, p.y, floor);
     let corners = [
-        [ax.lo, ay.lo, floor],
-        [ax.hi, ay.lo, floor],
-        [ax.hi, ay.hi, floor],
-        [ax.lo, ay.hi, floor],
+        Vec3::new(ax.lo, ay.lo, floor),
+        Vec3::new(ax.hi, ay.lo, floor),
+        Vec3::new(ax.hi, ay.hi, floor),
+        Vec3::new(ax.lo, ay.hi, floor),
     ];
     // The axis triad, a quarter of the box's largest side long, just outside the floor's
     // corner at low x and y (where it would hide a control point at that corner).
     let side = (ax.hi - ax.lo).max(ay.hi - ay.lo).max(az.hi - az.lo);
     let reach = 0.25 * side;
-    let origin = [ax.lo - 0.08 * side, ay.lo - 0.08 * side, floor];
-    let tips: Vec<[f64; 3]> = (0..3)
-        .map(|c| {
-            let mut tip = origin;
-            tip[c] += reach;
-            tip
-        })
-        .collect();
-    let image = |p: &[f64; 3]| camera.project(*p);
+    let origin = Vec3::new(ax.lo - 0.08 * side, ay.lo - 0.08 * side, floor);
+    let tips = [Vec3::X, Vec3::Y, Vec3::Z].map(|axis| origin + reach * axis);
+    let image = |p: &Vec3| camera.project(*p);
     let everything: Vec<Point> = scene
         .curve
         .iter()
@@ -396,7 +390,7 @@ fn perspective(svg: &mut String, scene: &Scene, layout: &Layout) -> f64 {
         left + 0.5 * (width - k * (hi.x - lo.x)),
         top + 0.5 * (height - k * (hi.y - lo.y)),
     );
-    let px = |p: &[f64; 3]| {
+    let px = |p: &Vec3| {
         let q = image(p);
         Point::new(x0 + k * (q.x - lo.x), y0 + k * (hi.y - q.y))
     };
@@ -426,11 +420,17 @@ fn perspective(svg: &mut String, scene: &Scene, layout: &Layout) -> f64 {
     svg.push_str("\"/>\n");
     let _ = write!(svg, r#"<path stroke="{FLOOR_GRID}" stroke-width="1" d=""#);
     for v in ax.ticks() {
-        let (a, b) = (px(&[v, ay.lo, floor]), px(&[v, ay.hi, floor]));
+        let (a, b) = (
+            px(&Vec3::new(v, ay.lo, floor)),
+            px(&Vec3::new(v, ay.hi, floor)),
+        );
         let _ = write!(svg, "M{:.2},{:.2}L{:.2},{:.2}", a.x, a.y, b.x, b.y);
     }
     for v in ay.ticks() {
-        let (a, b) = (px(&[ax.lo, v, floor]), px(&[ax.hi, v, floor]));
+        let (a, b) = (
+            px(&Vec3::new(ax.lo, v, floor)),
+            px(&Vec3::new(ax.hi, v, floor)),
+        );
         let _ = write!(svg, "M{:.2},{:.2}L{:.2},{:.2}", a.x, a.y, b.x, b.y);
     }
     svg.push_str("\"/>\n");

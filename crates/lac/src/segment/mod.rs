@@ -5,7 +5,7 @@ use ::kurbo::{Point, Vec2};
 use crate::chord_angle::solve;
 use crate::error::{finite, Error, Result};
 use crate::lcg::LcgLine;
-use crate::numeric::Complex;
+use crate::numeric::{clamp, Complex};
 use crate::standard_form::integrate::integrate;
 use crate::standard_form::{StandardForm, Station};
 use crate::turn::Turn;
@@ -29,6 +29,40 @@ pub(crate) struct Triangle {
     pub(crate) theta_e: f64,
 }
 
+/// The vectors scaled by one power of two (exact) so that the largest component is in
+/// [1, 2): products of them then neither underflow nor overflow.
+pub(crate) fn normalized<const N: usize>(vectors: [Vec2; N]) -> [Vec2; N] {
+    let largest = vectors
+        .iter()
+        .fold(0.0f64, |m, v| m.max(v.x.abs()).max(v.y.abs()));
+    if !(largest.is_finite() && largest > 0.0) {
+        return vectors;
+    }
+    // 2^(−k) applied in two halves, each representable even for k near ±1074.
+    let k = largest.log2().floor() as i32;
+    let (h1, h2) = (2f64.powi(-(k / 2)), 2f64.powi(-(k - k / 2)));
+    vectors.map(|v| (v * h1) * h2)
+}
+
+/// The slope α, checked: finite and |α| ≤ [`MAX_ABS_ALPHA`].
+pub(crate) fn check_alpha(name: &'static str, alpha: f64) -> Result<f64> {
+    finite(name, alpha)?;
+    if alpha.abs() > MAX_ABS_ALPHA {
+        return Err(Error::OutOfRange {
+            name,
+            value: alpha,
+            expected: "a slope with |alpha| <= 1e6 (segments hardly change beyond it, and \
+                       rho^alpha overflows)",
+        });
+    }
+    Ok(alpha)
+}
+
+/// The largest |α| accepted. Segments converge as |α| grows (for one triangle the largest
+/// chord angle a segment can make changes by 2.5e-5 rad from |α| = 1e4 to 1e6), and far
+/// beyond it ρ^α overflows.
+pub const MAX_ABS_ALPHA: f64 = 1e6;
+
 /// Validate three control points and measure their triangle.
 pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
     const NAMES: [[&str; 2]; 3] = [["P0.x", "P0.y"], ["P1.x", "P1.y"], ["P2.x", "P2.y"]];
@@ -46,13 +80,17 @@ pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
     }
     let [p0, p1, p2] = points;
     let (u, v, c) = (p1 - p0, p2 - p1, p2 - p0);
-    if !(u.hypot().is_finite() && v.hypot().is_finite() && c.hypot().is_finite()) {
+    // (std's hypot: kurbo's squares the components, which overflows from 1e154 on.)
+    if ![u, v, c].iter().all(|w| w.x.hypot(w.y).is_finite()) {
         return Err(Error::OutOfRange {
             name: "control points",
             value: f64::INFINITY,
             expected: "coordinates whose differences do not overflow",
         });
     }
+    // Angles only: scale the legs by a power of two (exactly) to magnitudes near 1, so that
+    // cross and dot products neither underflow (coordinates ~1e-160) nor overflow (~1e+160).
+    let [u, v, c] = normalized([u, v, c]);
     let cross = u.cross(v);
     let turning = cross.abs().atan2(u.dot(v));
     if !(turning > 1e-13 && turning < std::f64::consts::PI - 1e-13) {
@@ -143,11 +181,11 @@ impl Segment {
     /// Errors: non-finite input ([`Error::NonFinite`]), coincident or collinear control
     /// points, or [`Error::NotDrawable`] when no segment of this α fits the triangle.
     pub fn from_control_points(points: [Point; 3], alpha: f64) -> Result<Segment> {
-        finite("alpha", alpha)?;
+        check_alpha("alpha", alpha)?;
         let tri = control_triangle(points)?;
         // The shorter leg goes first (SPEC §3 step 2): there the angle is at least θd/2.
         let (u, v) = (points[1] - points[0], points[2] - points[1]);
-        let reversed = u.hypot() > v.hypot();
+        let reversed = u.x.hypot(u.y) > v.x.hypot(v.y);
         let theta_e = if reversed {
             tri.turning - tri.theta_e
         } else {
@@ -170,13 +208,9 @@ impl Segment {
             turn: tri.turn,
             theta_first: tri.theta_first,
         };
-        Ok(Segment::new(
-            alpha,
-            piece.form,
-            [first, last],
-            chord,
-            placement,
-        ))
+        let segment = Segment::new(alpha, piece.form, [first, last], chord, placement);
+        segment.check()?;
+        Ok(segment)
     }
 
     /// The one constructor: the piece of `form` from station `ends[0]` to `ends[1]` (in the
@@ -202,6 +236,38 @@ impl Segment {
             turn: placement.turn,
             theta_first: placement.theta_first,
             turning: (last.theta - first.theta).abs(),
+        }
+    }
+
+    /// A solver's last look at its answer before returning it: every number finite, a
+    /// positive scale and length, and finite non-zero end curvatures.
+    pub(crate) fn check(&self) -> Result<()> {
+        let stations = [self.first, self.last];
+        let numbers = stations
+            .iter()
+            .flat_map(|st| [st.theta, st.s, st.ln_rho])
+            .chain([
+                self.alpha,
+                self.form.lambda,
+                self.chord.re,
+                self.chord.im,
+                self.rot.re,
+                self.rot.im,
+                self.theta_first,
+            ]);
+        let (k0, k1) = self.end_curvatures();
+        let ok = numbers.into_iter().all(f64::is_finite)
+            && self.scale > 0.0
+            && self.scale.is_finite()
+            && self.length() > 0.0
+            && self.length().is_finite()
+            && [k0, k1].iter().all(|k| k.is_finite() && *k != 0.0);
+        if ok {
+            Ok(())
+        } else {
+            Err(Error::NumericalFailure {
+                what: "the solved segment (a number overflowed or is not finite)",
+            })
         }
     }
 
@@ -342,7 +408,7 @@ impl Segment {
     /// exactly.
     pub(crate) fn station_at_s(&self, s: f64) -> Result<Station> {
         let len = self.length();
-        let s = s.clamp(0.0, len);
+        let s = clamp(s, 0.0, len);
         let k = self.dir() / self.scale;
         let st = if s <= 0.5 * len {
             self.form.advance_s(&self.first, k * s)
@@ -370,7 +436,7 @@ impl Segment {
 
     /// The station where the tangent has turned by `turn` ∈ [0, θd] from the first point.
     pub(crate) fn station_at_turning(&self, turn: f64) -> Result<Station> {
-        let turn = turn.clamp(0.0, self.turning);
+        let turn = clamp(turn, 0.0, self.turning);
         let st = if turn <= 0.5 * self.turning {
             self.form.advance_theta(&self.first, self.dir() * turn)
         } else {

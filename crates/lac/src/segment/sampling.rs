@@ -157,7 +157,7 @@ impl Segment {
         while target < lo - 1e-9 {
             target += tau;
         }
-        let target = target.clamp(lo, hi);
+        let target = crate::numeric::clamp(target, lo, hi);
         let st = self.form.advance_theta(a, target - a.theta)?;
         let z = span(self, a, &st);
         let dev = (chord.conj() * z).im.abs() / chord.norm();
@@ -259,8 +259,13 @@ impl Segment {
         }
         // The order-9 rule's error is about |order11 − order9|; order 11's is smaller by
         // about (hκ)²/600, and a difference below 1e-11·h implies hκ < 0.85.
-        if (order11 - order9).norm_max() <= 0.7e-11 * h.abs() {
+        let estimate = (order11 - order9).norm_max();
+        if estimate <= 0.7e-11 * h.abs() {
             return order11;
+        }
+        if estimate.is_nan() {
+            // Halving cannot mend an undefined estimate (it would only repeat it 4096 times).
+            return span(self, &a.st, &b.st);
         }
         let mid = match self.form.advance_s(&a.st, 0.5 * h) {
             Some(st) if depth < 12 => Node::new(&self.form, st),

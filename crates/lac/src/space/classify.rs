@@ -19,12 +19,13 @@
 //! wrong in 42 cells of Figs. 5–6 (the notes list them).
 
 use std::cmp::Ordering;
-use std::fmt;
 
 use super::family::{PowerLaw, SpaceForm, TorsionType};
 
 /// Which end of the valid s range ([`SpaceForm::s_range`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum SpaceEnd {
     /// The lower end, s decreasing from 0.
     Lower,
@@ -40,20 +41,14 @@ impl SpaceEnd {
             SpaceEnd::Upper => 1.0,
         }
     }
-
-    /// "-inf" or "inf": the seed's notation for an infinite value toward this end.
-    fn infinity(self) -> &'static str {
-        match self {
-            SpaceEnd::Lower => "-inf",
-            SpaceEnd::Upper => "inf",
-        }
-    }
 }
 
-/// Which function's bound ends the s range (seed 003 Fig. 2).
+/// Which function's bound ends the s range (seed 003 Fig. 2): the s column of Figs. 5–6.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum BoundBy {
-    /// No bound: the end is at s = ±∞ (infinite length).
+    /// No bound: the end is at s = ±∞ (infinite length); the seed's "-inf" / "inf".
     Unbounded,
     /// The radius of curvature's bound −1/(Λα) (ρ → 0 or ∞ there); the seed's "A".
     Rho,
@@ -64,20 +59,10 @@ pub enum BoundBy {
     Both,
 }
 
-impl BoundBy {
-    /// "none", "rho", "mu" or "both".
-    pub fn name(self) -> &'static str {
-        match self {
-            BoundBy::Unbounded => "none",
-            BoundBy::Rho => "rho",
-            BoundBy::Mu => "mu",
-            BoundBy::Both => "both",
-        }
-    }
-}
-
 /// A θ or φ cell of seed 003 Figs. 5–6: how θ = ∫₀ˢ κ or φ = ∫₀ˢ τ behaves toward an end.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum TurningCell {
     /// The integral diverges toward the end: −∞ at the lower end, +∞ at the upper one
     /// ("-inf" / "inf"). This alone does not mean the vector keeps turning (see
@@ -95,39 +80,23 @@ pub enum TurningCell {
     },
 }
 
-impl TurningCell {
-    /// The seed's notation for this cell at `end`: "-inf", "inf", "Finite", "Finite(-inf)",
-    /// "Finite(inf)" or "Finite(F)".
-    pub fn notation(self, end: SpaceEnd) -> String {
-        match self {
-            TurningCell::Infinite => end.infinity().to_string(),
-            TurningCell::Finite => "Finite".to_string(),
-            TurningCell::CutShort {
-                diverges_at_own_end: true,
-            } => format!("Finite({})", end.infinity()),
-            TurningCell::CutShort {
-                diverges_at_own_end: false,
-            } => "Finite(F)".to_string(),
-        }
-    }
-}
-
 /// The limit of a radius (ρ or μ) toward an end.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum RadiusLimit {
-    /// The radius tends to 0 (the curvature or torsion blows up).
+    /// The radius tends to 0 (the curvature or torsion blows up); the seed's "0".
     Zero,
-    /// The radius tends to ∞ (the curvature or torsion vanishes).
+    /// The radius tends to ∞ (the curvature or torsion vanishes); the seed's "inf".
     Infinite,
     /// A finite positive value: the end is the other function's bound, or the radius is
     /// constant (Λ = 0 for ρ, Ω = 0 for μ). The seed writes "-".
     Positive,
 }
 
-/// A ρ or μ cell of seed 003 Figs. 5–6: the limit and the seed's star.
-///
-/// Displays as "0", "inf" or "-", with "*" appended when starred.
+/// A ρ or μ cell of seed 003 Figs. 5–6: the limit and the seed's star ("0*", "inf", "-", …).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RadiusCell {
     /// The limit of the radius.
     pub limit: RadiusLimit,
@@ -139,19 +108,10 @@ pub struct RadiusCell {
     pub star: bool,
 }
 
-impl fmt::Display for RadiusCell {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let limit = match self.limit {
-            RadiusLimit::Zero => "0",
-            RadiusLimit::Infinite => "inf",
-            RadiusLimit::Positive => "-",
-        };
-        write!(f, "{limit}{}", if self.star { "*" } else { "" })
-    }
-}
-
 /// The limit of κ/τ toward an end.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum RatioLimit {
     /// κ/τ → 0 (the torsion dominates).
     Zero,
@@ -161,26 +121,19 @@ pub enum RatioLimit {
     Infinite,
 }
 
-impl RatioLimit {
-    /// "0", "finite" or "inf".
-    pub fn name(self) -> &'static str {
-        match self {
-            RatioLimit::Zero => "0",
-            RatioLimit::Finite => "finite",
-            RatioLimit::Infinite => "inf",
-        }
-    }
-}
-
 /// How a log-aesthetic space curve behaves toward one end of its s range: one half of a row
 /// of seed 003 Figs. 5–6, corrected (see [`SpaceForm::classify`]).
+///
+/// The seed's five cells of the half row are `binds` (its s column), `theta`, `phi`, `rho`
+/// and `mu`.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct EndBehaviour {
     /// Which end this is.
     pub end: SpaceEnd,
     /// The end's value of s: the bound, or ±∞.
     pub s: f64,
-    /// Which function's bound it is.
+    /// Which function's bound it is: the seed's s cell.
     pub binds: BoundBy,
     /// Is the arc length from s = 0 to this end finite? (Exactly when `s` is finite.)
     pub length_finite: bool,
@@ -203,27 +156,6 @@ pub struct EndBehaviour {
 }
 
 impl EndBehaviour {
-    /// The seed's s column: "A" (= −1/(Λα), also when both bounds coincide), "B" (the μ
-    /// bound), "-inf" or "inf".
-    pub fn bound_cell(&self) -> &'static str {
-        match self.binds {
-            BoundBy::Unbounded => self.end.infinity(),
-            BoundBy::Rho | BoundBy::Both => "A",
-            BoundBy::Mu => "B",
-        }
-    }
-
-    /// The five cells in the seed's notation and order: s (bound), θ, φ, ρ, μ.
-    pub fn seed_cells(&self) -> [String; 5] {
-        [
-            self.bound_cell().to_string(),
-            self.theta.notation(self.end),
-            self.phi.notation(self.end),
-            self.rho.to_string(),
-            self.mu.to_string(),
-        ]
-    }
-
     /// The ρ cell with the star set by the actual behaviour (infinite length, or the tangent
     /// keeps turning): the seed's definition of "*" ("direction not determined") applied to
     /// the corrected rule. Differs from [`EndBehaviour::rho`] at finite-length ends where θ
@@ -246,26 +178,38 @@ impl EndBehaviour {
     }
 }
 
+/// A row of seed 003's classification tables: Fig. 5 for [`TorsionType::One`] (rows 1–45,
+/// which the seed names a1–a45), Fig. 6 for [`TorsionType::Two`] (rows 1–37, b1–b37).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct SeedRow {
+    /// The table: Fig. 5 for type 1, Fig. 6 for type 2.
+    pub torsion: TorsionType,
+    /// The row's number in its table, from 1.
+    pub number: u8,
+}
+
 /// The behaviour of a log-aesthetic space curve at both ends of its s range (seed 003
 /// Figs. 5–6, corrected); see [`SpaceForm::classify`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SpaceClassification {
     /// Toward the lower end of s.
     pub lower: EndBehaviour,
     /// Toward the upper end of s.
     pub upper: EndBehaviour,
-    row: Option<&'static str>,
+    row: Option<SeedRow>,
 }
 
 impl SpaceClassification {
-    /// The row of seed 003 Fig. 5 ("a1" … "a45", type 1) or Fig. 6 ("b1" … "b37", type 2)
-    /// this curve falls in, or `None` unless Λ > 0 and Ω > 0 (the tables assume both; with
-    /// either 0 the curve is a different case, see [`SpaceForm::classify`]).
+    /// The row of seed 003 Fig. 5 (type 1) or Fig. 6 (type 2) this curve falls in, or `None`
+    /// unless Λ > 0 and Ω > 0 (the tables assume both; with either 0 the curve is a
+    /// different case, see [`SpaceForm::classify`]).
     ///
     /// The row follows from the type, the classes of α and of β (negative, 0, in (0, 1), 1,
     /// above 1) and, where both bounds lie on the same side, from comparing them (exactly, as
     /// the classification does).
-    pub fn row(&self) -> Option<&'static str> {
+    pub fn row(&self) -> Option<SeedRow> {
         self.row
     }
 
@@ -283,8 +227,8 @@ impl SpaceForm {
     /// for type 1, b1–b37 for type 2), worked out from the asymptotics of κ and τ, with the
     /// table's errors corrected (`tools/reference/space_classification_notes.md`).
     ///
-    /// The cells (bound, θ, φ, ρ, μ) follow the seed's notation. The vectors follow the
-    /// corrected rule: **the tangent settles iff ∫κ ds < ∞ or τ/κ → ∞, and the binormal
+    /// The cells (bound, θ, φ, ρ, μ) are the seed's, as typed values. The vectors follow
+    /// the corrected rule: **the tangent settles iff ∫κ ds < ∞ or τ/κ → ∞, and the binormal
     /// settles iff ∫τ ds < ∞ or κ/τ → ∞** (the Darboux axis argument, module docs), so an
     /// infinite θ or φ does not by itself mean that the vector keeps turning.
     ///
@@ -301,16 +245,33 @@ impl SpaceForm {
     /// tangent keeps turning (the curve approaches a circle).
     ///
     /// ```
-    /// use lac::{RadiusLimit, SpaceForm, TorsionType, TurningCell};
+    /// use lac::{
+    ///     BoundBy, RadiusCell, RadiusLimit, SeedRow, SpaceForm, SpaceFormParams, TorsionType,
+    ///     TurningCell,
+    /// };
     /// // Row a24 (α = 1, β < 0, type 1).
-    /// let c = SpaceForm::new(1.0, -1.0, 1.0, 1.0, 1.0, TorsionType::One).unwrap().classify();
-    /// assert_eq!(c.row(), Some("a24"));
+    /// let params = SpaceFormParams {
+    ///     alpha: 1.0,
+    ///     beta: -1.0,
+    ///     lambda: 1.0,
+    ///     omega: 1.0,
+    ///     nu: 1.0,
+    ///     torsion: TorsionType::One,
+    /// };
+    /// let c = SpaceForm::new(params).unwrap().classify();
+    /// assert_eq!(c.row(), Some(SeedRow { torsion: TorsionType::One, number: 24 }));
     /// assert_eq!(c.upper.s, 1.0); // −ν^β/(Ωβ)
     /// assert_eq!(c.upper.theta, TurningCell::CutShort { diverges_at_own_end: true });
     /// assert_eq!(c.upper.mu.limit, RadiusLimit::Infinite);
     /// assert!(c.upper.tangent_settles && c.upper.binormal_settles);
-    /// assert_eq!(c.lower.seed_cells(), ["A", "-inf", "Finite(-inf)", "0*", "-"]);
-    /// assert!(!c.lower.tangent_settles && c.lower.binormal_settles);
+    /// // The seed's "A", "-inf", "Finite(-inf)", "0*", "-".
+    /// let lower = c.lower;
+    /// assert_eq!(lower.binds, BoundBy::Rho);
+    /// assert_eq!(lower.theta, TurningCell::Infinite);
+    /// assert_eq!(lower.phi, TurningCell::CutShort { diverges_at_own_end: true });
+    /// assert_eq!(lower.rho, RadiusCell { limit: RadiusLimit::Zero, star: true });
+    /// assert_eq!(lower.mu.limit, RadiusLimit::Positive);
+    /// assert!(!lower.tangent_settles && lower.binormal_settles);
     /// ```
     pub fn classify(&self) -> SpaceClassification {
         let (lo, hi) = self.s_range();
@@ -374,14 +335,14 @@ impl SpaceForm {
         }
     }
 
-    /// The seed's row name, for Λ > 0 and Ω > 0.
+    /// The seed's row, for Λ > 0 and Ω > 0.
     ///
     /// Both tables list α-classes in the order < 0, = 0, (0, 1), = 1, > 1, and within each
     /// the same β-classes; a pair takes three rows when both bounds exist on the same side
     /// (type 1: α, β both < 0 or both > 0; type 2: opposite signs), one row otherwise. The
     /// three rows compare A = −1/(Λα) with the μ bound B in the order >, =, < (type 1) or
     /// <, =, > (type 2). This reproduces a1–a45 and b1–b37.
-    fn seed_row(&self) -> Option<&'static str> {
+    fn seed_row(&self) -> Option<SeedRow> {
         if !(self.lambda() > 0.0 && self.omega() > 0.0) {
             return None;
         }
@@ -413,8 +374,11 @@ impl SpaceForm {
                         };
                         index += offset;
                     }
-                    let names = if type_one { &ROWS_1[..] } else { &ROWS_2[..] };
-                    return names.get(index).copied();
+                    let rows = if type_one { ROWS_1 } else { ROWS_2 };
+                    return (index < rows).then(|| SeedRow {
+                        torsion: self.torsion_type(),
+                        number: index as u8 + 1,
+                    });
                 }
                 index += if split(a, b) { 3 } else { 1 };
             }
@@ -423,20 +387,11 @@ impl SpaceForm {
     }
 }
 
-/// Row names of seed 003 Fig. 5.
-const ROWS_1: [&str; 45] = [
-    "a1", "a2", "a3", "a4", "a5", "a6", "a7", "a8", "a9", "a10", "a11", "a12", "a13", "a14", "a15",
-    "a16", "a17", "a18", "a19", "a20", "a21", "a22", "a23", "a24", "a25", "a26", "a27", "a28",
-    "a29", "a30", "a31", "a32", "a33", "a34", "a35", "a36", "a37", "a38", "a39", "a40", "a41",
-    "a42", "a43", "a44", "a45",
-];
+/// Rows of seed 003 Fig. 5 (type 1).
+const ROWS_1: usize = 45;
 
-/// Row names of seed 003 Fig. 6.
-const ROWS_2: [&str; 37] = [
-    "b1", "b2", "b3", "b4", "b5", "b6", "b7", "b8", "b9", "b10", "b11", "b12", "b13", "b14", "b15",
-    "b16", "b17", "b18", "b19", "b20", "b21", "b22", "b23", "b24", "b25", "b26", "b27", "b28",
-    "b29", "b30", "b31", "b32", "b33", "b34", "b35", "b36", "b37",
-];
+/// Rows of seed 003 Fig. 6 (type 2).
+const ROWS_2: usize = 37;
 
 /// The seed's classes of a slope: 0 for < 0, 1 for = 0, 2 for (0, 1), 3 for = 1, 4 for > 1.
 fn slope_class(x: f64) -> Option<usize> {

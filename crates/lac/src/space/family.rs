@@ -89,6 +89,8 @@ impl PowerLaw {
 
 /// Which way the radius of torsion runs (seed 003 eqs. 6–7).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum TorsionType {
     /// Type 1: μ = ν e^(Ωs) (β = 0), (Ωβs + ν^β)^(1/β) otherwise; μ increases with s.
     One,
@@ -126,6 +128,28 @@ impl TorsionType {
     }
 }
 
+/// The parameters of a [`SpaceForm`] (seed 003 §3): the slopes α, β of its logarithmic
+/// curvature and torsion graphs, their parameters Λ, Ω, the radius of torsion ν = μ(0) at
+/// the start, and the torsion type.
+///
+/// Plain data; [`SpaceForm::new`] checks it (α, β finite, Λ ≥ 0, Ω ≥ 0, ν > 0).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct SpaceFormParams {
+    /// α, the slope of the logarithmic curvature graph.
+    pub alpha: f64,
+    /// β, the slope of the logarithmic torsion graph.
+    pub beta: f64,
+    /// Λ ≥ 0, the curvature graph's parameter: ρ = e^(Λs) (α = 0), (Λαs + 1)^(1/α).
+    pub lambda: f64,
+    /// Ω ≥ 0, the torsion graph's parameter: μ = ν e^(±Ωs) (β = 0), (±Ωβs + ν^β)^(1/β).
+    pub omega: f64,
+    /// ν > 0, the radius of torsion μ(0) at the start.
+    pub nu: f64,
+    /// Whether μ increases ([`TorsionType::One`]) or decreases with s.
+    pub torsion: TorsionType,
+}
+
 /// A log-aesthetic space curve in standard form (seed 003 §3): straight logarithmic curvature
 /// graph of slope α and torsion graph of slope β,
 ///
@@ -140,19 +164,30 @@ impl TorsionType {
 /// leaves the osculating plane toward +b). Λ = Ω = 0 is a helix.
 ///
 /// ```
-/// use lac::{SpaceForm, TorsionType};
-/// let helix = SpaceForm::new(0.5, -1.0, 0.0, 0.0, 2.0, TorsionType::One).unwrap();
+/// use lac::{SpaceForm, SpaceFormParams, TorsionType};
+/// let helix = SpaceForm::new(SpaceFormParams {
+///     alpha: 0.5,
+///     beta: -1.0,
+///     lambda: 0.0,
+///     omega: 0.0,
+///     nu: 2.0,
+///     torsion: TorsionType::One,
+/// })
+/// .unwrap();
 /// let f = helix.frame_at(1.0).unwrap();
 /// assert!((f.curvature - 1.0).abs() < 1e-15 && (f.torsion - 0.5).abs() < 1e-15);
 /// ```
+///
+/// With the `serde` feature it is (de)serialised as its [`SpaceFormParams`], and
+/// deserialisation checks them as [`SpaceForm::new`] does.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(into = "SpaceFormParams", try_from = "SpaceFormParams")
+)]
 pub struct SpaceForm {
-    alpha: f64,
-    beta: f64,
-    lambda: f64,
-    omega: f64,
-    nu: f64,
-    kind: TorsionType,
+    params: SpaceFormParams,
     kappa: PowerLaw,
     tau: PowerLaw,
 }
@@ -160,14 +195,15 @@ pub struct SpaceForm {
 impl SpaceForm {
     /// The standard form with these parameters: α, β any finite numbers, Λ ≥ 0, Ω ≥ 0,
     /// ν > 0.
-    pub fn new(
-        alpha: f64,
-        beta: f64,
-        lambda: f64,
-        omega: f64,
-        nu: f64,
-        kind: TorsionType,
-    ) -> Result<SpaceForm> {
+    pub fn new(params: SpaceFormParams) -> Result<SpaceForm> {
+        let SpaceFormParams {
+            alpha,
+            beta,
+            lambda,
+            omega,
+            nu,
+            torsion: _,
+        } = params;
         finite("alpha", alpha)?;
         finite("beta", beta)?;
         for (name, value) in [("lambda", lambda), ("omega", omega)] {
@@ -188,27 +224,23 @@ impl SpaceForm {
                 expected: "> 0",
             });
         }
-        Ok(Self::new_unchecked(alpha, beta, lambda, omega, nu, kind))
+        Ok(Self::new_unchecked(params))
     }
 
     /// [`SpaceForm::new`] without the checks, for the solver (which also visits Λ < 0).
-    pub(crate) fn new_unchecked(
-        alpha: f64,
-        beta: f64,
-        lambda: f64,
-        omega: f64,
-        nu: f64,
-        kind: TorsionType,
-    ) -> SpaceForm {
-        // τ = 1/μ = ν⁻¹ (1 ± Ωβν^(−β) s)^(−1/β); ν^(−β) = e^(−β ln ν) is 1 at β = 0.
-        let rate = kind.sign() * omega * (-beta * nu.ln()).exp();
-        SpaceForm {
+    pub(crate) fn new_unchecked(params: SpaceFormParams) -> SpaceForm {
+        let SpaceFormParams {
             alpha,
             beta,
             lambda,
             omega,
             nu,
-            kind,
+            torsion,
+        } = params;
+        // τ = 1/μ = ν⁻¹ (1 ± Ωβν^(−β) s)^(−1/β); ν^(−β) = e^(−β ln ν) is 1 at β = 0.
+        let rate = torsion.sign() * omega * (-beta * nu.ln()).exp();
+        SpaceForm {
+            params,
             kappa: PowerLaw {
                 c: 1.0,
                 a: lambda,
@@ -222,29 +254,33 @@ impl SpaceForm {
         }
     }
 
+    /// The parameters α, β, Λ, Ω, ν and type.
+    pub fn params(&self) -> SpaceFormParams {
+        self.params
+    }
     /// Slope of the logarithmic curvature graph.
     pub fn alpha(&self) -> f64 {
-        self.alpha
+        self.params.alpha
     }
     /// Slope of the logarithmic torsion graph.
     pub fn beta(&self) -> f64 {
-        self.beta
+        self.params.beta
     }
     /// Λ, the curvature graph's parameter.
     pub fn lambda(&self) -> f64 {
-        self.lambda
+        self.params.lambda
     }
     /// Ω, the torsion graph's parameter.
     pub fn omega(&self) -> f64 {
-        self.omega
+        self.params.omega
     }
     /// ν = μ(0), the radius of torsion at the start.
     pub fn nu(&self) -> f64 {
-        self.nu
+        self.params.nu
     }
     /// Type 1 or 2.
     pub fn torsion_type(&self) -> TorsionType {
-        self.kind
+        self.params.torsion
     }
 
     pub(crate) fn kappa_law(&self) -> &PowerLaw {
@@ -361,5 +397,20 @@ impl SpaceForm {
             curvature: self.kappa.value(state.s),
             torsion: self.tau.value(state.s),
         }
+    }
+}
+
+impl TryFrom<SpaceFormParams> for SpaceForm {
+    type Error = Error;
+
+    /// [`SpaceForm::new`].
+    fn try_from(params: SpaceFormParams) -> Result<SpaceForm> {
+        SpaceForm::new(params)
+    }
+}
+
+impl From<SpaceForm> for SpaceFormParams {
+    fn from(form: SpaceForm) -> SpaceFormParams {
+        form.params
     }
 }

@@ -2,15 +2,14 @@
 
 use kurbo::Point;
 
-use super::family::{SpaceForm, TorsionType};
-use super::shoot::{end_angles, shoot, Cone, Shot};
+use super::family::{SpaceForm, SpaceFormParams, TorsionType};
+use super::mat3::Mat3;
+use super::shoot::{end_angles, shoot, Checkpoints, Cone, Shot};
 use super::taylor::{Expansion, State};
-use super::vec3::{
-    axpy, cross, dot, from_columns, mat_mul, mat_vec, norm, scale, sub, transpose, unit, V3,
-};
 use super::Frame;
 use crate::error::{finite, Error, NotDrawable, Result};
 use crate::segment::Segment;
+use crate::Vec3;
 
 /// Dihedral angles |θ2| below this (radians) count as coplanar: the planar segment is drawn.
 pub const PLANAR_TOLERANCE: f64 = 1e-9;
@@ -25,18 +24,37 @@ const GENTLE_TURNING: f64 = 1.5 * std::f64::consts::PI;
 /// Newton stops when both components of the end-tangent residual are below this (radians).
 const RESIDUAL_TOLERANCE: f64 = 1e-13;
 
+/// The shape asked of a [`SpaceSegment`]: the slopes α, β of its logarithmic curvature and
+/// torsion graphs, the torsion graph's parameter Ω and the torsion type (seed 003 §4). The
+/// solver finds Λ and ν ([`SpaceFormParams`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct SpaceShape {
+    /// α, the slope of the logarithmic curvature graph (finite).
+    pub alpha: f64,
+    /// β, the slope of the logarithmic torsion graph (finite).
+    pub beta: f64,
+    /// Ω ≥ 0, the torsion graph's parameter (0: μ constant when β = 0).
+    pub omega: f64,
+    /// Whether the radius of torsion increases ([`TorsionType::One`]) or decreases along
+    /// the standard form.
+    pub torsion: TorsionType,
+}
+
 /// The similarity from the standard form to the caller's coordinates:
 /// `caller = translation + scale · rotation · M · standard`, with `M = diag(1, 1, −1)` when
 /// `mirror_z` and the identity otherwise.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Similarity3 {
     /// Standard-form lengths to the caller's.
     pub scale: f64,
-    /// A proper rotation, row-major.
+    /// A proper rotation, stored by rows: `rotation[i][j]` is row i, column j, so the
+    /// rotated vector's i-th coordinate is `rotation[i] · v`.
     pub rotation: [[f64; 3]; 3],
     /// Where the standard form's origin lands: the first control point, or the last when
     /// `reversed`.
-    pub translation: [f64; 3],
+    pub translation: Vec3,
     /// The standard form is mirrored in its xy plane first (a left-handed segment, τ < 0).
     pub mirror_z: bool,
     /// The standard form runs from the last control point to the first (seed 003 §4 swaps
@@ -46,27 +64,29 @@ pub struct Similarity3 {
 
 impl Similarity3 {
     /// A standard-form point in the caller's coordinates.
-    pub fn apply(&self, p: [f64; 3]) -> [f64; 3] {
-        axpy(self.translation, self.scale, self.apply_vector(p))
+    pub fn apply(&self, p: Vec3) -> Vec3 {
+        self.translation + self.scale * self.apply_vector(p)
     }
 
     /// A standard-form direction in the caller's coordinates (rotation and mirror only).
-    pub fn apply_vector(&self, v: [f64; 3]) -> [f64; 3] {
-        mat_vec(&self.rotation, mirror(v, self.mirror_z))
+    pub fn apply_vector(&self, v: Vec3) -> Vec3 {
+        Mat3(self.rotation) * mirror(v, self.mirror_z)
     }
 }
 
 /// `v` mirrored in the xy plane when `mirror_z`.
-fn mirror(v: V3, mirror_z: bool) -> V3 {
+fn mirror(v: Vec3, mirror_z: bool) -> Vec3 {
     if mirror_z {
-        [v[0], v[1], -v[2]]
+        Vec3::new(v.x, v.y, -v.z)
     } else {
         v
     }
 }
 
+/// What the solver found: a piece of a standard form placed by a similarity, or, for
+/// coplanar points, a planar segment in their plane.
 #[derive(Clone, Debug)]
-enum Shape {
+enum Solved {
     Space {
         form: SpaceForm,
         s_end: f64,
@@ -77,9 +97,9 @@ enum Shape {
     Planar {
         segment: Segment,
         /// The plane: origin P0 and orthonormal axes.
-        origin: V3,
-        e1: V3,
-        e2: V3,
+        origin: Vec3,
+        e1: Vec3,
+        e2: Vec3,
     },
 }
 
@@ -94,26 +114,30 @@ enum Shape {
 /// the tangents' intersection and P3 ([`SpaceSegment::planar`]), with zero torsion.
 ///
 /// ```
-/// use lac::{SpaceSegment, TorsionType};
-/// let p = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [2.0, 1.0, 0.5], [2.0, 2.0, 1.5]];
-/// let seg = SpaceSegment::from_control_points(p, 0.0, 0.0, 0.0, TorsionType::One)?;
+/// use lac::{SpaceSegment, SpaceShape, TorsionType, Vec3};
+/// let p = [
+///     Vec3::new(0.0, 0.0, 0.0),
+///     Vec3::new(1.0, 0.0, 0.0),
+///     Vec3::new(2.0, 1.0, 0.5),
+///     Vec3::new(2.0, 2.0, 1.5),
+/// ];
+/// let shape = SpaceShape { alpha: 0.0, beta: 0.0, omega: 0.0, torsion: TorsionType::One };
+/// let seg = SpaceSegment::from_control_points(p, shape)?;
 /// let end = seg.frame_at(seg.arc_length())?;
-/// assert!((end.point[1] - 2.0).abs() < 1e-9);
+/// assert!(end.point.distance(p[3]) < 1e-9);
 /// # Ok::<(), lac::Error>(())
 /// ```
 #[derive(Clone, Debug)]
 pub struct SpaceSegment {
-    points: [V3; 4],
-    alpha: f64,
-    beta: f64,
-    omega: f64,
-    kind: TorsionType,
-    shape: Shape,
+    points: [Vec3; 4],
+    shape: SpaceShape,
+    solved: Solved,
     arc_length: f64,
 }
 
 /// A point of a logarithmic curvature or torsion graph.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GraphPoint {
     /// Arc length from P0.
     pub s: f64,
@@ -156,25 +180,22 @@ struct Converged {
 }
 
 impl SpaceSegment {
-    /// Solve for the segment through `points = [P0, P1, P2, P3]` with curvature slope
-    /// `alpha`, torsion slope `beta`, torsion parameter `omega ≥ 0` and torsion type.
+    /// Solve for the segment through `points = [P0, P1, P2, P3]` with the curvature slope α,
+    /// torsion slope β, torsion parameter Ω ≥ 0 and torsion type of `shape`.
     ///
     /// Errors: non-finite input, coincident points (P0 = P1, P2 = P3 or P0 = P3), a tangent
     /// along the chord ([`Error::CollinearPoints`]), a coplanar S ([`Error::InflectedPolygon`]),
     /// and [`Error::NotDrawable`]: [`NotDrawable::TorsionTooLarge`] with the largest Ω that
     /// works when a smaller Ω would, [`NotDrawable::NoSpaceSegment`] when none does.
-    pub fn from_control_points(
-        points: [[f64; 3]; 4],
-        alpha: f64,
-        beta: f64,
-        omega: f64,
-        kind: TorsionType,
-    ) -> Result<SpaceSegment> {
+    pub fn from_control_points(points: [Vec3; 4], shape: SpaceShape) -> Result<SpaceSegment> {
         for p in &points {
-            for &c in p {
+            for c in p.to_array() {
                 finite("control point coordinate", c)?;
             }
         }
+        let SpaceShape {
+            alpha, beta, omega, ..
+        } = shape;
         finite("alpha", alpha)?;
         finite("beta", beta)?;
         finite("omega", omega)?;
@@ -191,9 +212,9 @@ impl SpaceSegment {
             }
         }
         let [p0, p1, p2, p3] = points;
-        let t0 = unit(sub(p1, p0));
-        let t1 = unit(sub(p3, p2));
-        let chord = sub(p3, p0);
+        let t0 = (p1 - p0).normalize();
+        let t1 = (p3 - p2).normalize();
+        let chord = p3 - p0;
         let (theta0, theta1, theta2) = end_angles(chord, t0, t1);
         // A tangent along the chord line: no cone (seed 003 needs 0 < θ0, θ1 < π).
         for th in [theta0, theta1] {
@@ -202,86 +223,87 @@ impl SpaceSegment {
             }
         }
         let off_plane = theta2.abs().min(std::f64::consts::PI - theta2.abs());
-        let shape = if off_plane < PLANAR_TOLERANCE {
+        let solved = if off_plane < PLANAR_TOLERANCE {
             planar(points, alpha, theta2)?
         } else {
-            solve_space(points, alpha, beta, omega, kind, [theta0, theta1, theta2])?
+            solve_space(points, shape, [theta0, theta1, theta2])?
         };
-        let arc_length = match &shape {
-            Shape::Space {
+        let arc_length = match &solved {
+            Solved::Space {
                 s_end, transform, ..
             } => s_end * transform.scale,
-            Shape::Planar { segment, .. } => crate::Curve::arc_length(segment),
+            Solved::Planar { segment, .. } => crate::Curve::arc_length(segment),
         };
         Ok(SpaceSegment {
             points,
-            alpha,
-            beta,
-            omega,
-            kind,
             shape,
+            solved,
             arc_length,
         })
     }
 
     /// The control points `[P0, P1, P2, P3]`.
-    pub fn control_points(&self) -> [[f64; 3]; 4] {
+    pub fn control_points(&self) -> [Vec3; 4] {
         self.points
+    }
+    /// The shape asked for: α, β, Ω and type.
+    pub fn shape(&self) -> SpaceShape {
+        self.shape
     }
     /// Slope of the logarithmic curvature graph.
     pub fn alpha(&self) -> f64 {
-        self.alpha
+        self.shape.alpha
     }
     /// Slope of the logarithmic torsion graph.
     pub fn beta(&self) -> f64 {
-        self.beta
+        self.shape.beta
     }
     /// The torsion parameter Ω asked for.
     pub fn omega(&self) -> f64 {
-        self.omega
+        self.shape.omega
     }
     /// Type 1 or 2.
     pub fn torsion_type(&self) -> TorsionType {
-        self.kind
+        self.shape.torsion
     }
 
     /// The solved standard form (with Λ and ν), `None` for a coplanar (planar) segment.
     pub fn standard_form(&self) -> Option<&SpaceForm> {
-        match &self.shape {
-            Shape::Space { form, .. } => Some(form),
-            Shape::Planar { .. } => None,
+        match &self.solved {
+            Solved::Space { form, .. } => Some(form),
+            Solved::Planar { .. } => None,
         }
     }
 
     /// The standard-form arc length of the segment, `None` when planar.
     pub fn s_end(&self) -> Option<f64> {
-        match &self.shape {
-            Shape::Space { s_end, .. } => Some(*s_end),
-            Shape::Planar { .. } => None,
+        match &self.solved {
+            Solved::Space { s_end, .. } => Some(*s_end),
+            Solved::Planar { .. } => None,
         }
     }
 
     /// The similarity from the standard form to the caller's coordinates, `None` when
     /// planar.
     pub fn transform(&self) -> Option<&Similarity3> {
-        match &self.shape {
-            Shape::Space { transform, .. } => Some(transform),
-            Shape::Planar { .. } => None,
+        match &self.solved {
+            Solved::Space { transform, .. } => Some(transform),
+            Solved::Planar { .. } => None,
         }
     }
 
     /// The planar segment drawn instead when the four points are coplanar, in the plane's
     /// coordinates: origin P0, x along `P1 − P0`, y toward the chord.
     pub fn planar(&self) -> Option<&Segment> {
-        match &self.shape {
-            Shape::Planar { segment, .. } => Some(segment),
-            Shape::Space { .. } => None,
+        match &self.solved {
+            Solved::Planar { segment, .. } => Some(segment),
+            Solved::Space { .. } => None,
         }
     }
 
     /// Is this the planar fallback for coplanar points?
     pub fn is_planar(&self) -> bool {
-        matches!(self.shape, Shape::Planar { .. })
+        matches!(self.solved, Solved::Planar { .. })
     }
 
     /// Arc length from P0 to P3.
@@ -342,11 +364,11 @@ impl SpaceSegment {
     /// `(ln ρ, ln(ρ |ds/dρ|))` in the caller's units, a straight line of slope α. Empty when
     /// ρ is constant (Λ = 0).
     pub fn log_curvature_graph(&self, n: usize) -> Result<Vec<GraphPoint>> {
-        let (alpha, lambda, scale) = match &self.shape {
-            Shape::Space {
+        let (alpha, lambda, scale) = match &self.solved {
+            Solved::Space {
                 form, transform, ..
             } => (form.alpha(), form.lambda(), transform.scale),
-            Shape::Planar { segment, .. } => (segment.alpha(), segment.lambda(), 1.0),
+            Solved::Planar { segment, .. } => (segment.alpha(), segment.lambda(), 1.0),
         };
         // dρ/ds = Λ ρ^(1−α) in standard units, so ρ ds/dρ = ρ^α / Λ; scaling by k
         // multiplies ρ and s by k (and ρ ds/dρ by k).
@@ -360,11 +382,11 @@ impl SpaceSegment {
     /// The logarithmic torsion graph: `(ln μ, ln(μ |ds/dμ|))`, μ = 1/|τ|, a straight line of
     /// slope β. Empty when μ is constant (Ω = 0) or the segment is planar.
     pub fn log_torsion_graph(&self, n: usize) -> Result<Vec<GraphPoint>> {
-        let scale = match &self.shape {
-            Shape::Space { transform, .. } => transform.scale,
-            Shape::Planar { .. } => return Ok(Vec::new()),
+        let scale = match &self.solved {
+            Solved::Space { transform, .. } => transform.scale,
+            Solved::Planar { .. } => return Ok(Vec::new()),
         };
-        let (beta, omega) = (self.beta, self.omega);
+        let (beta, omega) = (self.shape.beta, self.shape.omega);
         // |dμ/ds| = Ω μ^(1−β) in standard units.
         self.graph(n, omega, |f| {
             let mu = 1.0 / f.torsion.abs();
@@ -394,8 +416,8 @@ impl SpaceSegment {
 
     /// The frame at `s` in [0, arc length]; `series` keeps the last step's Taylor series.
     fn frame_unchecked(&self, s: f64, series: &mut Option<(usize, Expansion)>) -> Frame {
-        match &self.shape {
-            Shape::Space {
+        match &self.solved {
+            Solved::Space {
                 form,
                 s_end,
                 transform,
@@ -415,20 +437,20 @@ impl SpaceSegment {
                 let state = expansion.state_at(st - checkpoints[i].s);
                 let f = form.frame_from(&state);
                 let sign = if transform.reversed { -1.0 } else { 1.0 };
-                let tangent = scale(transform.apply_vector(f.tangent), sign);
+                let tangent = transform.apply_vector(f.tangent) * sign;
                 let normal = transform.apply_vector(f.normal);
                 Frame {
                     s,
                     point: transform.apply(f.point),
                     tangent,
                     normal,
-                    binormal: cross(tangent, normal),
+                    binormal: tangent.cross(normal),
                     curvature: f.curvature / transform.scale,
                     torsion: if transform.mirror_z { -1.0 } else { 1.0 } * f.torsion
                         / transform.scale,
                 }
             }
-            Shape::Planar {
+            Solved::Planar {
                 segment,
                 origin,
                 e1,
@@ -438,15 +460,15 @@ impl SpaceSegment {
                 let p = segment.point_of(&station);
                 let theta = segment.theta_of(&station);
                 let kappa = segment.kappa_of(&station);
-                let tangent = axpy(scale(*e1, theta.cos()), theta.sin(), *e2);
-                let left = axpy(scale(*e1, -theta.sin()), theta.cos(), *e2);
-                let normal = scale(left, kappa.signum());
+                let tangent = *e1 * theta.cos() + *e2 * theta.sin();
+                let left = *e1 * -theta.sin() + *e2 * theta.cos();
+                let normal = left * kappa.signum();
                 Frame {
                     s,
-                    point: axpy(axpy(*origin, p.x, *e1), p.y, *e2),
+                    point: *origin + *e1 * p.x + *e2 * p.y,
                     tangent,
                     normal,
-                    binormal: cross(tangent, normal),
+                    binormal: tangent.cross(normal),
                     curvature: kappa.abs(),
                     torsion: 0.0,
                 }
@@ -456,7 +478,7 @@ impl SpaceSegment {
 }
 
 /// The planar fallback: the planar segment through P0, the tangents' intersection and P3.
-fn planar(points: [V3; 4], alpha: f64, theta2: f64) -> Result<Shape> {
+fn planar(points: [Vec3; 4], alpha: f64, theta2: f64) -> Result<Solved> {
     if theta2.abs() > std::f64::consts::FRAC_PI_2 {
         return Err(Error::InflectedPolygon {
             first: crate::Turn::Left,
@@ -464,10 +486,10 @@ fn planar(points: [V3; 4], alpha: f64, theta2: f64) -> Result<Shape> {
         });
     }
     let [p0, p1, p2, p3] = points;
-    let e1 = unit(sub(p1, p0));
-    let chord = sub(p3, p0);
-    let e2 = unit(axpy(chord, -dot(chord, e1), e1));
-    let to2 = |p: V3| Point::new(dot(sub(p, p0), e1), dot(sub(p, p0), e2));
+    let e1 = (p1 - p0).normalize();
+    let chord = p3 - p0;
+    let e2 = (chord - chord.dot(e1) * e1).normalize();
+    let to2 = |p: Vec3| Point::new((p - p0).dot(e1), (p - p0).dot(e2));
     let (q3, d) = (to2(p3), to2(p3) - to2(p2));
     // P0 + a e1 = P3 − b d/|d|: the tangents' intersection, ahead of both ends.
     let d = d / d.hypot();
@@ -476,12 +498,12 @@ fn planar(points: [V3; 4], alpha: f64, theta2: f64) -> Result<Shape> {
     let b = q3.y / d.y;
     if !(a > 0.0 && b > 0.0 && a.is_finite() && b.is_finite()) {
         return Err(Error::NotDrawable(NotDrawable::ChordOutsideTangents {
-            theta_e: super::vec3::angle(chord, e1),
+            theta_e: chord.angle_to(e1),
             turning: 0.0,
         }));
     }
     let segment = Segment::from_control_points([Point::ZERO, Point::new(a, 0.0), q3], alpha)?;
-    Ok(Shape::Planar {
+    Ok(Solved::Planar {
         segment,
         origin: p0,
         e1,
@@ -490,14 +512,7 @@ fn planar(points: [V3; 4], alpha: f64, theta2: f64) -> Result<Shape> {
 }
 
 /// Solve the space problem: swap the ends if θ0 < θ1, find (Λ, ν), build the similarity.
-fn solve_space(
-    points: [V3; 4],
-    alpha: f64,
-    beta: f64,
-    omega: f64,
-    kind: TorsionType,
-    angles: [f64; 3],
-) -> Result<Shape> {
+fn solve_space(points: [Vec3; 4], shape: SpaceShape, angles: [f64; 3]) -> Result<Solved> {
     let [theta0, theta1, _] = angles;
     let reversed = theta0 < theta1;
     let [p0, p1, p2, p3] = if reversed {
@@ -505,9 +520,9 @@ fn solve_space(
     } else {
         points
     };
-    let t0 = unit(sub(p1, p0));
-    let t1 = unit(sub(p3, p2));
-    let chord = sub(p3, p0);
+    let t0 = (p1 - p0).normalize();
+    let t1 = (p3 - p2).normalize();
+    let chord = p3 - p0;
     let (theta0, theta1, theta2) = end_angles(chord, t0, t1);
     let target = Target {
         theta0,
@@ -521,34 +536,32 @@ fn solve_space(
         1
     };
     let problem = Problem {
-        alpha,
-        beta,
-        kind,
+        shape,
         target,
         crossing,
     };
+    let omega = shape.omega;
     let solution = problem.solve_with_omega(omega)?;
     let form = problem.form(&solution, omega);
-    let shot = shoot(&form, &problem.cone(), true).expect("a converged shot repeats");
+    let shot = shoot(&form, &problem.cone(), Checkpoints::Keep).expect("a converged shot repeats");
     // Mirror when the standard form's dihedral has the other sign (seed 003 §4).
     let mirror_z = (shot.theta2 < 0.0) != (theta2 < 0.0);
-    let m = |v: V3| mirror(v, mirror_z);
     // Rotation taking e1 to t0 and the standard-form chord to the caller's.
-    let frame_of = |axis: V3, towards: V3| {
-        let w = unit(axpy(towards, -dot(towards, axis), axis));
-        from_columns(axis, w, cross(axis, w))
+    let frame_of = |axis: Vec3, towards: Vec3| {
+        let w = (towards - towards.dot(axis) * axis).normalize();
+        Mat3::from_columns(axis, w, axis.cross(w))
     };
-    let standard = frame_of([1.0, 0.0, 0.0], m(shot.end.x));
+    let standard = frame_of(Vec3::X, mirror(shot.end.x, mirror_z));
     let caller = frame_of(t0, chord);
-    let rotation = mat_mul(&caller, &transpose(&standard));
+    let rotation = caller * standard.transpose();
     let transform = Similarity3 {
-        scale: norm(chord) / norm(shot.end.x),
-        rotation,
+        scale: chord.length() / shot.end.x.length(),
+        rotation: rotation.0,
         translation: p0,
         mirror_z,
         reversed,
     };
-    Ok(Shape::Space {
+    Ok(Solved::Space {
         form,
         s_end: shot.end.s,
         transform,
@@ -565,13 +578,21 @@ struct Scan {
     defined: Vec<(f64, Solution)>,
 }
 
-/// The two-parameter search of seed 003 §4 for fixed α, β, type, end geometry and crossing.
+/// The two-parameter search of seed 003 §4 for fixed α, β, type, end geometry and crossing
+/// (the Ω of `shape` is the goal; continuation visits smaller ones).
 struct Problem {
-    alpha: f64,
-    beta: f64,
-    kind: TorsionType,
+    shape: SpaceShape,
     target: Target,
     crossing: u32,
+}
+
+/// How far [`Problem::scan`] goes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum ScanUntil {
+    /// Stop at the first sign change of the dihedral mismatch and return it, interpolated.
+    SignChange,
+    /// Scan the whole grid, collecting every defined point.
+    End,
 }
 
 impl Problem {
@@ -580,14 +601,14 @@ impl Problem {
     }
 
     fn form(&self, p: &Solution, omega: f64) -> SpaceForm {
-        SpaceForm::new_unchecked(
-            self.alpha,
-            self.beta,
-            p.lambda,
+        SpaceForm::new_unchecked(SpaceFormParams {
+            alpha: self.shape.alpha,
+            beta: self.shape.beta,
+            lambda: p.lambda,
             omega,
-            p.ln_nu.exp(),
-            self.kind,
-        )
+            nu: p.ln_nu.exp(),
+            torsion: self.shape.torsion,
+        })
     }
 
     fn residual(&self, p: &Solution, omega: f64) -> Option<[f64; 2]> {
@@ -595,7 +616,7 @@ impl Problem {
     }
 
     fn shot(&self, p: &Solution, omega: f64) -> Option<Shot> {
-        shoot(&self.form(p, omega), &self.cone(), false)
+        shoot(&self.form(p, omega), &self.cone(), Checkpoints::Discard)
     }
 
     /// Solve at `omega`, directly from a near-helix start, else by continuation in Ω from
@@ -639,7 +660,7 @@ impl Problem {
         let mut best: Option<Converged> = None;
         for lambda in START_LAMBDAS {
             let mut scan = Scan::default();
-            let first = self.scan(omega, lambda, &mut scan, true);
+            let first = self.scan(omega, lambda, &mut scan, ScanUntil::SignChange);
             let mut starts = first.into_iter().collect::<Vec<_>>();
             for pass in 0..2 {
                 for start in starts.drain(..) {
@@ -653,7 +674,7 @@ impl Problem {
                     }
                 }
                 if pass == 0 {
-                    self.scan(omega, lambda, &mut scan, false);
+                    self.scan(omega, lambda, &mut scan, ScanUntil::End);
                     scan.defined.sort_by(|a, b| a.0.total_cmp(&b.0));
                     starts = scan.defined.drain(..).map(|(_, p)| p).take(3).collect();
                 }
@@ -664,9 +685,9 @@ impl Problem {
 
     /// The ν scan at fixed Λ. The helix's axis makes the angle atan ν with the start
     /// tangent, so it leaves the cone only for ν beyond about tan θ0, and its dihedral
-    /// angle falls toward 0 as ν grows: scan upward from there in quarter decades; with
-    /// `stop`, return at the first sign change of the dihedral mismatch, interpolated.
-    fn scan(&self, omega: f64, lambda: f64, scan: &mut Scan, stop: bool) -> Option<Solution> {
+    /// angle falls toward 0 as ν grows: scan upward from there in quarter decades, `until`
+    /// the first sign change of the dihedral mismatch (returned, interpolated) or the end.
+    fn scan(&self, omega: f64, lambda: f64, scan: &mut Scan, until: ScanUntil) -> Option<Solution> {
         let base = self.target.theta0.min(1.4).tan().ln() - 0.5 * std::f64::consts::LN_10;
         let want = self.target.theta2.abs();
         let step = 0.25 * std::f64::consts::LN_10;
@@ -683,7 +704,7 @@ impl Problem {
             let d = shot.theta2.abs() - want;
             let prev = scan.prev.replace((ln_nu, d));
             if let Some((ln_prev, d_prev)) = prev {
-                if stop && d_prev > 0.0 && d <= 0.0 {
+                if until == ScanUntil::SignChange && d_prev > 0.0 && d <= 0.0 {
                     return Some(Solution {
                         lambda,
                         ln_nu: ln_prev + step * d_prev / (d_prev - d),

@@ -3,7 +3,8 @@
 
 use super::family::SpaceForm;
 use super::taylor::{Expansion, State};
-use super::vec3::{angle, cross, dot, norm, scale, sub, unit, V3};
+use crate::numeric::{find_root, RootFailure};
+use crate::Vec3;
 
 /// Most Taylor steps one shot may take before the crossing is declared missing.
 const MAX_STEPS: usize = 400;
@@ -34,9 +35,19 @@ impl Cone {
     }
 
     /// `|x| cos θ0 − x·e1`: negative inside the cone, positive outside.
-    fn g(&self, x: V3) -> f64 {
-        norm(x) * self.cos - x[0]
+    fn g(&self, x: Vec3) -> f64 {
+        x.length() * self.cos - x.x
     }
+}
+
+/// Whether [`shoot`] keeps the integrator states at the starts of its steps (for evaluating
+/// the solved segment) or only the end (for the solver's trial shots).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Checkpoints {
+    /// Keep every step's start state in [`Shot::checkpoints`].
+    Keep,
+    /// Leave [`Shot::checkpoints`] empty.
+    Discard,
 }
 
 /// Where a standard-form curve meets the cone, and the end angles it gives the segment.
@@ -57,19 +68,19 @@ pub(crate) struct Shot {
 /// θ1 between `t1` and the chord, θ2 the dihedral angle about the chord from the half-plane
 /// containing `t0` to the half-plane containing `−t1` (0 for a planar curve that turns one
 /// way, ±π for a planar S).
-pub(crate) fn end_angles(chord: V3, t0: V3, t1: V3) -> (f64, f64, f64) {
-    let c = unit(chord);
-    let u0 = sub(t0, scale(c, dot(t0, c)));
-    let minus_t1 = scale(t1, -1.0);
-    let u1 = sub(minus_t1, scale(c, dot(minus_t1, c)));
-    let theta2 = dot(c, cross(u0, u1)).atan2(dot(u0, u1));
-    (angle(t0, c), angle(t1, c), theta2)
+pub(crate) fn end_angles(chord: Vec3, t0: Vec3, t1: Vec3) -> (f64, f64, f64) {
+    let c = chord.normalize();
+    let u0 = t0 - c * t0.dot(c);
+    let minus_t1 = -t1;
+    let u1 = minus_t1 - c * minus_t1.dot(c);
+    let theta2 = c.dot(u0.cross(u1)).atan2(u0.dot(u1));
+    (t0.angle_to(c), t1.angle_to(c), theta2)
 }
 
 /// Integrate `form` from s = 0 to its crossing with `cone`. `None` when the curve reaches a
 /// bound of its valid range first, turns its tangent or binormal by more than 2π first (the
 /// seed's guard against looping segments), or never gets there.
-pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep_checkpoints: bool) -> Option<Shot> {
+pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep: Checkpoints) -> Option<Shot> {
     let (_, s_max) = form.s_range();
     let mut state = State::start();
     let mut checkpoints = Vec::new();
@@ -87,7 +98,7 @@ pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep_checkpoints: bool) -> Op
         if h <= 1e-12 * state.s.abs().max(1.0) {
             return None;
         }
-        if keep_checkpoints {
+        if keep == Checkpoints::Keep {
             checkpoints.push(state);
         }
         let mut prev = 0.0;
@@ -103,7 +114,7 @@ pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep_checkpoints: bool) -> Op
             if (g > 0.0) != outside {
                 crossings += 1;
                 if crossings == cone.crossing {
-                    let sigma = refine(cone, &expansion, prev, g_prev, sigma, g);
+                    let sigma = refine(cone, &expansion, (prev, g_prev), (sigma, g));
                     return finish(form, &expansion, sigma, checkpoints);
                 }
             }
@@ -125,36 +136,30 @@ pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep_checkpoints: bool) -> Op
 }
 
 /// The crossing inside a step, between probes `a` (g = `ga`) and `b` (g = `gb`) of opposite
-/// signs: Newton on the step's series, kept inside the bracket (bisection otherwise).
-fn refine(cone: &Cone, e: &Expansion, mut a: f64, mut ga: f64, mut b: f64, gb: f64) -> f64 {
-    let mut x = a - ga * (b - a) / (gb - ga);
-    for _ in 0..60 {
-        let p = e.point_at(x);
-        let t = e.tangent_at(x);
-        let r = norm(p);
-        let g = r * cone.cos - p[0];
-        if g == 0.0 {
-            return x;
-        }
-        if (g < 0.0) == (ga < 0.0) {
-            a = x;
-            ga = g;
-        } else {
-            b = x;
-        }
-        let dg = cone.cos * dot(p, t) / r - t[0];
-        let newton = x - g / dg;
-        let next = if newton > a.min(b) && newton < a.max(b) {
-            newton
-        } else {
-            0.5 * (a + b)
-        };
-        if (next - x).abs() <= 1e-16 * (e.s0.abs() + x.abs()) || a == b {
-            return next;
-        }
-        x = next;
+/// signs: the crate's safeguarded Newton ([`find_root`]) on the step's series, from the
+/// probes' secant, with g′ = cos θ0 (x·t)/|x| − t·e1 from the series' tangent, to 1e-16 of
+/// the arc length from the standard form's start (a Newton step or the bracket below that).
+///
+/// Near the crossing g is at the level of its rounding, so where a Newton step rounds to
+/// nothing the bracket is narrowed to that width instead.
+fn refine(cone: &Cone, e: &Expansion, (a, ga): (f64, f64), (b, gb): (f64, f64)) -> f64 {
+    let g = |sigma: f64| {
+        let p = e.point_at(sigma);
+        let t = e.tangent_at(sigma);
+        let r = p.length();
+        // At the apex (r = 0) g′ is undefined (NaN): find_root then takes a secant step.
+        (r * cone.cos - p.x, Some(cone.cos * p.dot(t) / r - t.x))
+    };
+    let secant = a - ga * (b - a) / (gb - ga);
+    let x_tol = 1e-16 * (e.s0.abs() + secant.abs());
+    match find_root(g, (a, ga), (b, gb), Some(secant), x_tol, 60) {
+        Ok(sigma) => sigma,
+        // Still bracketed after 60 steps (g flat at rounding level): its middle is as good.
+        Err(RootFailure::NotConverged { lo, hi }) => 0.5 * (lo + hi),
+        // The probes' signs differ by construction; should they not, the secant is the
+        // best estimate there is.
+        Err(RootFailure::NotBracketed) => secant,
     }
-    x
 }
 
 fn finish(form: &SpaceForm, e: &Expansion, sigma: f64, checkpoints: Vec<State>) -> Option<Shot> {
@@ -162,7 +167,7 @@ fn finish(form: &SpaceForm, e: &Expansion, sigma: f64, checkpoints: Vec<State>) 
     if !within_guard(form, end.s) {
         return None;
     }
-    let (_, theta1, theta2) = end_angles(end.x, [1.0, 0.0, 0.0], end.t);
+    let (_, theta1, theta2) = end_angles(end.x, Vec3::X, end.t);
     Some(Shot {
         end,
         theta1,
@@ -186,6 +191,6 @@ fn never_leaves(form: &SpaceForm, cone: &Cone, state: &State) -> bool {
         return false;
     }
     let remaining = form.kappa_law().integral_upper() - form.kappa_law().integral(state.s);
-    let tangent_angle = state.t[0].clamp(-1.0, 1.0).acos();
+    let tangent_angle = state.t.x.clamp(-1.0, 1.0).acos();
     remaining.is_finite() && tangent_angle + remaining < cone.half_angle
 }

@@ -15,7 +15,7 @@
 //! the steps shrink accordingly. The series is the dense output inside a step.
 
 use super::family::SpaceForm;
-use super::vec3::{cross, dot, scale, V3};
+use crate::Vec3;
 
 /// Order of the series.
 pub(crate) const ORDER: usize = 20;
@@ -27,10 +27,10 @@ const STEP_TOLERANCE: f64 = 2e-16;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct State {
     pub(crate) s: f64,
-    pub(crate) x: V3,
-    pub(crate) t: V3,
-    pub(crate) n: V3,
-    pub(crate) b: V3,
+    pub(crate) x: Vec3,
+    pub(crate) t: Vec3,
+    pub(crate) n: Vec3,
+    pub(crate) b: Vec3,
 }
 
 impl State {
@@ -38,10 +38,10 @@ impl State {
     pub(crate) fn start() -> State {
         State {
             s: 0.0,
-            x: [0.0; 3],
-            t: [1.0, 0.0, 0.0],
-            n: [0.0, 1.0, 0.0],
-            b: [0.0, 0.0, 1.0],
+            x: Vec3::ZERO,
+            t: Vec3::X,
+            n: Vec3::Y,
+            b: Vec3::Z,
         }
     }
 }
@@ -51,10 +51,10 @@ impl State {
 pub(crate) struct Expansion {
     pub(crate) s0: f64,
     /// Coefficients of x, t, n, b, order 0..=ORDER.
-    pub(crate) x: [V3; ORDER + 1],
-    pub(crate) t: [V3; ORDER + 1],
-    pub(crate) n: [V3; ORDER + 1],
-    pub(crate) b: [V3; ORDER + 1],
+    pub(crate) x: [Vec3; ORDER + 1],
+    pub(crate) t: [Vec3; ORDER + 1],
+    pub(crate) n: [Vec3; ORDER + 1],
+    pub(crate) b: [Vec3; ORDER + 1],
 }
 
 impl Expansion {
@@ -64,7 +64,7 @@ impl Expansion {
         let mut tau = [0.0; ORDER + 1];
         form.kappa_law().taylor(state.s, &mut kappa);
         form.tau_law().taylor(state.s, &mut tau);
-        let zero = [[0.0; 3]; ORDER + 1];
+        let zero = [Vec3::ZERO; ORDER + 1];
         let mut e = Expansion {
             s0: state.s,
             x: zero,
@@ -77,23 +77,21 @@ impl Expansion {
         e.n[0] = state.n;
         e.b[0] = state.b;
         for k in 0..ORDER {
-            let mut dt = [0.0; 3];
-            let mut dn = [0.0; 3];
-            let mut db = [0.0; 3];
+            let mut dt = Vec3::ZERO;
+            let mut dn = Vec3::ZERO;
+            let mut db = Vec3::ZERO;
             for j in 0..=k {
                 let (kj, tj) = (kappa[j], tau[j]);
                 let (t, n, b) = (e.t[k - j], e.n[k - j], e.b[k - j]);
-                for c in 0..3 {
-                    dt[c] += kj * n[c];
-                    dn[c] += tj * b[c] - kj * t[c];
-                    db[c] -= tj * n[c];
-                }
+                dt += kj * n;
+                dn += tj * b - kj * t;
+                db -= tj * n;
             }
             let inv = 1.0 / (k + 1) as f64;
-            e.x[k + 1] = scale(e.t[k], inv);
-            e.t[k + 1] = scale(dt, inv);
-            e.n[k + 1] = scale(dn, inv);
-            e.b[k + 1] = scale(db, inv);
+            e.x[k + 1] = e.t[k] * inv;
+            e.t[k + 1] = dt * inv;
+            e.n[k + 1] = dn * inv;
+            e.b[k + 1] = db * inv;
         }
         e
     }
@@ -103,7 +101,7 @@ impl Expansion {
         let size = |k: usize| {
             [self.t[k], self.n[k], self.b[k]]
                 .iter()
-                .flat_map(|v| v.iter())
+                .flat_map(|v| v.to_array())
                 .fold(0.0f64, |m, c| m.max(c.abs()))
         };
         let h1 = (STEP_TOLERANCE / size(ORDER - 1)).powf(1.0 / (ORDER - 1) as f64);
@@ -113,40 +111,35 @@ impl Expansion {
     }
 
     /// The position at `s0 + h`.
-    pub(crate) fn point_at(&self, h: f64) -> V3 {
+    pub(crate) fn point_at(&self, h: f64) -> Vec3 {
         horner(&self.x, h)
     }
 
     /// The unit tangent at `s0 + h` (normalised).
-    pub(crate) fn tangent_at(&self, h: f64) -> V3 {
-        let t = horner(&self.t, h);
-        scale(t, 1.0 / dot(t, t).sqrt())
+    pub(crate) fn tangent_at(&self, h: f64) -> Vec3 {
+        horner(&self.t, h).normalize()
     }
 
     /// The state at `s0 + h`, its frame made orthonormal again (Gram–Schmidt on t, n, then
     /// b = t × n).
     pub(crate) fn state_at(&self, h: f64) -> State {
-        let t = horner(&self.t, h);
-        let t = scale(t, 1.0 / dot(t, t).sqrt());
+        let t = horner(&self.t, h).normalize();
         let n = horner(&self.n, h);
-        let n = super::vec3::axpy(n, -dot(n, t), t);
-        let n = scale(n, 1.0 / dot(n, n).sqrt());
+        let n = (n - n.dot(t) * t).normalize();
         State {
             s: self.s0 + h,
             x: horner(&self.x, h),
             t,
             n,
-            b: cross(t, n),
+            b: t.cross(n),
         }
     }
 }
 
-fn horner(c: &[V3; ORDER + 1], h: f64) -> V3 {
+fn horner(c: &[Vec3; ORDER + 1], h: f64) -> Vec3 {
     let mut v = c[ORDER];
     for k in (0..ORDER).rev() {
-        for i in 0..3 {
-            v[i] = v[i] * h + c[k][i];
-        }
+        v = v * h + c[k];
     }
     v
 }

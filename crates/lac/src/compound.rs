@@ -129,7 +129,11 @@ impl CompoundCurve {
             points[3] - points[2],
         ];
         let chord = points[3] - points[0];
-        if !legs.iter().chain([&chord]).all(|v| v.x.hypot(v.y).is_finite()) {
+        if !legs
+            .iter()
+            .chain([&chord])
+            .all(|v| v.x.hypot(v.y).is_finite())
+        {
             return Err(Error::OutOfRange {
                 name: "control points",
                 value: f64::INFINITY,

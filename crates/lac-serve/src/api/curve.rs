@@ -88,7 +88,19 @@ pub(crate) fn lcg(app: &App, text: &str) -> Result<String, ApiError> {
             .into());
         }
         let plot = lac::curvature_plot(&cubics, per_piece)?;
-        return Ok(to_line(&LcgReport::new(&plot).checked()?));
+        let report = LcgReport::new(&plot);
+        // Any finite pieces are accepted, but their curvature (and its derivative, up to a
+        // fifth power of the coordinates) leaves the range of a double when the coordinates
+        // are extreme: the request's numbers, not a defect.
+        if !report.is_finite() {
+            return Err(lac_io::json::ErrorBody::new(
+                "out_of_range",
+                "the curvature of these pieces overflows double precision (coordinates or \
+                 weights too large or too small); scale the pieces toward unit size",
+            )
+            .into());
+        }
+        return Ok(to_line(&report));
     }
     let n = app.limits.samples(samples)?;
     let solved = request::curve(&map)?.solve()?;

@@ -9,6 +9,7 @@ mod curve;
 mod quasi;
 mod region;
 mod request;
+mod space;
 
 use std::sync::Arc;
 
@@ -111,6 +112,11 @@ pub(crate) async fn region(State(app): State<Arc<App>>, request: Request) -> Res
 /// `POST /api/region/point`.
 pub(crate) async fn point_region(State(app): State<Arc<App>>, request: Request) -> Response {
     answer(app, request, region::point_region).await
+}
+
+/// `POST /api/space`.
+pub(crate) async fn space(State(app): State<Arc<App>>, request: Request) -> Response {
+    answer(app, request, space::space).await
 }
 
 /// `GET /api/version`: who answers, and the limits a client must respect.

@@ -3,9 +3,9 @@
 VENV := .venv
 PY := $(VENV)/bin/python
 
-.PHONY: test rust python fixtures bench example
+.PHONY: test rust python e2e fixtures bench example
 
-test: rust python
+test: rust python e2e
 
 rust:
 	cargo fmt --all -- --check
@@ -15,6 +15,14 @@ rust:
 python: $(VENV)/.installed
 	cargo build --release -p lac-cli
 	LAC_BIN=$(CURDIR)/target/release/lac $(PY) -m pytest -q tools/reference
+
+# The editor in a real browser: Debian's chromium (installed when missing; CI runs as root),
+# playwright-core from npm, the release `lac serve` on a free port of 127.0.0.1.
+e2e:
+	test -x /usr/bin/chromium || (apt-get update && apt-get install -y chromium)
+	cd crates/lac-serve/e2e && npm ci --no-audit --no-fund
+	cargo build --release -p lac-cli
+	cd crates/lac-serve/e2e && LAC_BIN=$(CURDIR)/target/release/lac node --test --test-concurrency=1
 
 $(VENV)/.installed: tools/reference/requirements.txt
 	python3 -m venv $(VENV)

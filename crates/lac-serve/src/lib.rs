@@ -31,6 +31,7 @@ use std::net::{IpAddr, SocketAddr};
 use std::sync::Arc;
 
 use axum::error_handling::HandleErrorLayer;
+use axum::serve::ListenerExt;
 use axum::routing::{get, post};
 use axum::Router;
 use lac_io::json::ErrorBody;
@@ -72,6 +73,10 @@ pub fn router_with(limits: Limits) -> Router {
 
 /// Serve [`router_with`]`(limits)` on `listener` until the process ends.
 pub async fn serve(listener: tokio::net::TcpListener, limits: Limits) -> io::Result<()> {
+    // No Nagle delay: an answer is one small write that the page waits for.
+    let listener = listener.tap_io(|tcp| {
+        let _ = tcp.set_nodelay(true);
+    });
     axum::serve(listener, router_with(limits)).await
 }
 

@@ -96,6 +96,25 @@ function combOf(ctx, view, teeth, color, edge) {
   polyline(ctx, view, teeth.map(([, q]) => q));
 }
 
+/** The region's key, bottom left: green where the point may go. */
+function legend(ctx, height, label) {
+  ctx.font = '12px system-ui, sans-serif';
+  const text = [['may go here', COLORS.drawable], ['no curve', COLORS.undrawable]];
+  const width = 28 + ctx.measureText(label).width + text.reduce((w, [t]) => w + ctx.measureText(t).width + 34, 0);
+  ctx.fillStyle = 'rgba(255, 255, 255, 0.9)';
+  ctx.fillRect(8, height - 30, width, 22);
+  ctx.fillStyle = '#333';
+  ctx.fillText(label, 16, height - 15);
+  let x = 16 + ctx.measureText(label).width + 12;
+  for (const [t, [r, g, b]] of text) {
+    ctx.fillStyle = `rgba(${r}, ${g}, ${b}, 0.45)`;
+    ctx.fillRect(x, height - 25, 14, 12);
+    ctx.fillStyle = '#333';
+    ctx.fillText(t, x + 18, height - 15);
+    x += ctx.measureText(t).width + 34;
+  }
+}
+
 function grid(ctx, view, width, height) {
   const [x0, x1, y0, y1] = view.visible(width, height);
   const raw = 80 / view.scale;
@@ -138,6 +157,8 @@ export function drawPlane(ctx, view, width, height, scene) {
     ctx.restore();
   }
 
+  if (scene.region && scene.region.label) legend(ctx, height, scene.region.label);
+
   const samples = scene.samples;
   if (samples && samples.length) {
     const g = geometry(samples, scene.combScale, far);
@@ -156,6 +177,14 @@ export function drawPlane(ctx, view, width, height, scene) {
         ctx.setLineDash([]);
       }
       if (show.comb && !scene.pieces) combOf(ctx, view, g.teeth, COLORS.comb, COLORS.combEdge);
+      if (show.comb && scene.pieces) {
+        // The exact curve's comb envelope, for the pieces' combs to be compared with.
+        ctx.strokeStyle = COLORS.faint;
+        ctx.lineWidth = 1.5;
+        ctx.setLineDash([3, 3]);
+        polyline(ctx, view, g.teeth.map(([, q]) => q));
+        ctx.setLineDash([]);
+      }
       ctx.strokeStyle = COLORS.curve;
       ctx.lineWidth = scene.pieces ? 1.4 : 2.4;
       ctx.lineJoin = 'round';

@@ -9,13 +9,13 @@ import {
 import { View, bounds, similarity } from './view.js';
 import { drawPlane, regionImage, geometry } from './draw.js';
 import { linePlot } from './plots.js';
-import { SpaceViews } from './space.js';
+import { SpaceViews, combTips } from './space.js';
 import { planeSvg, spaceSvg, download } from './export.js';
 
 /** Samples of a curve (and points of its curvature plot, at the same arc lengths). */
 const SAMPLES = 257;
 /** Pixels per side of the canonical region map, and of one point's region. */
-const REGION_SIZE = 160;
+const REGION_SIZE = 200;
 const POINT_REGION_SIZE = 80;
 
 const $ = (id) => document.getElementById(id);
@@ -41,9 +41,15 @@ const undo = new History();
 const regionCache = new Map();
 let lastFragment = '';
 
-// For tests and the curious: counts and the drag-update latencies (ms, from the input event
-// to the end of the redraw of its answer).
-const probe = { renders: 0, updates: 0, latencies: [], regionAnswers: 0 };
+// For tests and the curious: counts and the drag-update latencies (ms).
+const probe = {
+  renders: 0,
+  updates: 0,
+  latencies: [], // input event (its timeStamp) to the end of the redraw of its answer
+  work: [], // the page's handler to the end of that redraw: request, solve, response, redraw
+  phases: [], // [handler to request sent, request to answer, answer to redrawn]
+  regionAnswers: 0,
+};
 
 const design = () => state.designs[state.mode];
 const isStale = () => state.error !== null;
@@ -54,10 +60,10 @@ const canvas = $('plane');
 
 let inFlight = false;
 let queued = false;
-let firstEvent = null;
+let firstEvent = null; // {event, handler}: when the oldest input not yet drawn happened
 
 function solve(eventTime = performance.now()) {
-  if (firstEvent === null) firstEvent = eventTime;
+  if (firstEvent === null) firstEvent = { event: eventTime, handler: performance.now() };
   if (inFlight) {
     queued = true;
     return;
@@ -71,7 +77,9 @@ async function send() {
   const body = request(mode, design(), SAMPLES);
   const started = firstEvent;
   firstEvent = null;
+  const sent = performance.now();
   const result = await post(MODES[mode].endpoint, body);
+  const answered = performance.now();
   inFlight = false;
   if (mode === state.mode) {
     if (result.ok) {
@@ -86,9 +94,14 @@ async function send() {
       state.error = result.error;
     }
     state.hover = null;
+    if (state.drag) syncPanel();
+    if (!state.drag) updateRegion();
     render();
     if (started !== null) {
-      probe.latencies.push(performance.now() - started);
+      const drawn = performance.now();
+      probe.latencies.push(drawn - started.event);
+      probe.work.push(drawn - started.handler);
+      probe.phases.push([sent - started.handler, answered - sent, drawn - answered]);
       probe.updates += 1;
     }
   }
@@ -125,8 +138,11 @@ function plotOf(answer) {
 // the current ends, or (four-point compound curves) the map of the dragged point.
 
 function regionWanted() {
-  if (state.mode === 'space') return false;
-  return state.show.region === 'always' || (state.show.region === 'drag' && state.drag !== null);
+  if (state.mode === 'space' || state.show.region === 'off') return false;
+  // While dragging, always if asked, and whenever the input is not drawable: it shows where
+  // to move the point.
+  const undrawable = state.error !== null && state.error.kind === 'not_drawable';
+  return state.show.region === 'always' || state.drag !== null || undrawable;
 }
 
 function regionRequest() {
@@ -209,9 +225,11 @@ function renderPlane() {
   let region = null;
   if (state.region && regionWanted()) {
     const pts = d.points;
+    const index = state.region.canonical ? 1 : (state.drag ? state.drag.index : state.selected);
     region = {
       ...state.region,
       toWorld: state.region.canonical ? similarity(pts[0], pts[pts.length - 1]) : (p) => p,
+      label: `Where P${index} may go:`,
     };
   }
   drawPlane(ctx, view, width, height, {
@@ -257,7 +275,8 @@ function renderMessage() {
   fix.hidden = true;
   if (!problem) return;
   $('message-title').textContent = problem.title || TITLES[problem.kind] || 'Cannot draw:';
-  let text = problem.message;
+  // The library's messages for undrawable input start with "not drawable: ", as the title does.
+  let text = problem.message.replace(/^not drawable: /, '');
   if (state.error && state.answer) text += ' (the last good curve is drawn faintly).';
   $('message-text').textContent = text;
   if (state.error && typeof state.error.omega_max === 'number') {
@@ -306,8 +325,9 @@ function renderReadout() {
       add('κ end', 'curvature_end', c.curvature_end);
       add('turning', 'turning_angle', c.turning_angle, deg(c.turning_angle));
       add('Λ', 'lambda', c.lambda);
+      // A compound curve's graph is two lines (in the plot); one fitted across says little.
       const fit = c.plot && c.plot.fit;
-      if (fit) add('LCG slope (fit)', 'fit_alpha', fit.alpha);
+      if (fit && !('lcg' in c)) add('LCG slope (fit)', 'fit_alpha', fit.alpha);
       if (state.mode === 'quasi') {
         add('Bézier pieces', 'pieces', a.pieces.length, `${a.pieces.length} ${a.kind}`);
         add('max deviation', 'max', a.max, `${a.max.toExponential(3)} × length`);
@@ -389,8 +409,10 @@ function renderPlots() {
     const lcg = a ? a.graphs.curvature.map((p) => [p.x, p.y]) : [];
     const ltg = a ? a.graphs.torsion.map((p) => [p.x, p.y]) : [];
     const bits = [];
-    if (lcg.length) bits.push(`LCG slope ${fmt(slope(lcg))}`);
-    if (ltg.length) bits.push(`LTG slope ${fmt(slope(ltg))}`);
+    // Slopes to six decimals: the graphs are straight, a slope of 1e-29 is a zero.
+    const six = (x) => String(+x.toFixed(6));
+    if (lcg.length) bits.push(`LCG slope ${six(slope(lcg))}`);
+    if (ltg.length) bits.push(`LTG slope ${six(slope(ltg))}`);
     linePlot($('lcg'), {
       title: bits.join(', ') || 'logarithmic curvature and torsion graphs',
       xlabel: 'ln ρ, ln μ', ylabel: 'ln(ρ ds/dρ), ln(μ ds/dμ)',
@@ -409,10 +431,13 @@ function renderPlots() {
   if (plot) {
     series.push({ points: plot.points.map((p) => [p.s, p.kappa]), color: '#1f4e9c', label: state.mode === 'quasi' ? 'exact curve' : '' });
     graph.push({ points: plot.points.map((p) => [p.log_rho ?? NaN, p.log_lcg ?? NaN]), color: '#1f4e9c', label: state.mode === 'quasi' ? 'exact curve' : '' });
-    if (plot.fit) {
-      const [x0, x1] = plot.fit.log_rho;
-      graph.push({ points: [[x0, plot.fit.alpha * x0 + plot.fit.intercept], [x1, plot.fit.alpha * x1 + plot.fit.intercept]], color: '#e69138', dash: [5, 3], width: 1.2 });
-    }
+    const line = ({ alpha, intercept, log_rho: [x0, x1] }, label) => ({
+      points: [[x0, alpha * x0 + intercept], [x1, alpha * x1 + intercept]],
+      color: '#e69138', dash: [5, 3], width: 1.2, label,
+    });
+    // A compound curve's graph is two straight pieces: their lines, not one fitted across.
+    if (a && a.lcg) a.lcg.filter(Boolean).forEach((row, k) => graph.push(line(row, k ? '' : 'pieces\' lines')));
+    else if (plot.fit) graph.push(line(plot.fit, ''));
     if (a && a.joint_s !== undefined) vlines.push({ x: a.joint_s });
   }
   if (state.mode === 'quasi' && a) {
@@ -432,8 +457,11 @@ function renderPlots() {
     empty: state.error ? 'not drawable' : 'waiting for the server',
   });
   const fit = plot && plot.fit;
+  let title = 'logarithmic curvature graph';
+  if (a && a.lcg) title = `LCG: slopes ${a.lcg.map((r) => (r ? fmt(r.alpha) : 'circle')).join(' then ')}`;
+  else if (fit) title = `logarithmic curvature graph: fitted slope α = ${fmt(fit.alpha)}`;
   linePlot($('lcg'), {
-    title: fit ? `logarithmic curvature graph: fitted slope α = ${fmt(fit.alpha)}` : 'logarithmic curvature graph',
+    title,
     xlabel: 'ln ρ', ylabel: 'ln(ρ ds/dρ)', series: graph,
     marker: hoverRow && hoverRow.log_rho !== null ? [hoverRow.log_rho, hoverRow.log_lcg] : null,
     empty: plot ? 'the curvature is constant (a circle): no graph' : 'not drawable',
@@ -620,7 +648,9 @@ function enterMode() {
 function fitView() {
   const d = design();
   if (state.mode === 'space') {
-    space.fit(d.points);
+    const rows = state.answer ? state.answer.samples : [];
+    const tips = state.show.comb ? combTips(rows, state.combScale) : [];
+    space.fit([...d.points, ...rows.map((r) => [r.x, r.y, r.z]), ...tips]);
     return;
   }
   const rows = samplesOf(state.answer);
@@ -732,9 +762,14 @@ canvas.addEventListener('pointermove', (e) => {
   if (state.drag && state.drag.pointerId === e.pointerId) {
     const [x, y] = view.toWorld([e.offsetX, e.offsetY]);
     design().points[state.drag.index] = [roundToView(x), roundToView(y)];
-    syncPanel();
-    render();
+    // The request goes first; the point is drawn with its answer, or now when an earlier
+    // request is still out (then this move waits for it).
+    const waiting = inFlight;
     solve(e.timeStamp);
+    if (waiting) {
+      syncPanel();
+      render();
+    }
     return;
   }
   if (state.pan && state.pan.pointerId === e.pointerId) {
@@ -900,8 +935,10 @@ function wire() {
       if (point) {
         const digits = Math.max(0, Math.min(12, Math.ceil(Math.log10(scale * 10))));
         design().points[index] = point.map((x) => Number(x.toFixed(digits)));
-        syncPanel();
+        const waiting = inFlight;
         solve(time);
+        if (!waiting) return;
+        syncPanel();
       }
       render();
     },

@@ -10,6 +10,16 @@ const AXES = { top: [0, 1], front: [0, 2], side: [1, 2] };
 
 const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
 
+/** The tips of the curvature comb's teeth: from each sample away from the centre of
+ * curvature, κ × `scale` long. */
+export function combTips(samples, scale) {
+  return samples.map((r) => [
+    r.x - r.n[0] * r.kappa * scale,
+    r.y - r.n[1] * r.kappa * scale,
+    r.z - r.n[2] * r.kappa * scale,
+  ]);
+}
+
 /** Drawing and dragging in the four views of a space curve. */
 export class SpaceViews {
   /**
@@ -19,15 +29,16 @@ export class SpaceViews {
   constructor(canvases, on) {
     this.canvases = canvases;
     this.on = on;
-    this.yaw = -0.6;
-    this.pitch = 0.45;
+    this.yaw = -0.5;
+    this.pitch = 0.6;
     this.views = { top: new View(), front: new View(), side: new View() };
     this.scene = null;
     this.drag = null;
     for (const [name, canvas] of Object.entries(canvases)) this.listen(name, canvas);
   }
 
-  /** Fit the orthographic views (one scale for all three) to the points and the curve. */
+  /** Fit the orthographic views (one scale for all three) to `points` (the control points,
+   * and the curve and its comb once drawn). */
   fit(points) {
     const lo = [0, 1, 2].map((i) => Math.min(...points.map((p) => p[i])));
     const hi = [0, 1, 2].map((i) => Math.max(...points.map((p) => p[i])));
@@ -54,12 +65,14 @@ export class SpaceViews {
     const [x, y, z] = sub(p, this.center);
     const cy = Math.cos(this.yaw), sy = Math.sin(this.yaw);
     const cp = Math.cos(this.pitch), sp = Math.sin(this.pitch);
+    // Turn about z by the yaw, then tilt about the screen's x axis by the pitch, so that a
+    // positive pitch looks down on the x–y plane; Y is the depth.
     const X = cy * x - sy * y;
     const Y0 = sy * x + cy * y;
-    const Y = cp * Y0 + sp * z;
-    const Z = -sp * Y0 + cp * z;
+    const Y = cp * Y0 - sp * z;
+    const Z = sp * Y0 + cp * z;
     const distance = 3.2 * this.radius;
-    const focal = (0.42 * Math.min(w, h) * distance) / this.radius;
+    const focal = (0.55 * Math.min(w, h) * distance) / this.radius;
     const k = focal / (distance + Y);
     return [w / 2 + k * X, h / 2 - k * Z, Y];
   }
@@ -98,16 +111,32 @@ export class SpaceViews {
         line(curve);
         ctx.setLineDash([]);
       } else {
+        if (scene.show.evolute) {
+          // Centres of curvature P + N/κ, cut where the radius runs off.
+          const far = 4 * this.radius;
+          ctx.strokeStyle = COLORS.evolute;
+          ctx.lineWidth = 1.2;
+          ctx.setLineDash([5, 3]);
+          let run = [];
+          for (const r of scene.samples) {
+            const rho = r.kappa > 0 ? 1 / r.kappa : Infinity;
+            if (rho < far) run.push([r.x + r.n[0] * rho, r.y + r.n[1] * rho, r.z + r.n[2] * rho]);
+            else {
+              if (run.length > 1) line(run);
+              run = [];
+            }
+          }
+          if (run.length > 1) line(run);
+          ctx.setLineDash([]);
+        }
         if (scene.show.comb) {
-          const tips = scene.samples.map((r) => [
-            r.x - r.n[0] * r.kappa * scene.combScale,
-            r.y - r.n[1] * r.kappa * scene.combScale,
-            r.z - r.n[2] * r.kappa * scene.combScale,
-          ]);
+          const tips = combTips(scene.samples, scene.combScale);
           ctx.strokeStyle = COLORS.comb;
           ctx.lineWidth = 1;
           ctx.beginPath();
+          const every = Math.max(1, Math.round(curve.length / 96));
           curve.forEach((p, i) => {
+            if (i % every && i !== curve.length - 1) return;
             const a = to(p);
             const b = to(tips[i]);
             ctx.moveTo(a[0], a[1]);
@@ -162,9 +191,9 @@ export class SpaceViews {
       if (i) ctx.lineTo(x, y); else ctx.moveTo(x, y);
     });
     ctx.stroke();
-    const c = this.center;
-    const r = this.radius * 0.35;
-    const o = [c[0] - this.radius * 0.8, c[1] - this.radius * 0.8, zmin];
+    const r = this.radius * 0.3;
+    const o = [0, 1].map((i) => Math.min(...points.map((p) => p[i])));
+    o.push(zmin);
     [['x', '#c62828', [r, 0, 0]], ['y', '#2e7d32', [0, r, 0]], ['z', '#1565c0', [0, 0, r]]].forEach(([label, color, d]) => {
       const a = to(o);
       const b = to([o[0] + d[0], o[1] + d[1], o[2] + d[2]]);

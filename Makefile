@@ -1,33 +1,47 @@
 # `make test` runs every test of the project: formatting, clippy (warnings denied), Rust unit,
-# property, integration and doc tests, and the Python cross-checks (installed into .venv).
+# property, integration and doc tests (among them: every README figure is what its *Made by*
+# command draws), and the Python cross-checks (installed into .venv).
+#
+# The dependency tree is compiled once with code generation: `cargo test` builds the `lac`
+# binary for the integration tests in the test profile (opt-level 2) as target/debug/lac, and
+# the Python cross-checks run that binary. Clippy checks the tree once more without code
+# generation (build scripts and proc macros are shared).
 VENV := .venv
 PY := $(VENV)/bin/python
+CARGO_TEST := cargo test --locked --workspace
+LAC_BIN := $(or $(CARGO_TARGET_DIR),$(CURDIR)/target)/debug/lac
 
-.PHONY: test rust python e2e fixtures bench example
+.PHONY: test rust python e2e docs fixtures bench example
 
 test: rust python e2e
 
 rust:
 	cargo fmt --all -- --check
-	cargo clippy --workspace --all-targets -- -D warnings
-	cargo test --workspace
+	cargo clippy --locked --workspace --all-targets -- -D warnings
+	$(CARGO_TEST)
 
+# `--no-run` is a no-op after `rust`; alone, it (re)builds the test-profile binary.
 python: $(VENV)/.installed
-	cargo build --release -p lac-cli
-	LAC_BIN=$(CURDIR)/target/release/lac $(PY) -m pytest -q tools/reference
+	$(CARGO_TEST) --no-run
+	LAC_BIN=$(LAC_BIN) $(PY) -m pytest -q tools/reference
 
 # The editor in a real browser: Debian's chromium (installed when missing; CI runs as root),
-# playwright-core from npm, the release `lac serve` on a free port of 127.0.0.1.
+# playwright-core from npm, the same `lac` binary serving on a free port of 127.0.0.1.
 e2e:
 	test -x /usr/bin/chromium || (apt-get update && apt-get install -y chromium)
 	cd crates/lac-serve/e2e && npm ci --no-audit --no-fund
-	cargo build --release -p lac-cli
-	cd crates/lac-serve/e2e && LAC_BIN=$(CURDIR)/target/release/lac node --test --test-concurrency=1
+	$(CARGO_TEST) --no-run
+	cd crates/lac-serve/e2e && LAC_BIN=$(LAC_BIN) node --test --test-concurrency=1
 
 $(VENV)/.installed: tools/reference/requirements.txt
 	python3 -m venv $(VENV)
 	$(VENV)/bin/pip install --quiet --disable-pip-version-check -r tools/reference/requirements.txt
 	touch $@
+
+# Redraw the README's figures (docs/*.svg) from its *Made by* lines with the freshly built
+# `lac`; `make test` fails while a committed figure differs from what its command draws.
+docs:
+	LAC_WRITE_FIGURES=1 $(CARGO_TEST) --test readme_figures -- --nocapture
 
 # Regenerate the 40-digit reference fixtures (about 15 minutes; the output is committed).
 fixtures: $(VENV)/.installed

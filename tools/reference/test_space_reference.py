@@ -256,7 +256,7 @@ def test_classify_basics():
 def _load(name):
     path = os.path.join(FIXTURES, name)
     if not os.path.exists(path):
-        pytest.skip("fixture %s not generated" % name)
+        pytest.fail("fixture %s missing: `make fixtures` writes it" % name)
     with open(path) as f:
         return json.load(f)
 
@@ -328,19 +328,15 @@ def test_classification_fixture_matches_classify():
 
 
 def test_classification_transcribes_the_seed_text():
-    """The 'seed' cells are the seed's extracted text cells (where shared/ is beside the repo)."""
-    import glob
+    """The 'seed' cells are the cells of seed 003 Figs. 5-6 (data/seed003_figs5_6.txt)."""
     import re
-    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..")
-    found = glob.glob(os.path.join(root, "shared", "seeds", "003_*.txt"))
-    if not found:
-        pytest.skip("seed 003 not found beside the repository")
     names = {"$-\\infty$": "-inf", "∞": "inf", "∞ *": "inf*", "$\\infty*$": "inf*",
              "Finite($-\\infty$)": "Finite(-inf)", "Finite(- ∞)": "Finite(-inf)",
              "Finite(∞)": "Finite(inf)", "$-1/(\\Lambda\\alpha)$": "A",
              "$-v^\\beta/(\\Omega\\beta)$": "B", "$v^\\beta/(\\Omega\\beta)$": "B"}
     text = {}
-    with open(found[0]) as f:
+    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "data",
+                           "seed003_figs5_6.txt"), encoding="utf-8") as f:
         for line in f:
             m = re.match(r"^([ab]\d+)\t", line)
             if m:

@@ -17,6 +17,18 @@ pub(crate) fn png(svg: &str) -> Result<Vec<u8>, Failure> {
     render_png(svg, system_fonts())
 }
 
+/// Sans-serif families to stand for "sans-serif" when fontdb's default (Arial) is missing,
+/// in order of preference: DejaVu Sans first, the face the drawings' text estimate bounds
+/// (`svg/measure.rs`).
+const SANS: [&str; 6] = [
+    "DejaVu Sans",
+    "Liberation Sans",
+    "Noto Sans",
+    "Arial",
+    "Helvetica",
+    "FreeSans",
+];
+
 /// The fonts installed on this machine, with "sans-serif" mapped to one that exists.
 fn system_fonts() -> Arc<fontdb::Database> {
     let mut fonts = fontdb::Database::new();
@@ -27,13 +39,30 @@ fn system_fonts() -> Arc<fontdb::Database> {
         ..Default::default()
     };
     if fonts.query(&query).is_none() {
-        // No fontconfig alias to a font that is there: any font beats no text.
-        let first = fonts.faces().next().and_then(|f| f.families.first());
-        if let Some(name) = first.map(|family| family.0.clone()) {
+        let families: Vec<&str> = fonts
+            .faces()
+            .flat_map(|f| f.families.iter().map(|(name, _)| name.as_str()))
+            .collect();
+        if let Some(name) = sans_family(&families).map(str::to_string) {
             fonts.set_sans_serif_family(name);
         }
     }
     Arc::new(fonts)
+}
+
+/// The family among `installed` to draw "sans-serif" text in: one of [`SANS`], else the
+/// first whose name says "Sans" and not "Mono", else the first (any font beats no text;
+/// the first face found is often a serif or monospaced one).
+fn sans_family<'a>(installed: &[&'a str]) -> Option<&'a str> {
+    SANS.iter()
+        .find_map(|want| installed.iter().find(|name| *name == want))
+        .or_else(|| {
+            installed
+                .iter()
+                .find(|name| name.contains("Sans") && !name.contains("Mono"))
+        })
+        .or(installed.first())
+        .copied()
 }
 
 /// The PNG of `svg` with text in `fonts`, on white.
@@ -73,6 +102,21 @@ mod tests {
         let mut buf = vec![0; reader.output_buffer_size().unwrap()];
         let info = reader.next_frame(&mut buf).unwrap();
         (info.width, info.height, buf)
+    }
+
+    #[test]
+    fn sans_serif_text_is_set_in_a_sans_serif_face_when_there_is_one() {
+        let dejavu = [
+            "DejaVu Serif",
+            "DejaVu Sans Mono",
+            "DejaVu Sans Bold",
+            "DejaVu Sans",
+        ];
+        assert_eq!(sans_family(&dejavu), Some("DejaVu Sans"));
+        let other = ["Foo Serif", "Bar Sans Mono", "Baz Sans"];
+        assert_eq!(sans_family(&other), Some("Baz Sans"));
+        assert_eq!(sans_family(&["Only Serif"]), Some("Only Serif"));
+        assert_eq!(sans_family(&[]), None);
     }
 
     #[test]

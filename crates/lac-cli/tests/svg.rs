@@ -78,7 +78,7 @@ fn a_circular_arc_marks_its_centre_as_the_evolute() {
 }
 
 #[test]
-fn a_long_caption_widens_a_narrow_drawing() {
+fn a_long_caption_wraps_under_a_narrow_drawing_one_entry_to_a_text() {
     let run = lac(&[
         "compound",
         "--points",
@@ -95,16 +95,43 @@ fn a_long_caption_widens_a_narrow_drawing() {
     ]);
     assert_eq!(run.code, 0, "{}", run.stderr);
     let doc = &run.stdout;
-    let start = doc.find("<svg ").unwrap();
-    let width: f64 = doc[start..]
-        .split("width=\"")
-        .nth(1)
-        .and_then(|w| w.split('"').next())
-        .unwrap()
-        .parse()
-        .unwrap();
-    // The caption "α0 = 0.123456789  α1 = 0.75  Λ = …  ● joint s = …  arc length = …
-    // ▬ curvature comb" is about 640 px wide in Liberation Sans at 13 px; the drawing itself
-    // would need only 560.
-    assert!(width >= 680.0, "canvas width {width}");
+    // An attribute of the element whose attributes `element` starts with.
+    let attr = |element: &str, name: &str| -> f64 {
+        let element = format!(" {element}");
+        let start = element.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
+        let end = start + element[start..].find('"').unwrap();
+        element[start..end].parse().unwrap()
+    };
+    let svg = &doc[doc.find("<svg ").unwrap()..];
+    // The drawing itself needs no more than the smallest canvas: the caption does not widen
+    // it (it would be about 700 px on one line).
+    assert_eq!(attr(svg, "width"), 560.0);
+    let caption: Vec<(f64, f64, &str)> = doc
+        .split("<text ")
+        .skip(1)
+        .filter(|t| t.contains("font-size=\"13\""))
+        .map(|t| {
+            let text = &t[t.find('>').unwrap() + 1..t.find("</text>").unwrap()];
+            (attr(t, "x"), attr(t, "y"), text)
+        })
+        .collect();
+    let texts: Vec<&str> = caption.iter().map(|c| c.2).collect();
+    for entry in [
+        "α0 = 0.123456789",
+        "α1 = 0.75",
+        "arc length = 4.03245",
+        "curvature comb",
+    ] {
+        assert!(
+            texts.contains(&entry),
+            "{entry:?} is a text of its own: {texts:?}"
+        );
+    }
+    let mut lines: Vec<f64> = caption.iter().map(|c| c.1).collect();
+    lines.dedup();
+    assert!(
+        lines.len() >= 3,
+        "facts on two lines, the key on a third: {caption:?}"
+    );
+    assert!(caption.iter().all(|c| c.0 >= 12.0));
 }

@@ -15,7 +15,7 @@ use kurbo::Point;
 use lac::{
     CompoundCurve, CurvaturePoint, Curve, Frame, GraphPoint, LcgFit, LcgLine, Monotonicity,
     MonotonicityReport, QuasiCurve, QuasiPiece, RationalCubic, Sample, Segment, SpaceSegment,
-    SpaceShape, TorsionType, Vec3,
+    SpaceShape, Tolerance, TorsionType, Vec3,
 };
 use serde::{Deserialize, Serialize};
 
@@ -87,7 +87,9 @@ impl ErrorBody {
     /// How a front end should treat it.
     pub fn class(&self) -> ErrorClass {
         match self.kind.as_str() {
-            "not_drawable" | "fit_failed" | "tolerance_not_met" => ErrorClass::Undrawable,
+            "not_drawable" | "fit_failed" | "tolerance_not_met" | "too_many_pieces" => {
+                ErrorClass::Undrawable
+            }
             "io" => ErrorClass::Io,
             "internal" | "numerical_failure" => ErrorClass::Internal,
             _ => ErrorClass::Invalid,
@@ -828,11 +830,11 @@ impl QuasiInput {
         let solved = self.curve.solve()?;
         let quasi = match (&solved, self.tolerance, self.cubic) {
             (Solved::Segment(s), None, _) => s.to_rational_cubic(),
-            (Solved::Segment(s), Some(t), false) => s.to_rational_cubics(t),
-            (Solved::Segment(s), Some(t), true) => s.to_cubics(t),
+            (Solved::Segment(s), Some(t), false) => s.to_rational_cubics(Tolerance::Relative(t)),
+            (Solved::Segment(s), Some(t), true) => s.to_cubics(Tolerance::Relative(t)),
             (Solved::Compound(c), None, _) => c.to_rational_cubic(),
-            (Solved::Compound(c), Some(t), false) => c.to_rational_cubics(t),
-            (Solved::Compound(c), Some(t), true) => c.to_cubics(t),
+            (Solved::Compound(c), Some(t), false) => c.to_rational_cubics(Tolerance::Relative(t)),
+            (Solved::Compound(c), Some(t), true) => c.to_cubics(Tolerance::Relative(t)),
         }?;
         Ok((solved, quasi))
     }

@@ -11,8 +11,9 @@ import { chromium } from 'playwright-core';
 const here = dirname(fileURLToPath(import.meta.url));
 export const ROOT = resolve(here, '../../..');
 
-/** The `lac` binary: $LAC_BIN, or the release build of the workspace. */
-export const LAC_BIN = process.env.LAC_BIN || join(ROOT, 'target/release/lac');
+/** The `lac` binary: $LAC_BIN, or the one `cargo test` builds (test profile, optimised), as
+ * `make e2e` passes it. */
+export const LAC_BIN = process.env.LAC_BIN || join(ROOT, 'target/debug/lac');
 
 /** Where screenshots go: $LAC_ARTIFACTS, or a fresh temporary directory. */
 export const ARTIFACTS = process.env.LAC_ARTIFACTS || mkdtempSync(join(tmpdir(), 'lac-e2e-'));
@@ -46,7 +47,7 @@ export function startServer() {
     child.stderr.on('data', (chunk) => { err += chunk; });
     child.on('error', (e) => {
       clearTimeout(timer);
-      reject(new Error(`cannot start ${LAC_BIN}: ${e.message} (build it with cargo build --release -p lac-cli, or set LAC_BIN)`));
+      reject(new Error(`cannot start ${LAC_BIN}: ${e.message} (build it with cargo test --workspace --no-run, or set LAC_BIN)`));
     });
     child.on('exit', (code) => {
       clearTimeout(timer);

@@ -9,6 +9,8 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use kurbo::Point;
+use lac::Curve;
+use lac::Tolerance;
 use lac::{RationalCubic, Segment};
 use std::hint::black_box;
 
@@ -90,10 +92,10 @@ fn bench_chains(c: &mut Criterion) {
     .unwrap();
     for tol in [1e-6, 1e-9] {
         group.bench_with_input(BenchmarkId::new("rational", tol), &tol, |b, &tol| {
-            b.iter(|| black_box(s.to_rational_cubics(tol).unwrap()))
+            b.iter(|| black_box(s.to_rational_cubics(Tolerance::Relative(tol)).unwrap()))
         });
         group.bench_with_input(BenchmarkId::new("cubic", tol), &tol, |b, &tol| {
-            b.iter(|| black_box(s.to_cubics(tol).unwrap()))
+            b.iter(|| black_box(s.to_cubics(Tolerance::Relative(tol)).unwrap()))
         });
     }
     group.finish();

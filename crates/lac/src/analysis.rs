@@ -9,7 +9,7 @@
 //! ∫ (y − αx − c)² |dx| along the graph, so the answer does not depend on how densely the
 //! curve was sampled where; a log-aesthetic curve gives its α back exactly.
 
-use kurbo::Point;
+use kurbo::{ParamCurve, Point};
 
 use crate::bezier::RationalCubic;
 use crate::error::{Error, Result};
@@ -72,11 +72,11 @@ pub struct LogCurvatureGraph {
 ///
 /// ```
 /// use kurbo::Point;
-/// use lac::{curvature_plot, log_curvature_graph, Segment};
+/// use lac::{curvature_plot, log_curvature_graph, Curve, Segment, Tolerance};
 ///
 /// let seg = Segment::from_control_points(
 ///     [Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(1.0, 0.8)], 0.5)?;
-/// let quasi = seg.to_rational_cubics(1e-6)?;
+/// let quasi = seg.to_rational_cubics(Tolerance::Relative(1e-6))?;
 /// let pieces: Vec<_> = quasi.pieces.iter().map(|p| p.curve).collect();
 /// let graph = log_curvature_graph(&curvature_plot(&pieces, 64)?);
 /// let fit = graph.fit.unwrap();
@@ -103,12 +103,25 @@ pub fn curvature_plot(pieces: &[RationalCubic], per_piece: usize) -> Result<Vec<
             let t = i as f64 / (per_piece - 1) as f64;
             s += arc_length_gauss8(piece, prev_t, t);
             prev_t = t;
-            out.push(CurvaturePoint {
+            let point = CurvaturePoint {
                 s,
                 point: piece.eval(t),
-                kappa: piece.curvature(t),
+                kappa: piece.signed_curvature(t),
                 dkappa_ds: piece.curvature_derivative(t),
-            });
+            };
+            let values = [
+                s,
+                point.point.x,
+                point.point.y,
+                point.kappa,
+                point.dkappa_ds,
+            ];
+            if !values.iter().all(|v| v.is_finite()) {
+                // A cusp (zero speed: a repeated control point, or a loop's tip) has no
+                // curvature; an overflow is beyond double range. Either way, no plot.
+                return Err(Error::CurvatureUndefined { piece: k, t });
+            }
+            out.push(point);
         }
     }
     Ok(out)

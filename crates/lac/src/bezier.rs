@@ -1,5 +1,5 @@
 //! Rational cubic Bézier curves (seed 001 §4): evaluation, signed curvature and its
-//! derivative in arc length.
+//! derivative in arc length, and kurbo's curve traits.
 //!
 //! With homogeneous control points Qᵢ = (wᵢ bᵢ, wᵢ) the curve is the projection of the
 //! polynomial P(t) = Σ Bᵢ³(t) Qᵢ = (p(t), w(t)). Writing V = p′w − p w′ (so x′ = V/w²) and
@@ -13,11 +13,28 @@
 //! and N is a polynomial of degree 12 in t (the t¹³ terms cancel). `monotone.rs` decides its
 //! sign on [0, 1]. Everything here is evaluated relative to b₀, so a curve far from the
 //! origin loses no digits to its offset.
+//!
+//! The derivatives of every order follow from P = (p, w) by Leibniz's rule on p = w·x:
+//!
+//! ```text
+//! x⁽ᵏ⁾ = (p⁽ᵏ⁾ − Σⱼ₌₁³ C(k, j) w⁽ʲ⁾ x⁽ᵏ⁻ʲ⁾) / w,
+//! ```
+//!
+//! with p⁽ᵏ⁾ = 0 for k > 3; [`RationalCubicDerivative`] evaluates them for kurbo.
+//!
+//! Arc length ([`ParamCurveArclen`]) is adaptive 16-point Gauss–Legendre: an interval is
+//! accepted when the rule over it and over its two halves agree within its share of the
+//! requested accuracy (the halves' sum, kept, is far more accurate than that difference).
 
-use kurbo::{CubicBez, Point, Vec2};
+use std::ops::Range;
+
+use kurbo::{
+    CubicBez, ParamCurve, ParamCurveArclen, ParamCurveCurvature, ParamCurveDeriv, Point, Vec2,
+};
 
 use crate::error::{finite, Error, Result};
 use crate::gauss::GAUSS_16;
+use crate::numeric::{find_root, RootFailure};
 
 /// A rational cubic Bézier curve with positive weights:
 ///
@@ -26,8 +43,18 @@ use crate::gauss::GAUSS_16;
 /// Equal weights give the ordinary (polynomial) cubic Bézier curve; scaling all weights by
 /// the same factor does not change the curve.
 ///
+/// The point at t comes from kurbo's [`ParamCurve::eval`]; the curve also has kurbo's
+/// [`ParamCurveDeriv`], [`ParamCurveArclen`] and [`ParamCurveCurvature`]. Every method that
+/// takes a parameter clamps it to [0, 1] (outside, w(t) may vanish and the curve has a
+/// pole), and a NaN parameter gives NaN. Beware of the sign of curvature:
+/// [`signed_curvature`](Self::signed_curvature) is positive for a left turn (SPEC §1), as
+/// everywhere in this crate, while [`ParamCurveCurvature::curvature`] follows kurbo and is
+/// positive for a right turn. A curve made by [`new`](Self::new) has finite coordinates and
+/// positive weights, and so has every subsegment of it, but for one at a NaN parameter, which
+/// is all NaN.
+///
 /// ```
-/// use kurbo::Point;
+/// use kurbo::{ParamCurve, Point};
 /// use lac::RationalCubic;
 ///
 /// // A quarter circle of radius 1: the degree-elevated conic with weights 1, √2/2, 1.
@@ -42,7 +69,7 @@ use crate::gauss::GAUSS_16;
 ///     ],
 ///     [1.0, w, w, 1.0],
 /// )?;
-/// assert!((arc.curvature(0.3) - 1.0).abs() < 1e-14);
+/// assert!((arc.signed_curvature(0.3) - 1.0).abs() < 1e-14);
 /// assert!((arc.eval(0.7).to_vec2().hypot() - 1.0).abs() < 1e-15);
 /// # Ok::<(), lac::Error>(())
 /// ```
@@ -125,23 +152,18 @@ impl RationalCubic {
         hom_jet(&self.homogeneous(), t)
     }
 
-    /// The point at parameter `t`.
-    pub fn eval(&self, t: f64) -> Point {
-        let j = self.jet(t);
-        self.points[0] + Vec2::new(j.p[0] / j.p[2], j.p[1] / j.p[2])
-    }
-
     /// The derivative dx/dt at `t`.
     pub fn derivative(&self, t: f64) -> Vec2 {
-        let j = self.jet(t);
+        let j = self.jet(t.clamp(0.0, 1.0));
         let w = j.p[2];
         let v = hodograph(&j);
         Vec2::new(v[0], v[1]) / (w * w)
     }
 
-    /// Signed curvature at `t` (positive where the curve turns left).
-    pub fn curvature(&self, t: f64) -> f64 {
-        let j = self.jet(t);
+    /// Signed curvature κ at `t`, positive where the curve turns left (SPEC §1; kurbo's
+    /// [`ParamCurveCurvature::curvature`] is its negative).
+    pub fn signed_curvature(&self, t: f64) -> f64 {
+        let j = self.jet(t.clamp(0.0, 1.0));
         let v = hodograph(&j);
         let speed = v[0].hypot(v[1]);
         j.p[2].powi(3) * det3(&j.p, &j.d1, &j.d2) / (speed * speed * speed)
@@ -149,7 +171,7 @@ impl RationalCubic {
 
     /// dκ/ds, the derivative of the signed curvature in arc length, at `t`.
     pub fn curvature_derivative(&self, t: f64) -> f64 {
-        let j = self.jet(t);
+        let j = self.jet(t.clamp(0.0, 1.0));
         let v = hodograph(&j);
         let vv = v[0] * v[0] + v[1] * v[1];
         let w = j.p[2];
@@ -162,8 +184,10 @@ impl RationalCubic {
         self.arc_length_between(0.0, 1.0)
     }
 
-    /// Arc length from `t0` to `t1`.
+    /// Arc length from `t0` to `t1` (each clamped to [0, 1]; negative when `t1 < t0`), by
+    /// the same fixed rule; [`ParamCurveArclen::arclen`] takes an accuracy instead.
     pub fn arc_length_between(&self, t0: f64, t1: f64) -> f64 {
+        let (t0, t1) = (t0.clamp(0.0, 1.0), t1.clamp(0.0, 1.0));
         const PANELS: usize = 8;
         let h = (t1 - t0) / PANELS as f64;
         let mut sum = 0.0;
@@ -175,6 +199,324 @@ impl RationalCubic {
             }
         }
         0.5 * h * sum
+    }
+
+    /// x⁽ᵏ⁾(t) for `order` k ≥ 1, by Leibniz's rule on p = w·x (module documentation);
+    /// `t` is clamped to [0, 1].
+    pub(crate) fn nth_derivative(&self, t: f64, order: u32) -> Vec2 {
+        let j = self.jet(t.clamp(0.0, 1.0));
+        let p = [j.p, j.d1, j.d2, j.d3].map(|h| Vec2::new(h[0], h[1]));
+        let w = [j.p[2], j.d1[2], j.d2[2], j.d3[2]];
+        // x⁽ᵏ⁻³⁾, x⁽ᵏ⁻²⁾, x⁽ᵏ⁻¹⁾ in x[1..4] before step k (zero below order 0).
+        let mut x = [Vec2::ZERO, Vec2::ZERO, Vec2::ZERO, p[0] / w[0]];
+        for k in 1..=order {
+            let pk = if k <= 3 { p[k as usize] } else { Vec2::ZERO };
+            let kf = f64::from(k);
+            // C(k, 1), C(k, 2), C(k, 3), zero where k is smaller.
+            let binomial = [
+                kf,
+                kf * (kf - 1.0) / 2.0,
+                kf * (kf - 1.0) * (kf - 2.0) / 6.0,
+            ];
+            let mut sum = pk;
+            for i in 1..=3 {
+                sum -= binomial[i - 1] * w[i] * x[4 - i];
+            }
+            x.rotate_left(1);
+            x[3] = sum / w[0];
+        }
+        x[3]
+    }
+
+    /// The speed |x′(t)|.
+    fn speed(&self, t: f64) -> f64 {
+        self.derivative(t).hypot()
+    }
+
+    /// A bound on the speed over [0, 1]: from x′ = V/w² and
+    /// V = 3 Σᵢ Σⱼ Bᵢ²(t) Bⱼ³(t) wⱼ (wᵢ₊₁(bᵢ₊₁ − bⱼ) − wᵢ(bᵢ − bⱼ)),
+    /// |V| ≤ 6 w(t) w_max D with D the diameter of the control points, so
+    /// |x′| ≤ 6 (w_max / w_min) D.
+    fn speed_bound(&self) -> f64 {
+        let b = self.points;
+        let mut diameter = 0.0f64;
+        for i in 0..4 {
+            for j in i + 1..4 {
+                diameter = diameter.max((b[j] - b[i]).hypot());
+            }
+        }
+        let w = self.weights;
+        let (max, min) = (
+            w[0].max(w[1]).max(w[2]).max(w[3]),
+            w[0].min(w[1]).min(w[2]).min(w[3]),
+        );
+        6.0 * (max / min) * diameter
+    }
+
+    /// Arc length from `t0` to `t1` (in [0, 1]) within `accuracy`, by adaptive
+    /// Gauss–Legendre (module documentation).
+    pub(crate) fn arclen_between(&self, t0: f64, t1: f64, accuracy: f64) -> f64 {
+        let c = power_basis(&self.homogeneous());
+        let speed = |t: f64| {
+            let j = power_jet(&c, t);
+            let v = hodograph(&j);
+            v[0].hypot(v[1]) / (j.p[2] * j.p[2])
+        };
+        let rule = |a: f64, b: f64| {
+            let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+            half * GAUSS_16
+                .iter()
+                .map(|&(x, w)| w * (speed(mid - half * x) + speed(mid + half * x)))
+                .sum::<f64>()
+        };
+        refine(&rule, t0, t1, rule(t0, t1), accuracy.max(0.0), 0)
+    }
+}
+
+/// Halvings of an interval of the arc-length quadrature, at most (a safeguard: smooth
+/// pieces settle after a few, and only the intervals next to a cusp go deeper).
+const MAX_HALVINGS: u32 = 50;
+
+/// ∫ over [a, b] by `rule`, given `whole` = rule(a, b): the sum over the two halves where
+/// it differs from `whole` by at most `tol` (or by rounding), else each half refined with
+/// half the tolerance. The difference bounds the error of `whole`; that of the halves' sum
+/// is far smaller.
+fn refine(
+    rule: &impl Fn(f64, f64) -> f64,
+    a: f64,
+    b: f64,
+    whole: f64,
+    tol: f64,
+    depth: u32,
+) -> f64 {
+    let mid = 0.5 * (a + b);
+    let (left, right) = (rule(a, mid), rule(mid, b));
+    let halves = left + right;
+    let error = (halves - whole).abs();
+    // A NaN (a curve of NaN) settles at once.
+    let settled = !(error > tol && error > 4.0 * f64::EPSILON * halves.abs());
+    if settled || depth >= MAX_HALVINGS {
+        return halves;
+    }
+    refine(rule, a, mid, left, 0.5 * tol, depth + 1)
+        + refine(rule, mid, b, right, 0.5 * tol, depth + 1)
+}
+
+/// `x + t (y − x)`, exact at t = 0 and t = 1, and equal to x wherever y = x.
+fn lerp(x: f64, y: f64, t: f64) -> f64 {
+    if t <= 0.5 {
+        x + t * (y - x)
+    } else {
+        y - (1.0 - t) * (y - x)
+    }
+}
+
+/// The blossom Q(u₁, u₂, u₃) of the homogeneous cubic with control points `q`: de Casteljau
+/// with the parameter uₖ at level k.
+fn blossom(q: &[Hom; 4], u: [f64; 3]) -> Hom {
+    let mut r = *q;
+    for (level, &t) in u.iter().enumerate() {
+        for i in 0..3 - level {
+            r[i] = std::array::from_fn(|k| lerp(r[i][k], r[i + 1][k], t));
+        }
+    }
+    r[0]
+}
+
+impl ParamCurve for RationalCubic {
+    /// The point at `t`, clamped to [0, 1]; NaN gives a NaN point.
+    fn eval(&self, t: f64) -> Point {
+        let j = self.jet(t.clamp(0.0, 1.0));
+        self.points[0] + Vec2::new(j.p[0] / j.p[2], j.p[1] / j.p[2])
+    }
+
+    /// The piece between `range.start` and `range.end` (each clamped to [0, 1]; reversed
+    /// when start > end), itself a rational cubic: the blossoms Q(a,a,a), Q(a,a,b), Q(a,b,b),
+    /// Q(b,b,b) of the homogeneous curve, weights rescaled so that the largest is 1. The
+    /// parametrisation carries over, `c.subsegment(a..b).eval(u) = c.eval(a + u (b − a))`;
+    /// equal weights stay equal, so a piece of a plain cubic is a plain cubic. A NaN end
+    /// gives a curve of NaN.
+    fn subsegment(&self, range: Range<f64>) -> RationalCubic {
+        let (a, b) = (range.start.clamp(0.0, 1.0), range.end.clamp(0.0, 1.0));
+        if a.is_nan() || b.is_nan() {
+            return RationalCubic {
+                points: [Point::new(f64::NAN, f64::NAN); 4],
+                weights: [f64::NAN; 4],
+            };
+        }
+        let q = self.homogeneous();
+        let r = [[a, a, a], [a, a, b], [a, b, b], [b, b, b]].map(|u| blossom(&q, u));
+        let top = r.iter().fold(0.0f64, |m, h| m.max(h[2]));
+        let b0 = self.points[0];
+        RationalCubic {
+            points: r.map(|h| b0 + Vec2::new(h[0] / h[2], h[1] / h[2])),
+            weights: r.map(|h| h[2] / top),
+        }
+    }
+
+    fn start(&self) -> Point {
+        self.points[0]
+    }
+
+    fn end(&self) -> Point {
+        self.points[3]
+    }
+}
+
+impl ParamCurveDeriv for RationalCubic {
+    type DerivResult = RationalCubicDerivative;
+
+    fn deriv(&self) -> RationalCubicDerivative {
+        RationalCubicDerivative {
+            curve: *self,
+            order: 1,
+            t0: 0.0,
+            t1: 1.0,
+            scale: 1.0,
+        }
+    }
+}
+
+impl ParamCurveArclen for RationalCubic {
+    /// The arc length within `accuracy` (absolute, in the curve's units), by adaptive
+    /// Gauss–Legendre; an accuracy below the rounding of the sum (or not positive) gives the
+    /// length to rounding.
+    fn arclen(&self, accuracy: f64) -> f64 {
+        self.arclen_between(0.0, 1.0, accuracy)
+    }
+
+    /// The parameter at arc length `arclen` from the start, such that the arc length to it
+    /// is within `accuracy` of `arclen`: Newton on s(t) − `arclen` (s′ = |x′|) inside the
+    /// bracket [0, 1], by the crate's root finder. 0 for `arclen` ≤ 0, 1 from the length
+    /// on, NaN for NaN.
+    fn inv_arclen(&self, arclen: f64, accuracy: f64) -> f64 {
+        if arclen.is_nan() {
+            return f64::NAN;
+        }
+        if arclen <= 0.0 {
+            return 0.0;
+        }
+        // Half the accuracy for the lengths, half for the parameter.
+        let half = 0.5 * accuracy;
+        let total = self.arclen(half);
+        if total.is_nan() {
+            return f64::NAN;
+        }
+        if arclen >= total {
+            return 1.0;
+        }
+        let f = |t: f64| {
+            (
+                self.arclen_between(0.0, t, half) - arclen,
+                Some(self.speed(t)),
+            )
+        };
+        let x_tol = half / self.speed_bound();
+        let (mut a, mut b) = ((0.0, -arclen), (1.0, total - arclen));
+        let mut guess = Some(arclen / total);
+        // s(t) is increasing, so the bracket always holds the root; should the iteration cap
+        // come first, a restart from the signs alone bisects first, so each restart at least
+        // halves the bracket.
+        loop {
+            match find_root(f, a, b, guess, x_tol, 100) {
+                Ok(t) => return t,
+                Err(RootFailure::NotConverged { lo, hi }) => {
+                    (a, b) = ((lo, -1.0), (hi, 1.0));
+                    guess = None;
+                }
+                Err(RootFailure::NotBracketed) => {
+                    unreachable!("s(0) < arclen < s(1) brackets the root")
+                }
+            }
+        }
+    }
+}
+
+impl ParamCurveCurvature for RationalCubic {
+    /// kurbo's signed curvature x″ × x′ / |x′|³, **positive for a right turn**: the negative
+    /// of [`RationalCubic::signed_curvature`] (exact, not from the derivative curves).
+    fn curvature(&self, t: f64) -> f64 {
+        -self.signed_curvature(t)
+    }
+}
+
+/// The `order`-th derivative of a [`RationalCubic`] x(t), as a curve: what kurbo's
+/// [`ParamCurveDeriv::deriv`] returns, a curve whose "points" are the vectors x⁽ᵏ⁾(t).
+///
+/// The derivative of a rational cubic is not one (x′ = V/w² is a quartic over a sextic),
+/// so it has a type of its own. It is exact for every order up to rounding: with
+/// P = (p, w) = Σ Bᵢ³(t) (wᵢ bᵢ, wᵢ), Leibniz's rule on p = w·x gives
+///
+/// ```text
+/// x⁽ᵏ⁾ = (p⁽ᵏ⁾ − Σⱼ₌₁³ C(k, j) w⁽ʲ⁾ x⁽ᵏ⁻ʲ⁾) / w,   p⁽ᵏ⁾ = 0 for k > 3;
+/// ```
+///
+/// the rounding grows with the order, slowly for the first and second derivatives that
+/// kurbo uses. Its domain is the curve's: the parameter is clamped to [0, 1], and NaN gives
+/// NaN. A subsegment keeps the parametrisation,
+/// `d.subsegment(a..b).eval(u) = d.eval(a + u (b − a))`, and the derivative of a derivative
+/// is taken in its own parameter.
+///
+/// ```
+/// use kurbo::{ParamCurve, ParamCurveDeriv, Point};
+/// use lac::RationalCubic;
+///
+/// let c = RationalCubic::new(
+///     [Point::new(0.0, 0.0), Point::new(1.0, 1.0), Point::new(2.0, 1.0), Point::new(3.0, 0.0)],
+///     [1.0, 2.0, 0.5, 1.0],
+/// )?;
+/// let (d1, d2) = (c.deriv(), c.deriv().deriv());
+/// assert_eq!(d2.order(), 2);
+/// let h = 1e-5;
+/// let fd = (c.eval(0.4 + h) - c.eval(0.4 - h)) / (2.0 * h);
+/// assert!((d1.eval(0.4).to_vec2() - fd).hypot() < 1e-8);
+/// let fd2 = (d1.eval(0.4 + h) - d1.eval(0.4 - h)) / (2.0 * h);
+/// assert!((d2.eval(0.4).to_vec2() - fd2).hypot() < 1e-7);
+/// # Ok::<(), lac::Error>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RationalCubicDerivative {
+    curve: RationalCubic,
+    order: u32,
+    /// eval(u) = scale · x⁽ᵏ⁾(t₀ + u (t₁ − t₀)).
+    t0: f64,
+    t1: f64,
+    scale: f64,
+}
+
+impl RationalCubicDerivative {
+    /// The order k ≥ 1 of the derivative.
+    pub fn order(&self) -> u32 {
+        self.order
+    }
+}
+
+impl ParamCurve for RationalCubicDerivative {
+    /// x⁽ᵏ⁾ at `u`, clamped to [0, 1] (NaN gives NaN), as a point.
+    fn eval(&self, u: f64) -> Point {
+        let t = self.t0 + u.clamp(0.0, 1.0) * (self.t1 - self.t0);
+        (self.scale * self.curve.nth_derivative(t, self.order)).to_point()
+    }
+
+    fn subsegment(&self, range: Range<f64>) -> RationalCubicDerivative {
+        let at = |u: f64| self.t0 + u.clamp(0.0, 1.0) * (self.t1 - self.t0);
+        RationalCubicDerivative {
+            t0: at(range.start),
+            t1: at(range.end),
+            ..*self
+        }
+    }
+}
+
+impl ParamCurveDeriv for RationalCubicDerivative {
+    type DerivResult = RationalCubicDerivative;
+
+    fn deriv(&self) -> RationalCubicDerivative {
+        RationalCubicDerivative {
+            order: self.order.saturating_add(1),
+            scale: self.scale * (self.t1 - self.t0),
+            ..*self
+        }
     }
 }
 
@@ -258,7 +600,7 @@ mod tests {
             let fd = (c.eval(t + h) - c.eval(t - h)) / (2.0 * h);
             assert!((fd - c.derivative(t)).hypot() < 1e-8 * fd.hypot());
             // dκ/ds = (dκ/dt) / |x′|.
-            let dk = (c.curvature(t + h) - c.curvature(t - h)) / (2.0 * h);
+            let dk = (c.signed_curvature(t + h) - c.signed_curvature(t - h)) / (2.0 * h);
             let want = dk / c.derivative(t).hypot();
             let got = c.curvature_derivative(t);
             assert!(
@@ -276,7 +618,7 @@ mod tests {
         let d1 = c.derivative(t);
         let d2 = (c.derivative(t + h) - c.derivative(t - h)) / (2.0 * h);
         let want = d1.cross(d2) / d1.hypot().powi(3);
-        assert!((c.curvature(t) - want).abs() < 1e-7 * want.abs());
+        assert!((c.signed_curvature(t) - want).abs() < 1e-7 * want.abs());
     }
 
     #[test]

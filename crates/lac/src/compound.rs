@@ -51,9 +51,10 @@ pub struct CompoundCurve {
 /// The shortest piece a compound curve may have, as a share of its arc length. Shorter
 /// pieces (seen where α0 > 1 meets α1 < 0 and the control points demand a curvature ratio
 /// of e^40 or more) turn by their share of the polygon's turning within less than a
-/// billionth of the curve: no sampled or exported form of the curve could show it, and
-/// its end tangent would not be the one its points suggest.
-pub const MIN_PIECE_SHARE: f64 = 1e-9;
+/// trillionth of the curve (see [`HIDDEN_SHARE`](crate::HIDDEN_SHARE)): no sampled or
+/// exported form of the curve could show it, and its end tangent would not be the one its
+/// points suggest.
+pub const MIN_PIECE_SHARE: f64 = crate::curve::HIDDEN_SHARE;
 
 /// The caller's problem, in the caller's order.
 struct Input {
@@ -260,6 +261,7 @@ impl CompoundCurve {
                 }));
             }
         }
+        crate::curve::check_visible_ends(&pieces)?;
         Ok(CompoundCurve { pieces })
     }
 

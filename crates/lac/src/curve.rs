@@ -12,10 +12,12 @@
 use kurbo::{Point, Vec2};
 
 use crate::analysis::CurvaturePoint;
-use crate::error::{finite, Error, Result};
+use crate::error::{finite, Error, NotDrawable, Result};
 use crate::numeric::clamp;
-use crate::segment::sampling::{check_count, Sample};
+use crate::quasi::{self, Kind, QuasiCurve};
+use crate::segment::sampling::{check_count, Sample, MAX_ADAPTIVE_SAMPLES};
 use crate::segment::Segment;
+use crate::tolerance::Tolerance;
 
 /// A planar log-aesthetic curve: one or more log-aesthetic [`Segment`]s joined end to end
 /// (at least G1: each piece starts where the previous one ends, with its tangent).
@@ -143,7 +145,21 @@ pub trait Curve {
 
     /// Samples such that the polyline through them stays within `accuracy` (an absolute
     /// distance, caller's units) of the curve; every joint is a sample.
+    ///
+    /// The work is bounded: a polyline within d of a curve of length L turning by Θ needs
+    /// about √(LΘ/(8d)) chords at most (∫√κ ds ≤ √(LΘ)), so an accuracy that would need
+    /// more than [`MAX_ADAPTIVE_SAMPLES`](crate::MAX_ADAPTIVE_SAMPLES) samples is refused.
     fn sample_adaptive(&self, accuracy: f64) -> Result<Vec<Sample>> {
+        finite("accuracy", accuracy)?;
+        let needed = (self.arc_length() * self.turning().abs() / (8.0 * accuracy)).sqrt();
+        if needed.is_nan() || needed > MAX_ADAPTIVE_SAMPLES as f64 {
+            return Err(Error::OutOfRange {
+                name: "accuracy",
+                value: accuracy,
+                expected: "an accuracy reachable with at most 50000 samples (about \
+                           arc_length * turning / 2e10 or more)",
+            });
+        }
         let mut out: Vec<Sample> = Vec::new();
         let mut start = 0.0;
         for piece in self.pieces() {
@@ -178,10 +194,87 @@ pub trait Curve {
         let at: Vec<f64> = (0..n)
             .map(|i| if i == n - 1 { len } else { i as f64 * step })
             .collect();
-        Ok(by_piece(pieces, &at)?
+        let plot: Vec<CurvaturePoint> = by_piece(pieces, &at)?
             .into_iter()
             .map(|(i, s)| pieces[i].curvature_point(&s))
-            .collect())
+            .collect();
+        // dκ/ds scales as 1/length²: for a curve of size 1e-155 it exceeds double range.
+        if plot.iter().all(|p| p.dkappa_ds.is_finite()) {
+            Ok(plot)
+        } else {
+            Err(Error::Unrepresentable {
+                what: "dκ/ds (it scales as 1/length²)",
+            })
+        }
+    }
+
+    /// One rational cubic with the curve's ends, end tangents and end curvatures, closest
+    /// to it in the least-squares sense of seed 001 §4 (see [`QuasiCurve`]).
+    fn to_rational_cubic(&self) -> Result<QuasiCurve> {
+        quasi::replace(self.pieces(), None, Kind::Seed)
+    }
+
+    /// As few rational cubics as needed for a maximum deviation within `tolerance`, each
+    /// with curvature proven monotone in the curve's direction, joined G2.
+    fn to_rational_cubics(&self, tolerance: Tolerance) -> Result<QuasiCurve> {
+        quasi::replace(self.pieces(), Some(tolerance), Kind::Rational)
+    }
+
+    /// As few plain (polynomial) cubics as needed for a maximum deviation within
+    /// `tolerance`, each with curvature proven monotone, joined G2: for consumers that only
+    /// take cubics (SVG paths, fonts). Their chain is a kurbo `BezPath`
+    /// ([`QuasiCurve::to_bez_path`]).
+    fn to_cubics(&self, tolerance: Tolerance) -> Result<QuasiCurve> {
+        quasi::replace(self.pieces(), Some(tolerance), Kind::Polynomial)
+    }
+}
+
+/// The share of a curve's arc length next to each end in which it may not turn by more
+/// than [`HIDDEN_TURNING`]: a feature below a trillionth of the curve's size is resolved by
+/// its own coordinates (16 digits) to 4 digits or fewer, so no sample, polyline or export
+/// shows it.
+pub const HIDDEN_SHARE: f64 = 1e-12;
+
+/// The largest turning (radians) allowed within [`HIDDEN_SHARE`] of an end. A cusp end
+/// (α > 1, ρ → 0 with a definite tangent) turns by O(share^((α−1)/α)) there, well below it
+/// for α ≥ 1.2; a hook (all the turning at a radius far below the curve's size, as when a
+/// flat triangle meets α near 1) turns by tens of degrees.
+pub const HIDDEN_TURNING: f64 = 1e-2;
+
+/// A solver's check that no turning hides at an end of the chain: the turning within
+/// [`HIDDEN_SHARE`] of the arc length from the first and from the last point.
+pub(crate) fn check_visible_ends(pieces: &[Segment]) -> Result<()> {
+    let len: f64 = pieces.iter().map(Segment::length).sum();
+    let near = HIDDEN_SHARE * len;
+    let (first, last) = (&pieces[0], &pieces[pieces.len() - 1]);
+    let at_start = {
+        let s = near.min(first.length());
+        (first.theta_of(&first.station_at_s(s)?) - first.theta_of(&first.station_at_s(0.0)?)).abs()
+    };
+    let at_end = {
+        let l = last.length();
+        let s = (l - near).max(0.0);
+        (last.theta_of(&last.station_at_s(l)?) - last.theta_of(&last.station_at_s(s)?)).abs()
+    };
+    for (turning, at_first) in [(at_start, true), (at_end, false)] {
+        if turning > HIDDEN_TURNING {
+            let (k0, k1) = (first.end_curvatures().0, last.end_curvatures().1);
+            return Err(Error::NotDrawable(NotDrawable::HiddenTurn {
+                at_first,
+                turning,
+                curvature_ratio: if at_first { k0 / k1 } else { k1 / k0 }.abs(),
+            }));
+        }
+    }
+    Ok(())
+}
+
+/// Any run of consecutive pieces, as a curve.
+pub(crate) struct Chain<'a>(pub(crate) &'a [Segment]);
+
+impl Curve for Chain<'_> {
+    fn pieces(&self) -> &[Segment] {
+        self.0
     }
 }
 

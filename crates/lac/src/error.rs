@@ -92,6 +92,41 @@ pub enum Error {
         /// The smallest deviation reached for the piece that failed, relative.
         reached: f64,
     },
+    /// The curvature of a Bézier piece is undefined (or beyond double range) at a parameter:
+    /// its speed vanishes there (a repeated control point, a cusp).
+    #[error(
+        "the curvature of piece {piece} is undefined at t = {t} (the curve stops there: a \
+         repeated control point or a cusp), or beyond the range of double precision; move \
+         the control points apart"
+    )]
+    CurvatureUndefined {
+        /// The piece, from 0.
+        piece: usize,
+        /// The parameter.
+        t: f64,
+    },
+    /// A quantity of a valid curve is beyond the range of double precision (the curve is
+    /// too small or too large for it): scale the control points.
+    #[error(
+        "the {what} of this curve is beyond the range of double precision (the curve is too \
+         small or too large for it); scale the control points toward size 1"
+    )]
+    Unrepresentable {
+        /// What could not be represented.
+        what: &'static str,
+    },
+    /// A chain within the tolerance would need more than [`MAX_PIECES`](crate::MAX_PIECES)
+    /// pieces.
+    #[error(
+        "a chain of cubics within the tolerance {tolerance:e} (relative to the arc length) \
+         would need more than {max_pieces} pieces; use a larger tolerance"
+    )]
+    TooManyPieces {
+        /// The requested maximum deviation, relative to the arc length.
+        tolerance: f64,
+        /// The most pieces a chain may have.
+        max_pieces: usize,
+    },
     /// A computation that should succeed for a solved curve did not (an overflow, or a
     /// bound of the family reached through rounding). This is a defect: please report the
     /// input that caused it.
@@ -128,6 +163,12 @@ pub enum ErrorKind {
     FitFailed,
     /// [`Error::ToleranceNotMet`].
     ToleranceNotMet,
+    /// [`Error::TooManyPieces`].
+    TooManyPieces,
+    /// [`Error::CurvatureUndefined`].
+    CurvatureUndefined,
+    /// [`Error::Unrepresentable`].
+    Unrepresentable,
     /// [`Error::NumericalFailure`].
     NumericalFailure,
 }
@@ -167,6 +208,9 @@ impl Error {
             Error::NotDrawable(_) => ErrorKind::NotDrawable,
             Error::FitFailed => ErrorKind::FitFailed,
             Error::ToleranceNotMet { .. } => ErrorKind::ToleranceNotMet,
+            Error::TooManyPieces { .. } => ErrorKind::TooManyPieces,
+            Error::CurvatureUndefined { .. } => ErrorKind::CurvatureUndefined,
+            Error::Unrepresentable { .. } => ErrorKind::Unrepresentable,
             Error::NumericalFailure { .. } => ErrorKind::NumericalFailure,
         }
     }
@@ -233,6 +277,18 @@ pub enum NotDrawable {
         share: f64,
         /// Its turning, radians.
         turning: f64,
+    },
+    /// The curve would make a turn too small to draw at one of its ends: more than
+    /// [`HIDDEN_TURNING`](crate::HIDDEN_TURNING) within [`HIDDEN_SHARE`](crate::HIDDEN_SHARE)
+    /// of its length, at a radius of curvature far below its size. Its points would not
+    /// show the end tangent asked for.
+    HiddenTurn {
+        /// At the first point (else at the last).
+        at_first: bool,
+        /// The turning within that share of the length, radians.
+        turning: f64,
+        /// The curvature at that end divided by the curvature at the other.
+        curvature_ratio: f64,
     },
     /// The torsion parameter Ω is too large for these four points, α, β and type: a
     /// segment exists for Ω up to `omega_max` (seed 003 §4).
@@ -318,6 +374,21 @@ impl fmt::Display for NotDrawable {
                  more symmetric, change the turning ratio, or use slopes closer to the range \
                  0..1",
                 turning.to_degrees(),
+            ),
+            NotDrawable::HiddenTurn {
+                at_first,
+                turning,
+                curvature_ratio,
+            } => write!(
+                f,
+                "the curve would turn by {:.2} deg within a trillionth of its length at its {} \
+                 point, where its curvature is {} times that at the other end: no drawing \
+                 could show that turn, and its points would not show the tangent asked for \
+                 there; make the legs of the control polygon more alike, or choose another \
+                 alpha",
+                turning.to_degrees(),
+                if at_first { "first" } else { "last" },
+                Num(curvature_ratio),
             ),
             NotDrawable::TorsionTooLarge { omega, omega_max } => write!(
                 f,

@@ -19,7 +19,9 @@
 //! * [`RationalCubic`]: rational cubic Bézier curves, with a curvature-monotonicity test
 //!   whose verdict is a proof ([`RationalCubic::curvature_monotonicity`], seed 001 §5);
 //! * [`QuasiCurve`]: quasi-aesthetic curves (seed 001 §4), one rational cubic fitted as in
-//!   the seed or G2 chains of rational or plain cubics within a [`Tolerance`];
+//!   the seed ([`Curve::to_rational_cubic`]) or G2 chains of rational or plain cubics
+//!   within a [`Tolerance`] ([`Curve::to_rational_cubics`], [`Curve::to_cubics`]), as one
+//!   curve ([`BezierChain`]) or a kurbo path ([`QuasiCurve::to_bez_path`]);
 //! * [`curvature_plot`] and [`log_curvature_graph`]: the curvature plot and logarithmic
 //!   curvature graph of any chain of Bézier pieces, with a least-squares α ([`LcgFit`]);
 //! * [`SpaceSegment`] and [`SpaceForm`]: log-aesthetic space curves (seed 003), whose
@@ -60,6 +62,7 @@
 
 mod analysis;
 mod bezier;
+mod bezier_chain;
 mod chord_angle;
 mod compound;
 mod curve;
@@ -80,14 +83,15 @@ mod vec3;
 pub use analysis::{
     curvature_plot, log_curvature_graph, CurvaturePoint, LcgFit, LogCurvatureGraph,
 };
-pub use bezier::RationalCubic;
+pub use bezier::{RationalCubic, RationalCubicDerivative};
+pub use bezier_chain::{BezierChain, BezierChainDerivative};
 pub use compound::{CompoundCurve, CompoundDerivative, MIN_PIECE_SHARE};
-pub use curve::Curve;
+pub use curve::{Curve, HIDDEN_SHARE, HIDDEN_TURNING};
 pub use error::{Error, ErrorKind, NotDrawable, Result};
 pub use lcg::LcgLine;
 pub use monotone::{Monotonicity, MonotonicityReport};
-pub use quasi::{QuasiCurve, QuasiPiece};
-pub use segment::{Sample, Segment, SegmentDerivative, MAX_ABS_ALPHA};
+pub use quasi::{QuasiCurve, QuasiPiece, MAX_PIECES};
+pub use segment::{Sample, Segment, SegmentDerivative, MAX_ABS_ALPHA, MAX_ADAPTIVE_SAMPLES};
 pub use space::{
     BoundBy, EndBehaviour, RadiusCell, RadiusLimit, RatioLimit, SeedRow, SpaceClassification,
     SpaceEnd, TurningCell,

@@ -21,8 +21,9 @@
 
 use kurbo::{Point, Vec2};
 
-use crate::bezier::{numerator, power_basis, power_jet, RationalCubic};
-use crate::error::{Error, Result};
+use crate::bezier::{numerator, power_basis, power_jet, Hom, RationalCubic};
+use crate::error::{finite, Error, Result};
+use crate::numeric::{find_root, RootFailure};
 
 /// How the signed curvature κ of a curve varies with its parameter (SPEC §5).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -76,7 +77,8 @@ impl RationalCubic {
     /// [`MonotonicityReport::proven`]).
     ///
     /// Errors: [`Error::CoincidentPoints`] when b0 = b1 or b2 = b3 (the end tangent, and
-    /// so the curvature there, is undefined).
+    /// so the curvature there, is undefined); [`Error::NonFinite`] for the curve of NaN that
+    /// a subsegment at a NaN parameter gives.
     ///
     /// ```
     /// use kurbo::{Point, Vec2};
@@ -92,6 +94,14 @@ impl RationalCubic {
     /// ```
     pub fn curvature_monotonicity(&self) -> Result<MonotonicityReport> {
         let b = self.points();
+        // Only a subsegment at a NaN parameter makes a curve of NaN.
+        for p in &b {
+            finite("a control point coordinate", p.x)?;
+            finite("a control point coordinate", p.y)?;
+        }
+        for w in self.weights() {
+            finite("a weight", w)?;
+        }
         if b[0] == b[1] {
             return Err(Error::CoincidentPoints {
                 first: 0,
@@ -112,7 +122,7 @@ impl RationalCubic {
                 proven: false,
             });
         }
-        Ok(decide(&Poly::bernstein(&value.n, &magnitude.n), self))
+        Ok(decide(&Poly::bernstein(&value.n, &magnitude.n), &q))
     }
 }
 
@@ -432,7 +442,7 @@ fn certified_sign(c: Bounded) -> Option<Sign> {
 
 /// Subdivide until every interval has a certified sign (or is zero within rounding) or two
 /// parameters of certified opposite signs are found.
-fn decide(n: &Poly<Bounded>, curve: &RationalCubic) -> MonotonicityReport {
+fn decide(n: &Poly<Bounded>, q: &[Hom; 4]) -> MonotonicityReport {
     let mut stack = vec![(0.0, 1.0, *n)];
     let mut seen: Option<(f64, Sign)> = None;
     let mut unresolved = false;
@@ -481,7 +491,7 @@ fn decide(n: &Poly<Bounded>, curve: &RationalCubic) -> MonotonicityReport {
     let (verdict, proven) = match (bracket, seen) {
         (Some((t0, t1, s0)), _) => (
             Monotonicity::NotMonotone {
-                t: sign_change(curve, t0, t1, s0),
+                t: sign_change(q, t0, t1, s0),
             },
             true,
         ),
@@ -492,46 +502,36 @@ fn decide(n: &Poly<Bounded>, curve: &RationalCubic) -> MonotonicityReport {
     MonotonicityReport { verdict, proven }
 }
 
-/// Bisection for a sign change of dκ/ds between `t0` (where its sign is `s0`) and `t1`.
-fn sign_change(curve: &RationalCubic, t0: f64, t1: f64, s0: Sign) -> f64 {
-    let c = power_basis(&curve.homogeneous());
+/// A parameter in [`t0`, `t1`] where dκ/ds changes sign, given its certified sign `s0` at
+/// `t0` (and the opposite one at `t1`): a root of N, evaluated pointwise from the scaled
+/// homogeneous control points `q` (a power-of-two scaling, so N neither overflows nor
+/// underflows and only changes by an exact factor), by the crate's root finder (Illinois:
+/// N has no cheap derivative).
+fn sign_change(q: &[Hom; 4], t0: f64, t1: f64, s0: Sign) -> f64 {
+    let c = power_basis(q);
     let sign = if s0 == Sign::Positive { 1.0 } else { -1.0 };
     // f > 0 at t0 and < 0 at t1 (certified by the Bernstein bounds).
-    let f = |t: f64| sign * numerator(&power_jet(&c, t));
-    let (mut a, mut fa, mut b, mut fb) = (t0, f(t0), t1, f(t1));
-    if !(fa > 0.0 && fb < 0.0) {
-        // Pointwise rounding disagrees with the certified signs: plain bisection.
-        (fa, fb) = (1.0, -1.0);
-    }
-    // Illinois: regula falsi that halves the stale end's value.
-    let mut stale = 0;
-    for _ in 0..100 {
-        let mut m = (a * fb - b * fa) / (fb - fa);
-        if !(m > a && m < b) {
-            m = 0.5 * (a + b);
-        }
-        let fm = f(m);
-        if fm == 0.0 {
-            return m;
-        }
-        if fm < 0.0 {
-            (b, fb) = (m, fm);
-            if stale == -1 {
-                fa *= 0.5;
+    let f = |t: f64| (sign * numerator(&power_jet(&c, t)), None);
+    let (f0, f1) = (f(t0).0, f(t1).0);
+    let (mut a, mut b) = if f0 > 0.0 && f1 < 0.0 {
+        ((t0, f0), (t1, f1))
+    } else {
+        // Pointwise rounding disagrees with the certified signs: start from the signs
+        // alone (the first step then bisects).
+        ((t0, 1.0), (t1, -1.0))
+    };
+    // The bracket narrows to adjacent doubles (or to f = 0) unless the iteration cap comes
+    // first; then the sign change lies in the bracket reached, and a restart there from the
+    // signs alone bisects first, so that every restart at least halves it.
+    loop {
+        match find_root(f, a, b, None, f64::MIN_POSITIVE, 100) {
+            Ok(t) => return t,
+            Err(RootFailure::NotConverged { lo, hi }) => (a, b) = ((hi, 1.0), (lo, -1.0)),
+            Err(RootFailure::NotBracketed) => {
+                unreachable!("the bracket's ends have opposite signs by construction")
             }
-            stale = -1;
-        } else {
-            (a, fa) = (m, fm);
-            if stale == 1 {
-                fb *= 0.5;
-            }
-            stale = 1;
-        }
-        if b - a <= 4.0 * f64::EPSILON * b {
-            break;
         }
     }
-    0.5 * (a + b)
 }
 
 #[cfg(test)]
@@ -593,6 +593,27 @@ mod tests {
         let h = 1e-7;
         let (a, b) = (s.curvature_derivative(t - h), s.curvature_derivative(t + h));
         assert!(a * b < 0.0, "{t} {a} {b}");
+    }
+
+    #[test]
+    fn the_sign_change_of_a_huge_curve_is_where_the_unit_curves_is() {
+        // At 2³³⁰ ≈ 1e99 the pointwise numerator (degree 4 in the coordinates) would
+        // overflow; evaluated from the power-of-two-scaled points it is the unit curve's.
+        let p = [(0.0, 0.0), (1.0, 1.0), (2.0, -1.0), (3.0, 0.0)];
+        let w = [1.3, 0.4, 2.2, 0.8];
+        let at = |k: f64| {
+            let r = curve(p.map(|(x, y)| (k * x, k * y)), w)
+                .curvature_monotonicity()
+                .unwrap();
+            assert!(r.proven);
+            match r.verdict {
+                Monotonicity::NotMonotone { t } => t,
+                v => panic!("{v:?}"),
+            }
+        };
+        let unit = at(1.0);
+        assert_eq!(at(2f64.powi(330)), unit);
+        assert_eq!(at(2f64.powi(-330)), unit);
     }
 
     #[test]

@@ -39,7 +39,7 @@ fn check(c: &RationalCubic) -> Result<(), TestCaseError> {
         }
         Monotonicity::Constant => {
             // Only for curves whose curvature is constant within rounding.
-            let k = c.curvature(0.5).abs();
+            let k = c.signed_curvature(0.5).abs();
             prop_assert!(
                 scale <= 1e-10 * k * k.max(1.0),
                 "constant, but |dκ/ds| reaches {scale}"

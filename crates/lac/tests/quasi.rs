@@ -3,8 +3,9 @@
 //! tangent direction gives the log-aesthetic point with the same tangent (through
 //! `Segment::point_at_theta`), and the distance between the two is the deviation d(φ).
 
-use kurbo::Point;
+use kurbo::{ParamCurve, Point};
 use lac::Curve;
+use lac::Tolerance;
 use lac::{CompoundCurve, Error, Monotonicity, QuasiCurve, RationalCubic, Segment};
 
 fn seg(p: [(f64, f64); 3], alpha: f64) -> Segment {
@@ -53,16 +54,16 @@ fn assert_g2_chain(q: &QuasiCurve, first: Point, last: Point, k0: f64, k1: f64, 
     let rel = 1e-9 + 64.0 * f64::EPSILON * coord / leg;
     assert!((pieces[0].points()[0] - first).hypot() <= 1e-14 * scale);
     assert!((pieces[pieces.len() - 1].points()[3] - last).hypot() <= 1e-12 * scale);
-    let k = pieces[0].curvature(0.0);
+    let k = pieces[0].signed_curvature(0.0);
     assert!((k - k0).abs() <= rel * k0.abs(), "{k} {k0} {:?}", pieces[0]);
-    let kl = pieces[pieces.len() - 1].curvature(1.0);
+    let kl = pieces[pieces.len() - 1].signed_curvature(1.0);
     assert!((kl - k1).abs() <= rel * k1.abs(), "{kl} {k1}");
     for w in pieces.windows(2) {
         let (a, b) = (w[0], w[1]);
         assert!((a.points()[3] - b.points()[0]).hypot() <= 1e-12 * scale);
         let (ta, tb) = (a.derivative(1.0), b.derivative(0.0));
         assert!(ta.cross(tb).abs() <= rel * ta.hypot() * tb.hypot() && ta.dot(tb) > 0.0);
-        let (ka, kb) = (a.curvature(1.0), b.curvature(0.0));
+        let (ka, kb) = (a.signed_curvature(1.0), b.signed_curvature(0.0));
         assert!(
             (ka - kb).abs() <= rel * ka.abs().max(kb.abs()),
             "{ka} {kb} {rel}"
@@ -164,8 +165,8 @@ fn a_tolerance_is_met_with_proven_monotone_g2_pieces() {
         let scale = s.arc_length();
         for tol in [1e-3, 1e-6, 1e-9] {
             for q in [
-                s.to_rational_cubics(tol).unwrap(),
-                s.to_cubics(tol).unwrap(),
+                s.to_rational_cubics(Tolerance::Relative(tol)).unwrap(),
+                s.to_cubics(Tolerance::Relative(tol)).unwrap(),
             ] {
                 assert!(q.max <= tol, "{p:?} {alpha} {tol}: {}", q.max);
                 let dense = dense_max_deviation(&s, &q);
@@ -182,9 +183,15 @@ fn a_tolerance_is_met_with_proven_monotone_g2_pieces() {
             }
         }
         // Plain cubics have equal weights; rational ones need fewer pieces.
-        let plain = s.to_cubics(1e-9).unwrap();
+        let plain = s.to_cubics(Tolerance::Relative(1e-9)).unwrap();
         assert!(plain.pieces.iter().all(|p| p.curve.to_cubic().is_some()));
-        assert!(s.to_rational_cubics(1e-9).unwrap().pieces.len() <= plain.pieces.len());
+        assert!(
+            s.to_rational_cubics(Tolerance::Relative(1e-9))
+                .unwrap()
+                .pieces
+                .len()
+                <= plain.pieces.len()
+        );
     }
 }
 
@@ -201,7 +208,7 @@ fn compound_curves_are_approximated_across_the_joint() {
         0.5,
     )
     .unwrap();
-    let q = c.to_rational_cubics(1e-8).unwrap();
+    let q = c.to_rational_cubics(Tolerance::Relative(1e-8)).unwrap();
     assert!(q.max <= 1e-8);
     let want = if c.curvature_end() > c.curvature_start() {
         Monotonicity::Increasing
@@ -228,15 +235,33 @@ fn compound_curves_are_approximated_across_the_joint() {
 fn tolerances_outside_the_supported_range_are_refused() {
     let s = seg([(0.0, 0.0), (1.0, 0.0), (1.0, 0.7)], 0.0);
     for tol in [0.0, 1e-13, -1.0, 2.0, f64::NAN, f64::INFINITY] {
-        assert!(matches!(
-            s.to_rational_cubics(tol),
-            Err(Error::OutOfRange {
-                name: "tolerance",
-                ..
-            })
-        ));
-        assert!(matches!(s.to_cubics(tol), Err(Error::OutOfRange { .. })));
+        for t in [
+            Tolerance::Relative(tol),
+            Tolerance::Absolute(tol * s.arc_length()),
+        ] {
+            assert!(matches!(
+                s.to_rational_cubics(t),
+                Err(Error::OutOfRange {
+                    name: "tolerance",
+                    ..
+                } | Error::NonFinite {
+                    what: "tolerance",
+                    ..
+                })
+            ));
+            assert!(matches!(
+                s.to_cubics(t),
+                Err(Error::OutOfRange { .. } | Error::NonFinite { .. })
+            ));
+        }
     }
+    // An absolute tolerance is the same request as its relative equivalent.
+    let relative = s.to_rational_cubics(Tolerance::Relative(1e-7)).unwrap();
+    let absolute = s
+        .to_rational_cubics(Tolerance::Absolute(1e-7 * s.arc_length()))
+        .unwrap();
+    assert_eq!(relative.pieces.len(), absolute.pieces.len());
+    assert!(absolute.max <= 1e-7);
 }
 
 #[test]
@@ -254,7 +279,10 @@ fn every_tolerance_down_to_1e_9_is_met() {
             };
             for k in 3..=9 {
                 let tol = 10f64.powi(-k);
-                for q in [s.to_rational_cubics(tol), s.to_cubics(tol)] {
+                for q in [
+                    s.to_rational_cubics(Tolerance::Relative(tol)),
+                    s.to_cubics(Tolerance::Relative(tol)),
+                ] {
                     let q = q.unwrap_or_else(|e| panic!("{p:?} {alpha} {tol}: {e}"));
                     assert!(q.max <= tol);
                     let ends = q

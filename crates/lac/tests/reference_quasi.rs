@@ -99,7 +99,7 @@ fn proven_verdicts_equal_the_exact_ones() {
         }
         // Pointwise curvature and dκ/ds against 40 digits.
         for s in &c.samples {
-            let (k, dk) = (curve.curvature(s.t), curve.curvature_derivative(s.t));
+            let (k, dk) = (curve.signed_curvature(s.t), curve.curvature_derivative(s.t));
             assert!(
                 (k - s.kappa).abs() <= 1e-11 * scale_k.max(1e-300),
                 "{} κ({})",

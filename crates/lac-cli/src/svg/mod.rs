@@ -2,13 +2,19 @@
 //! of log-aesthetic pieces, its control polygon, the joints between pieces and, on request,
 //! its curvature comb and evolute. The drawings of `lac quasi`, `lac lcg` and `lac space` are
 //! in the submodules of the same names.
+//!
+//! Every drawing sets its text the same way: measured with the conservative estimate of
+//! [`measure`], in blocks (captions, headings, footnotes) and labels laid out by [`text`], in
+//! room the canvas reserves for them, so that no text runs into another or off the canvas.
 
 mod comb;
 mod evolute;
 pub(crate) mod lcg;
+mod measure;
 mod plot;
 pub(crate) mod quasi;
 pub(crate) mod space;
+mod text;
 mod view;
 
 use std::fmt::Write as _;
@@ -19,7 +25,8 @@ use lac::{Sample, Segment};
 
 use crate::failure::Failure;
 use comb::Comb;
-use view::{View, CAPTION};
+use text::{Block, Entry, Key, Labels};
+use view::View;
 
 /// Chordal tolerance of the drawn curve, relative to the drawing size (0.07 px at 720 px).
 const TOLERANCE: f64 = 1e-4;
@@ -35,6 +42,15 @@ const POLYGON: &str = "#888";
 const COMB: &str = "#d0342c";
 const EVOLUTE: &str = "#1f6fd1";
 const JOINT: &str = "#e07b00";
+/// The colour of the control points' markers and labels.
+const MARKER: &str = "#444";
+
+/// Size of the captions' text, pixels.
+const CAPTION_SIZE: f64 = 13.0;
+/// Size of the control points' labels, pixels.
+const LABEL_SIZE: f64 = 12.0;
+/// Control points closer than this on the canvas share one label ("P1, P2"), pixels.
+const SAME_PLACE: f64 = 6.0;
 
 /// What to draw besides the curve and its control polygon.
 #[derive(Clone, Debug)]
@@ -66,11 +82,11 @@ pub(crate) fn render(
 ) -> Result<String, Failure> {
     let layers = Layers::new(pieces, points, &extras)?;
     let caption = caption(pieces, &layers, extras.evolute);
-    let view = View::fit(layers.bounds(), caption_width(&caption));
+    let view = View::fit(layers.bounds(), &caption);
     let mut svg = String::new();
     open(&mut svg, &view, pieces);
     layers.draw(&mut svg, &view);
-    write_caption(&mut svg, &view, &caption);
+    view.caption(&mut svg, &caption);
     svg.push_str("</svg>\n");
     Ok(svg)
 }
@@ -148,9 +164,7 @@ impl Layers {
         for p in &self.joints {
             dot(svg, view.px(*p), JOINT);
         }
-        for (i, p) in polygon.iter().enumerate() {
-            marker(svg, *p, i);
-        }
+        control_points(svg, &polygon, &mut Labels::new(LABEL_SIZE), view.room());
     }
 }
 
@@ -239,20 +253,26 @@ fn segments(svg: &mut String, lines: &[(Point, Point)], colour: &str, width: f64
     svg.push_str("\"/>\n");
 }
 
-fn marker(svg: &mut String, p: Point, index: usize) {
-    labelled_marker(svg, p, &format!("P{index}"));
-}
-
-/// A control point's marker with `label` beside it.
-fn labelled_marker(svg: &mut String, p: Point, label: &str) {
-    let _ = writeln!(
-        svg,
-        r##"<circle cx="{:.2}" cy="{:.2}" r="3.5" fill="white" stroke="#444" stroke-width="1.25"/><text x="{:.2}" y="{:.2}" fill="#444" font-family="sans-serif" font-size="12">{label}</text>"##,
-        p.x,
-        p.y,
-        p.x + 6.0,
-        p.y - 6.0
-    );
+/// The control points' markers at `points` (pixels) and their labels, "P0", "P1", …, placed
+/// by `labels` inside `room`; markers closer than [`SAME_PLACE`] share one label.
+fn control_points(svg: &mut String, points: &[Point], labels: &mut Labels, room: Rect) {
+    for p in points {
+        let _ = writeln!(
+            svg,
+            r#"<circle cx="{:.2}" cy="{:.2}" r="3.5" fill="white" stroke="{MARKER}" stroke-width="1.25"/>"#,
+            p.x, p.y
+        );
+    }
+    for (p, label) in text::point_labels(points, SAME_PLACE) {
+        let at = labels.place(p, &label, room);
+        let _ = writeln!(
+            svg,
+            r#"<text x="{:.2}" y="{:.2}" fill="{MARKER}" font-family="{}" font-size="{LABEL_SIZE}">{label}</text>"#,
+            at.x,
+            at.y,
+            measure::FAMILY
+        );
+    }
 }
 
 fn cross(svg: &mut String, p: Point, colour: &str) {
@@ -275,28 +295,34 @@ fn dot(svg: &mut String, p: Point, colour: &str) {
     );
 }
 
-/// The caption: "α = …  Λ = …  arc length = …" (a compound curve: "α0 = …  α1 = …  Λ = …
-/// joint s = …  arc length = …") and a colour key for the joints, the comb and the evolute,
-/// as (colour, text) runs. Runs are separated by em spaces (`&#8195;`), which SVG does not
-/// collapse.
-fn caption(pieces: &[Segment], layers: &Layers, evolute: bool) -> Vec<(&'static str, String)> {
-    let mut runs = vec![(
+/// The caption: the curve's numbers, "α = …", "Λ = …", "arc length = …" (a compound curve:
+/// "α0 = …", "α1 = …", "Λ = …", "joint s = …", "arc length = …"), and on a line of its own
+/// the colour key of the comb and the evolute.
+fn caption(pieces: &[Segment], layers: &Layers, evolute: bool) -> Block {
+    let mut facts: Vec<Entry> = slopes(pieces)
+        .into_iter()
+        .map(|text| Entry::plain(CURVE, text))
+        .collect();
+    facts.push(Entry::plain(
         CURVE,
-        format!(
-            "{}&#8195;Λ = {}",
-            slopes(pieces).join("&#8195;"),
-            short(pieces[0].lambda())
-        ),
-    )];
+        format!("Λ = {}", short(pieces[0].lambda())),
+    ));
     let mut s = 0.0;
     for piece in &pieces[..pieces.len() - 1] {
         s += piece.arc_length();
-        runs.push((JOINT, format!("&#8195;● joint s = {}", short(s))));
+        facts.push(Entry::keyed(
+            Key::Dot(JOINT),
+            format!("joint s = {}", short(s)),
+        ));
     }
     let length: f64 = pieces.iter().map(Segment::arc_length).sum();
-    runs.push((CURVE, format!("&#8195;arc length = {}", short(length))));
+    facts.push(Entry::plain(
+        CURVE,
+        format!("arc length = {}", short(length)),
+    ));
+    let mut key = Vec::new();
     if layers.comb.is_some() {
-        runs.push((COMB, "&#8195;▬ curvature comb".into()));
+        key.push(Entry::keyed(Key::line(COMB, 1.25), "curvature comb"));
     }
     if evolute {
         let note = if layers.evolute.is_empty() && layers.centres.is_empty() {
@@ -304,44 +330,12 @@ fn caption(pieces: &[Segment], layers: &Layers, evolute: bool) -> Vec<(&'static 
         } else {
             ""
         };
-        runs.push((EVOLUTE, format!("&#8195;▬ evolute{note}")));
+        key.push(Entry::keyed(
+            Key::line(EVOLUTE, 1.5),
+            format!("evolute{note}"),
+        ));
     }
-    runs
-}
-
-/// A generous estimate of the caption's width in pixels, margins included, so that the
-/// canvas can be made wide enough: 13 px sans-serif averages about 6 px a character (7 in
-/// wide fonts such as DejaVu Sans), an em space is 13 px.
-fn caption_width(runs: &[(&str, String)]) -> f64 {
-    let (mut chars, mut ems) = (0, 0);
-    for (_, text) in runs {
-        ems += text.matches("&#8195;").count();
-        chars += text.replace("&#8195;", "").chars().count();
-    }
-    24.0 + 7.0 * chars as f64 + 13.0 * ems as f64
-}
-
-/// Write the caption `runs` in the band under the drawing; runs in the curve's colour are
-/// plain text, the others `<tspan>`s.
-fn write_caption(svg: &mut String, view: &View, runs: &[(&str, String)]) {
-    write_runs(svg, view.height - 0.5 * CAPTION + 4.0, runs);
-}
-
-/// Write `runs` as one line of text from the left edge with its baseline at `y` (see
-/// [`write_caption`]).
-fn write_runs(svg: &mut String, y: f64, runs: &[(&str, String)]) {
-    let _ = write!(
-        svg,
-        r#"<text x="12" y="{y:.0}" fill="{CURVE}" font-family="sans-serif" font-size="13">"#,
-    );
-    for (colour, text) in runs {
-        if *colour == CURVE {
-            svg.push_str(text);
-        } else {
-            let _ = write!(svg, r#"<tspan fill="{colour}">{text}</tspan>"#);
-        }
-    }
-    svg.push_str("</text>\n");
+    Block::new(CAPTION_SIZE).list(facts).list(key)
 }
 
 /// "α = …" for one piece, "α0 = …", "α1 = …" for several.

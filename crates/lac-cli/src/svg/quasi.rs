@@ -5,15 +5,16 @@
 
 use std::fmt::Write as _;
 
-use kurbo::{Point, Rect};
+use kurbo::{BezPath, CubicBez, ParamCurve, ParamCurveArclen, PathSeg, Point, Rect};
 use lac::Curve;
 use lac::{QuasiCurve, RationalCubic, Sample, Segment};
 
 use super::comb::{max_curvature, Comb};
+use super::text::{Block, Entry, Key, Labels};
 use super::view::View;
 use super::{
-    bounding_box, caption_width, dot, drawing_size, marker, polyline, segments, short,
-    write_caption, write_runs, COMB, COMB_LENGTH, CURVE, JOINT, POLYGON, TOLERANCE,
+    bounding_box, control_points, dot, drawing_size, polyline, segments, short, CAPTION_SIZE, COMB,
+    COMB_LENGTH, CURVE, JOINT, LABEL_SIZE, POLYGON, TOLERANCE,
 };
 use crate::failure::Failure;
 
@@ -41,6 +42,8 @@ struct Layers {
     /// The log-aesthetic curve.
     curve: Vec<Point>,
     beziers: Vec<RationalCubic>,
+    /// The pieces as one kurbo path, when they are all plain cubics.
+    path: Option<BezPath>,
     /// The curve's comb: envelope through every sample, teeth at every eighth.
     lac_comb: Comb,
     lac_teeth: Comb,
@@ -60,17 +63,12 @@ pub(crate) fn render(
     cubic: bool,
 ) -> Result<String, Failure> {
     let layers = Layers::new(pieces, points, lac_samples, quasi)?;
-    let legend = legend(quasi.pieces.len());
     let caption = caption(pieces, quasi, cubic);
-    let view = View::fit(
-        layers.bounds(),
-        caption_width(&legend).max(caption_width(&caption)),
-    );
+    let view = View::fit(layers.bounds(), &caption);
     let mut svg = String::new();
     open(&mut svg, &view, pieces, quasi.pieces.len(), cubic);
     layers.draw(&mut svg, &view, cubic);
-    write_runs(&mut svg, 20.0, &legend);
-    write_caption(&mut svg, &view, &caption);
+    view.caption(&mut svg, &caption);
     svg.push_str("</svg>\n");
     Ok(svg)
 }
@@ -116,6 +114,7 @@ impl Layers {
             points: points.to_vec(),
             curve,
             beziers,
+            path: quasi.to_bez_path(),
             lac_comb: Comb::scaled(lac_samples, scale),
             lac_teeth: Comb::scaled(&lac_teeth, scale),
             bezier_comb: Comb::scaled(&dense, scale),
@@ -159,16 +158,23 @@ impl Layers {
         let dashed = " stroke-dasharray=\"5 3\"";
         let envelope = pixels(&self.bezier_comb.envelope());
         polyline(svg, &envelope, BEZIER_COMB, 1.25, dashed);
-        for (b, points) in self.beziers.iter().zip(dense_points(&self.beziers)) {
-            piece_path(svg, b, &pixels(&points), view, cubic);
+        // Plain cubics exactly, as kurbo writes them (a similarity maps control points to
+        // control points); rational pieces through dense points.
+        let cubics: Option<Vec<PathSeg>> = match &self.path {
+            Some(path) if cubic => Some((view.affine() * path.clone()).segments().collect()),
+            _ => None,
+        };
+        for (i, points) in dense_points(&self.beziers).iter().enumerate() {
+            match cubics.as_ref().and_then(|c| c.get(i)) {
+                Some(&PathSeg::Cubic(c)) => piece_path(svg, &cubic_data(c)),
+                _ => piece_path(svg, &polyline_data(&pixels(points))),
+            }
         }
         polyline(svg, &pixels(&self.curve), LAC, 1.0, "");
         for b in &self.beziers[..self.beziers.len() - 1] {
             dot(svg, view.px(b.points()[3]), JOINT);
         }
-        for (i, p) in polygon.iter().enumerate() {
-            marker(svg, *p, i);
-        }
+        control_points(svg, &polygon, &mut Labels::new(LABEL_SIZE), view.room());
     }
 }
 
@@ -196,7 +202,7 @@ fn bezier_samples(beziers: &[RationalCubic], total: usize) -> Vec<Sample> {
                 s,
                 point: b.eval(t),
                 theta: d.y.atan2(d.x),
-                kappa: b.curvature(t),
+                kappa: b.signed_curvature(t),
             });
         }
         s0 += length;
@@ -223,35 +229,17 @@ fn bezier_at_arc_lengths(beziers: &[RationalCubic], at: &[f64]) -> Vec<Sample> {
                 .expect("more than one piece was left");
             length = b.arc_length();
         }
-        let t = parameter_at(b, (s - start).clamp(0.0, length), length);
+        // Far below the drawing's hundredth of a pixel, at any size.
+        let t = b.inv_arclen((s - start).clamp(0.0, length), 1e-9 * length);
         let d = b.derivative(t);
         out.push(Sample {
             s,
             point: b.eval(t),
             theta: d.y.atan2(d.x),
-            kappa: b.curvature(t),
+            kappa: b.signed_curvature(t),
         });
     }
     out
-}
-
-/// The parameter at arc length `s` from the start of `b` (of length `length`): Newton's
-/// method on s(t), which is increasing, from the guess t = s/length; a drawing needs no
-/// more than a few steps.
-fn parameter_at(b: &RationalCubic, s: f64, length: f64) -> f64 {
-    let mut t = s / length;
-    for _ in 0..8 {
-        let speed = b.derivative(t).hypot();
-        if !speed.is_finite() || speed <= 0.0 {
-            break;
-        }
-        let step = (b.arc_length_between(0.0, t) - s) / speed;
-        t = (t - step).clamp(0.0, 1.0);
-        if step.abs() < 1e-12 {
-            break;
-        }
-    }
-    t
 }
 
 /// The points on each rational piece that its polyline is drawn through.
@@ -272,30 +260,29 @@ fn every_eighth(samples: &[Sample]) -> Vec<Sample> {
     samples.iter().step_by(8).copied().collect()
 }
 
-/// One Bézier piece as a `<path>`: plain cubics exactly, as a `C` command (a similarity maps
-/// control points to control points), rational ones through `points` (pixels).
-fn piece_path(svg: &mut String, b: &RationalCubic, points: &[Point], view: &View, cubic: bool) {
-    let _ = write!(
+/// One Bézier piece as a `<path>` with path data `d`.
+fn piece_path(svg: &mut String, d: &str) {
+    let _ = writeln!(
         svg,
-        r#"<path class="piece" stroke="{BEZIER}" stroke-opacity="0.5" stroke-width="4" d=""#
+        r#"<path class="piece" stroke="{BEZIER}" stroke-opacity="0.5" stroke-width="4" d="{d}"/>"#
     );
-    match b.to_cubic().filter(|_| cubic) {
-        Some(c) => {
-            let [p0, p1, p2, p3] = [c.p0, c.p1, c.p2, c.p3].map(|p| view.px(p));
-            let _ = write!(
-                svg,
-                "M{:.2},{:.2}C{:.2},{:.2} {:.2},{:.2} {:.2},{:.2}",
-                p0.x, p0.y, p1.x, p1.y, p2.x, p2.y, p3.x, p3.y
-            );
-        }
-        None => {
-            for (i, p) in points.iter().enumerate() {
-                let command = if i == 0 { 'M' } else { 'L' };
-                let _ = write!(svg, "{command}{:.2},{:.2}", p.x, p.y);
-            }
-        }
+}
+
+/// The path data of a plain cubic piece (pixels), to a hundredth of a pixel, from kurbo.
+fn cubic_data(c: CubicBez) -> String {
+    let r = |p: Point| Point::new((p.x * 100.0).round() / 100.0, (p.y * 100.0).round() / 100.0);
+    let c = CubicBez::new(r(c.p0), r(c.p1), r(c.p2), r(c.p3));
+    BezPath::from_path_segments(std::iter::once(PathSeg::Cubic(c))).to_svg()
+}
+
+/// The path data of a polyline through `points` (pixels).
+fn polyline_data(points: &[Point]) -> String {
+    let mut d = String::new();
+    for (i, p) in points.iter().enumerate() {
+        let command = if i == 0 { 'M' } else { 'L' };
+        let _ = write!(d, "{command}{:.2},{:.2}", p.x, p.y);
     }
-    svg.push_str("\"/>\n");
+    d
 }
 
 /// A small hollow square: an inner control point of a Bézier piece.
@@ -333,57 +320,73 @@ fn count_of(count: usize, cubic: bool) -> String {
     format!("{count} {kind}{plural}")
 }
 
-/// The colour key, drawn above the picture.
-fn legend(count: usize) -> Vec<(&'static str, String)> {
-    let mut runs = vec![
-        (LAC, "▬ log-aesthetic curve".to_string()),
-        (BEZIER, "&#8195;▬ Bézier pieces and control polygons".into()),
-        (COMB, "&#8195;▬ curvature comb".into()),
-        (BEZIER_COMB, "&#8195;╍ comb of the pieces".into()),
-    ];
-    if count > 1 {
-        runs.push((JOINT, "&#8195;● joints".into()));
-    }
-    runs
-}
-
-/// "3 rational cubics  rms = …  max = … of the arc length  curvature increasing, proven".
-fn caption(pieces: &[Segment], quasi: &QuasiCurve, cubic: bool) -> Vec<(&'static str, String)> {
+/// The caption: the numbers of the fit, "α = …", "3 rational cubics", "deviation rms = …,
+/// max = … of the arc length …", "curvature increasing, proven", and on a line of its own
+/// the colour key.
+fn caption(pieces: &[Segment], quasi: &QuasiCurve, cubic: bool) -> Block {
     let length: f64 = pieces.iter().map(Curve::arc_length).sum();
-    let mut runs = vec![(
+    let mut facts: Vec<Entry> = super::slopes(pieces)
+        .into_iter()
+        .map(|text| Entry::plain(CURVE, text))
+        .collect();
+    facts.push(Entry::plain(CURVE, count_of(quasi.pieces.len(), cubic)));
+    facts.push(Entry::plain(
         CURVE,
         format!(
-            "{}&#8195;{}&#8195;deviation rms = {:.2e}, max = {:.2e} of the arc length {}",
-            super::slopes(pieces).join("&#8195;"),
-            count_of(quasi.pieces.len(), cubic),
+            "deviation rms = {:.2e}, max = {:.2e} of the arc length {}",
             quasi.rms,
             quasi.max,
             short(length)
         ),
-    )];
+    ));
     let verdicts: Vec<_> = quasi.pieces.iter().map(|p| p.monotonicity).collect();
     let bad = verdicts.iter().filter(|m| !m.verdict.is_monotone()).count();
     let first = verdicts[0].verdict.name();
-    let (colour, text) = if bad > 0 {
+    facts.push(if bad > 0 {
         let n = verdicts.len();
         let of = if n == 1 {
             String::new()
         } else {
             format!(" on {bad} of {n} pieces")
         };
-        (COMB, format!("&#8195;curvature not monotone{of}"))
+        Entry::plain(COMB, format!("curvature not monotone{of}"))
     } else if verdicts.iter().all(|m| m.verdict.name() == first) {
         let proven = if verdicts.iter().all(|m| m.proven) {
             ", proven"
         } else {
             ""
         };
-        (CURVE, format!("&#8195;curvature {first}{proven}"))
+        Entry::plain(CURVE, format!("curvature {first}{proven}"))
     } else {
-        (CURVE, "&#8195;curvature monotone on each piece".to_string())
-    };
-    runs.push((colour, text));
-    runs
+        Entry::plain(CURVE, "curvature monotone on each piece")
+    });
+    let mut key = vec![
+        Entry::keyed(Key::line(LAC, 1.0), "log-aesthetic curve"),
+        Entry::keyed(
+            Key::Line {
+                colour: BEZIER,
+                width: 4.0,
+                opacity: 0.5,
+                dash: None,
+            },
+            "Bézier pieces",
+        ),
+        Entry::keyed(Key::line(BEZIER_POLYGON, 0.8), "their control polygons"),
+        Entry::keyed(Key::line(COMB, 1.25), "curvature comb"),
+        Entry::keyed(
+            Key::Line {
+                colour: BEZIER_COMB,
+                width: 1.25,
+                opacity: 1.0,
+                dash: Some("5 3"),
+            },
+            "comb of the pieces",
+        ),
+    ];
+    if quasi.pieces.len() > 1 {
+        key.push(Entry::keyed(Key::Dot(JOINT), "joints"));
+    }
+    Block::new(CAPTION_SIZE).list(facts).list(key)
 }
 
 #[cfg(test)]

@@ -5,34 +5,42 @@
 
 use std::fmt::Write as _;
 
-use kurbo::Point;
+use kurbo::{Point, Rect};
 use lac::{SpaceSegment, Vec3};
 
-use super::plot::{panel_title, Axis, Panel};
-use super::{as_given, caption_width, document, labelled_marker, polyline, short, CURVE, POLYGON};
+use super::measure::{self, Anchor, ASCENT, DESCENT, FAMILY};
+use super::plot::{self, panel_title, Axis, Panel, ABOVE, BELOW};
+use super::text::{Block, Entry, Labels, EDGE};
+use super::{as_given, control_points, document, polyline, short, CURVE, LABEL_SIZE, POLYGON};
 use crate::failure::Failure;
 
-/// The smallest canvas width, pixels, for the heading and the footnote.
+/// The smallest canvas width, pixels.
 const MIN_WIDTH: f64 = 1000.0;
 /// The longest side of the orthographic views' plot areas (the box's longest side), and the
 /// width of the perspective's, pixels.
 const CELL: f64 = 360.0;
 /// The lowest perspective panel, pixels (it is as high as the top view when that is higher).
 const MIN_PERSPECTIVE: f64 = 240.0;
-/// Left edge of the first column of plot areas, top edge of the first row, pixels.
-const LEFT: f64 = 100.0;
-const TOP: f64 = 130.0;
-/// Room between the plot areas of two columns (tick labels, the axis title) and two rows
-/// (tick labels, the axis title, the next panel's title), pixels.
-const COLUMN_GAP: f64 = 130.0;
-const ROW_GAP: f64 = 110.0;
-/// Room under the last row: tick labels, axis title and the two footnote lines, pixels.
-const BOTTOM: f64 = 100.0;
+/// The least room left of the first column of plot areas, pixels.
+const MIN_LEFT: f64 = 100.0;
+/// The least room between the plot areas of the two columns, pixels.
+const MIN_COLUMN_GAP: f64 = 130.0;
+/// The least room right of the second column, pixels.
+const MIN_RIGHT: f64 = 50.0;
+/// Space between the labels of neighbouring panels, and between the panels and the texts
+/// over and under them, pixels.
+const SPACING: f64 = 18.0;
+/// Where the heading's box starts, pixels.
+const HEADING_TOP: f64 = 22.0;
+/// Sizes of the heading, of the line under it and of the footnote, pixels.
+const HEADING_SIZE: f64 = 17.0;
+const SUMMARY_SIZE: f64 = 13.0;
+const FOOTNOTE_SIZE: f64 = 12.0;
+/// Space between the heading and the line under it, pixels.
+const UNDER_HEADING: f64 = 8.0;
 /// Room around the curve and its control points in the orthographic views, in sides of
 /// their bounding box.
 const MARGIN: f64 = 0.04;
-/// Control points closer than this in a view share one label ("P0, P1"), pixels.
-const SAME_PLACE: f64 = 6.0;
 /// Points on the drawn curve, equally spaced in arc length.
 const CURVE_POINTS: usize = 513;
 /// Where the perspective is seen from: azimuth from the −y axis toward +x, and elevation
@@ -43,6 +51,8 @@ const ELEVATION: f64 = 25.0;
 const DISTANCE: f64 = 4.0;
 /// Space kept free inside the perspective panel's frame, pixels.
 const PAD: f64 = 24.0;
+/// Size of the axis triad's letters, pixels.
+const TRIAD_SIZE: f64 = 13.0;
 
 const SHADOW: &str = "#bdbdbd";
 const FLOOR: &str = "#f4f4f4";
@@ -63,38 +73,95 @@ struct Ortho {
     row: usize,
 }
 
-/// Where the panels go: the plot areas' left edges by column and top edges by row, the
-/// scale of the orthographic views, the perspective's height and the canvas, pixels.
+/// Where everything goes: the orthographic views' panels, the perspective's plot area, the
+/// texts' top edges, the left edge of the texts and the width they are laid out to, and the
+/// canvas, pixels.
 struct Layout {
-    left: [f64; 2],
-    top: [f64; 2],
-    unit: f64,
-    perspective_height: f64,
+    /// The panels of [`VIEWS`], in order.
+    panels: [Panel; 3],
+    perspective: Rect,
+    summary_top: f64,
+    footnote_top: f64,
+    left: f64,
+    line_width: f64,
     width: f64,
     height: f64,
 }
 
 impl Layout {
-    /// The layout for `axes`, on a canvas wide enough for a line of 13 px text `widest`.
-    fn new(axes: &[Axis; 3], widest: &str) -> Layout {
+    /// The layout for `axes` (x, y and z at one scale) with `heading` and `summary` over the
+    /// panels and `footnote` under them.
+    fn new(axes: &[Axis; 3], heading: &Block, summary: &Block, footnote: &Block) -> Layout {
         let span = axes.clone().map(|a| a.hi - a.lo);
         let unit = CELL / span.iter().copied().fold(0.0, f64::max);
-        let [w, d, h] = span.map(|s| unit * s);
+        let [w, d, _] = span.map(|s| unit * s);
+        let mut panels = VIEWS.map(|view| Panel {
+            left: 0.0,
+            top: 0.0,
+            width: unit * span[view.across],
+            height: unit * span[view.up],
+            x: axes[view.across].clone(),
+            y: axes[view.up].clone(),
+        });
         let perspective_height = d.max(MIN_PERSPECTIVE);
-        let left = [LEFT, LEFT + w + COLUMN_GAP];
-        let top = [TOP, TOP + perspective_height + ROW_GAP];
+        let column = |c: usize| {
+            VIEWS
+                .iter()
+                .zip(&panels)
+                .filter(move |(v, _)| v.column == c)
+        };
+        let max = |values: &mut dyn Iterator<Item = f64>| values.fold(0.0, f64::max);
+        // Left to right: the y labels of the first column, its plot areas, their x labels'
+        // overhang (and titles) and the y labels of the second column, its plot areas.
+        let room = |c: usize| max(&mut column(c).map(|(_, p)| p.room_left()));
+        let overhang_left = max(&mut column(0).map(|(_, p)| p.overhang().0));
+        let overhang_right = max(&mut column(0).map(|(_, p)| p.overhang().1));
+        let titles = max(&mut column(0).map(|(v, p)| plot::title_width(v.title, v.note) - p.width));
+        let left0 = MIN_LEFT.max(EDGE + room(0)).max(EDGE + overhang_left);
+        let gap = MIN_COLUMN_GAP
+            .max(overhang_right + SPACING + room(1))
+            .max(titles + SPACING);
+        let left = [left0, left0 + w + gap];
+        let right_of_side = max(&mut column(1).map(|(v, p)| {
+            p.overhang()
+                .1
+                .max(plot::title_width(v.title, v.note) - p.width)
+        }));
+        let text = |block: &Block| left0 + block.min_width() + EDGE;
+        let width = (left[1] + d.max(CELL) + MIN_RIGHT.max(right_of_side + EDGE))
+            .max(left[1] + plot::title_width("Perspective", PERSPECTIVE_NOTE) + EDGE)
+            .max(text(heading))
+            .max(text(summary))
+            .max(text(footnote))
+            .max(MIN_WIDTH);
+        let line_width = width - left0 - EDGE;
+        // Top to bottom: the heading, the summary, the first row, the second, the footnote.
+        let summary_top = HEADING_TOP + heading.height(line_width) + UNDER_HEADING;
+        let row0 = summary_top + summary.height(line_width) + SPACING + ABOVE;
+        let row1 = row0 + perspective_height + BELOW + SPACING + ABOVE;
+        let top = [row0, row1];
+        for (view, panel) in VIEWS.iter().zip(&mut panels) {
+            panel.left = left[view.column];
+            panel.top = top[view.row];
+        }
+        let second_row = VIEWS.iter().zip(&panels).filter(|(v, _)| v.row == 1);
+        let bottom = top[1] + max(&mut second_row.map(|(_, p)| p.height));
+        let footnote_top = bottom + BELOW + SPACING;
         Layout {
-            left,
-            top,
-            unit,
-            perspective_height,
-            width: (left[1] + d.max(CELL) + 50.0)
-                .max(MIN_WIDTH)
-                .max(LEFT + caption_width(&[(CURVE, widest.to_string())])),
-            height: top[1] + h + BOTTOM,
+            panels,
+            perspective: Rect::new(left[1], row0, left[1] + CELL, row0 + perspective_height),
+            summary_top,
+            footnote_top,
+            left: left0,
+            line_width,
+            width,
+            height: footnote_top + footnote.height(line_width) + EDGE,
         }
     }
 }
+
+/// The line under the perspective's title.
+const PERSPECTIVE_NOTE: &str = "azimuth 35°, elevation 25°, with its shadow";
 
 const VIEWS: [Ortho; 3] = [
     Ortho {
@@ -154,7 +221,7 @@ pub(crate) fn render(segment: &SpaceSegment) -> Result<String, Failure> {
                 })
         })
         .collect();
-    // A margin, so that no point sits on a frame (with its label over the panel's title).
+    // A margin, so that no point sits on a frame.
     let margin = MARGIN * ranges.iter().map(|r| r.1 - r.0).fold(0.0, f64::max);
     let ranges: Vec<(f64, f64)> = ranges
         .iter()
@@ -168,46 +235,56 @@ pub(crate) fn render(segment: &SpaceSegment) -> Result<String, Failure> {
         points,
         axes: [x, y, z],
     };
-    let (heading, summary) = heading(segment);
-    let layout = Layout::new(&scene.axes, &summary);
-    let mut svg = String::new();
-    document(&mut svg, layout.width, layout.height, &heading);
-    let _ = writeln!(
-        svg,
-        r##"<text x="{LEFT:.0}" y="40" fill="#111" font-family="sans-serif" font-size="17">{heading}</text>"##,
-    );
-    let _ = writeln!(
-        svg,
-        r#"<text x="{LEFT:.0}" y="64" fill="{NOTE}" font-family="sans-serif" font-size="13">{summary}</text>"#,
-    );
-    for view in &VIEWS {
-        orthographic(&mut svg, &scene, view, &layout);
-    }
-    let floor = perspective(&mut svg, &scene, &layout);
-    let footnote = [
-        "Dashed: the control polygon P0 P1 P2 P3. The top, front and side views share one scale."
-            .to_string(),
-        format!(
-            "Perspective from azimuth {AZIMUTH}° (from −y toward +x) and elevation {ELEVATION}°; \
-             grey: the curve's shadow on the plane z = {}, and the control points' drop lines.",
-            scene.axes[2].label(floor)
-        ),
-    ];
-    for (i, line) in footnote.iter().enumerate() {
-        let _ = writeln!(
-            svg,
-            r#"<text x="{LEFT:.0}" y="{:.0}" fill="{NOTE}" font-family="sans-serif" font-size="12">{line}</text>"#,
-            layout.height - 34.0 + 18.0 * i as f64,
+    let (title, summary) = heading(segment);
+    let heading = Block::new(HEADING_SIZE).prose(CURVE, title.clone());
+    let summary = Block::new(SUMMARY_SIZE).list(summary);
+    let floor = scene.axes[2].lo;
+    let footnote = Block::new(FOOTNOTE_SIZE)
+        .prose(
+            NOTE,
+            "Dashed: the control polygon P0 P1 P2 P3. The top, front and side views share one \
+             scale.",
+        )
+        .prose(
+            NOTE,
+            format!(
+                "Perspective from azimuth {AZIMUTH}° (from −y toward +x) and elevation \
+                 {ELEVATION}°; grey: the curve's shadow on the plane z\u{a0}=\u{a0}{}, and the \
+                 control points' drop lines.",
+                scene.axes[2].label(floor)
+            ),
         );
+    let layout = Layout::new(&scene.axes, &heading, &summary, &footnote);
+    let mut svg = String::new();
+    document(
+        &mut svg,
+        layout.width,
+        layout.height,
+        &title.replace('\u{a0}', " "),
+    );
+    heading.draw(&mut svg, layout.left, HEADING_TOP, layout.line_width);
+    summary.draw(&mut svg, layout.left, layout.summary_top, layout.line_width);
+    for (view, panel) in VIEWS.iter().zip(&layout.panels) {
+        orthographic(&mut svg, &scene, view, panel);
     }
+    perspective(&mut svg, &scene, layout.perspective);
+    footnote.draw(
+        &mut svg,
+        layout.left,
+        layout.footnote_top,
+        layout.line_width,
+    );
     svg.push_str("</svg>\n");
     Ok(svg)
 }
 
-/// The heading ("Log-aesthetic space segment, α = …, β = …, Ω = …, type …") and the line
-/// under it (Λ, ν, the arc length and how the standard form is placed).
-fn heading(segment: &SpaceSegment) -> (String, String) {
-    let length = short(segment.arc_length());
+/// The heading ("Log-aesthetic space segment, α = …, β = …, Ω = …, type …", its values'
+/// spaces not breaking) and the entries under it (Λ, ν, the arc length and how the standard
+/// form is placed).
+fn heading(segment: &SpaceSegment) -> (String, Vec<Entry>) {
+    let length = format!("arc length = {}", short(segment.arc_length()));
+    let fact = |text: String| Entry::plain(NOTE, text);
+    let value = |name: &str, x: f64| format!("{name}\u{a0}=\u{a0}{}", as_given(x));
     match (
         segment.standard_form(),
         segment.transform(),
@@ -215,24 +292,24 @@ fn heading(segment: &SpaceSegment) -> (String, String) {
     ) {
         (Some(form), Some(t), Some(s_end)) => {
             let heading = format!(
-                "Log-aesthetic space segment, α = {}, β = {}, Ω = {}, type {}",
-                as_given(form.alpha()),
-                as_given(form.beta()),
-                as_given(form.omega()),
+                "Log-aesthetic space segment, {}, {}, {}, type\u{a0}{}",
+                value("α", form.alpha()),
+                value("β", form.beta()),
+                value("Ω", form.omega()),
                 form.torsion_type().number()
             );
-            let mut summary = format!(
-                "Λ = {}&#8195;ν = {}&#8195;s_end = {}&#8195;scale = {}&#8195;arc length = {length}",
-                short(form.lambda()),
-                short(form.nu()),
-                short(s_end),
-                short(t.scale)
-            );
+            let mut summary = vec![
+                fact(format!("Λ = {}", short(form.lambda()))),
+                fact(format!("ν = {}", short(form.nu()))),
+                fact(format!("s_end = {}", short(s_end))),
+                fact(format!("scale = {}", short(t.scale))),
+                fact(length),
+            ];
             if t.mirror_z {
-                summary.push_str("&#8195;mirrored (τ &lt; 0)");
+                summary.push(fact("mirrored (τ < 0)".into()));
             }
             if t.reversed {
-                summary.push_str("&#8195;reversed (standard form from P3 to P0)");
+                summary.push(fact("reversed (standard form from P3 to P0)".into()));
             }
             (heading, summary)
         }
@@ -241,30 +318,21 @@ fn heading(segment: &SpaceSegment) -> (String, String) {
                 .planar()
                 .expect("a segment without a standard form is planar");
             let heading = format!(
-                "Log-aesthetic segment of coplanar points, α = {}",
-                as_given(planar.alpha())
+                "Log-aesthetic segment of coplanar points, {}",
+                value("α", planar.alpha())
             );
-            let summary = format!(
-                "Coplanar control points: the planar segment is drawn (torsion 0)&#8195;Λ = \
-                 {}&#8195;arc length = {length}",
-                short(planar.lambda())
-            );
+            let summary = vec![
+                fact("Coplanar control points: the planar segment is drawn (torsion 0)".into()),
+                fact(format!("Λ = {}", short(planar.lambda()))),
+                fact(length),
+            ];
             (heading, summary)
         }
     }
 }
 
-/// One orthographic panel, its top-left corner fixed by the view's column and row.
-fn orthographic(svg: &mut String, scene: &Scene, view: &Ortho, layout: &Layout) {
-    let (across, up) = (&scene.axes[view.across], &scene.axes[view.up]);
-    let panel = Panel {
-        left: layout.left[view.column],
-        top: layout.top[view.row],
-        width: layout.unit * (across.hi - across.lo),
-        height: layout.unit * (up.hi - up.lo),
-        x: across.clone(),
-        y: up.clone(),
-    };
+/// One orthographic view in its `panel`.
+fn orthographic(svg: &mut String, scene: &Scene, view: &Ortho, panel: &Panel) {
     let _ = writeln!(svg, r#"<g class="panel" id="{}">"#, view.id);
     panel.draw_frame(
         svg,
@@ -274,31 +342,34 @@ fn orthographic(svg: &mut String, scene: &Scene, view: &Ortho, layout: &Layout) 
         NAMES[view.up],
     );
     let px = |p: &Vec3| panel.px(coordinate(p, view.across), coordinate(p, view.up));
+    let frame = Rect::new(
+        panel.left,
+        panel.top,
+        panel.left + panel.width,
+        panel.top + panel.height,
+    );
     draw_curve(
         svg,
         &scene.points.iter().map(px).collect::<Vec<_>>(),
         &scene.curve.iter().map(px).collect::<Vec<_>>(),
+        &mut Labels::new(LABEL_SIZE),
+        frame,
     );
     svg.push_str("</g>\n");
 }
 
-/// The control polygon (dashed), the curve and the control points' markers, in pixels;
-/// points that a view puts in one place share a label ("P0, P1").
-fn draw_curve(svg: &mut String, polygon: &[Point], curve: &[Point]) {
+/// The control polygon (dashed), the curve and the control points' markers, in pixels, with
+/// their labels placed by `labels` inside `frame`.
+fn draw_curve(
+    svg: &mut String,
+    polygon: &[Point],
+    curve: &[Point],
+    labels: &mut Labels,
+    frame: Rect,
+) {
     polyline(svg, polygon, POLYGON, 1.0, " stroke-dasharray=\"6 4\"");
     polyline(svg, curve, CURVE, 2.0, "");
-    let mut labels: Vec<(Point, String)> = Vec::new();
-    for (i, p) in polygon.iter().enumerate() {
-        match labels.iter_mut().find(|(q, _)| q.distance(*p) < SAME_PLACE) {
-            Some((_, label)) => {
-                let _ = write!(label, ", P{i}");
-            }
-            None => labels.push((*p, format!("P{i}"))),
-        }
-    }
-    for (p, label) in &labels {
-        labelled_marker(svg, *p, label);
-    }
+    control_points(svg, polygon, labels, frame);
 }
 
 /// Coordinate `c` of `p`: x, y, z for 0, 1, 2 (the views pick theirs by number).
@@ -337,11 +408,11 @@ impl Camera {
     }
 }
 
-/// The perspective panel, in the second column of the first row; returns the height of the
-/// floor the shadow falls on.
-fn perspective(svg: &mut String, scene: &Scene, layout: &Layout) -> f64 {
-    let (left, top) = (layout.left[1], layout.top[0]);
-    let (width, height) = (CELL, layout.perspective_height);
+/// The perspective panel, in the plot area `frame`, with the curve's shadow on the floor of
+/// the views' box.
+fn perspective(svg: &mut String, scene: &Scene, frame: Rect) {
+    let (left, top) = (frame.x0, frame.y0);
+    let (width, height) = (frame.width(), frame.height());
     let [ax, ay, az] = &scene.axes;
     let floor = az.lo;
     let centre = Vec3::new(
@@ -400,16 +471,7 @@ fn perspective(svg: &mut String, scene: &Scene, layout: &Layout) -> f64 {
         svg,
         r#"<rect x="{left:.2}" y="{top:.2}" width="{width:.2}" height="{height:.2}" stroke="{FRAME}" stroke-width="1"/>"#
     );
-    panel_title(
-        svg,
-        left,
-        top,
-        "Perspective",
-        (
-            NOTE,
-            &format!("azimuth {AZIMUTH}°, elevation {ELEVATION}°, shadow on the floor"),
-        ),
-    );
+    panel_title(svg, left, top, "Perspective", (NOTE, PERSPECTIVE_NOTE));
     // The floor with the top view's grid.
     let floor_px: Vec<Point> = corners.iter().chain(&corners[..1]).map(px).collect();
     let _ = write!(svg, r#"<polygon fill="{FLOOR}" stroke="none" points=""#);
@@ -453,28 +515,36 @@ fn perspective(svg: &mut String, scene: &Scene, layout: &Layout) -> f64 {
         let _ = write!(svg, "M{:.2},{:.2}L{:.2},{:.2}", a.x, a.y, b.x, b.y);
     }
     svg.push_str("\"/>\n");
-    // The axis triad.
+    // The axis triad, its letters just beyond the tips; the points' labels keep clear of
+    // them.
+    let mut labels = Labels::new(LABEL_SIZE);
     let o = px(&origin);
     for (c, tip) in tips.iter().enumerate() {
         let t = px(tip);
         let colour = AXIS_COLOURS[c];
+        let at = (
+            t.x + 0.15 * (t.x - o.x),
+            t.y + 0.15 * (t.y - o.y) + 0.5 * (ASCENT - DESCENT) * TRIAD_SIZE,
+        );
+        labels.avoid(measure::text_box(
+            NAMES[c],
+            TRIAD_SIZE,
+            false,
+            at,
+            Anchor::Middle,
+        ));
         let _ = writeln!(
             svg,
-            r#"<path stroke="{colour}" stroke-width="1.5" d="M{:.2},{:.2}L{:.2},{:.2}"/><text x="{:.2}" y="{:.2}" fill="{colour}" font-family="sans-serif" font-size="13" text-anchor="middle">{}</text>"#,
-            o.x,
-            o.y,
-            t.x,
-            t.y,
-            t.x + 0.15 * (t.x - o.x),
-            t.y + 0.15 * (t.y - o.y) + 4.0,
-            NAMES[c]
+            r#"<path stroke="{colour}" stroke-width="1.5" d="M{:.2},{:.2}L{:.2},{:.2}"/><text x="{:.2}" y="{:.2}" fill="{colour}" font-family="{FAMILY}" font-size="{TRIAD_SIZE}" text-anchor="middle">{}</text>"#,
+            o.x, o.y, t.x, t.y, at.0, at.1, NAMES[c]
         );
     }
     draw_curve(
         svg,
         &scene.points.iter().map(px).collect::<Vec<_>>(),
         &scene.curve.iter().map(px).collect::<Vec<_>>(),
+        &mut labels,
+        frame,
     );
     svg.push_str("</g>\n");
-    floor
 }

@@ -15,7 +15,7 @@ pub(crate) mod sampling;
 
 pub use kurbo::SegmentDerivative;
 pub(crate) use kurbo::{central_difference, Travel};
-pub use sampling::Sample;
+pub use sampling::{Sample, MAX_ADAPTIVE_SAMPLES};
 
 /// The angles of a three-point control polygon (SPEC §3 steps 1 and 3).
 pub(crate) struct Triangle {
@@ -210,6 +210,7 @@ impl Segment {
         };
         let segment = Segment::new(alpha, piece.form, [first, last], chord, placement);
         segment.check()?;
+        crate::curve::check_visible_ends(std::slice::from_ref(&segment))?;
         Ok(segment)
     }
 

@@ -48,6 +48,10 @@ impl Sample {
 /// Largest number of samples any sampling call returns.
 const MAX_SAMPLES: usize = 10_000_000;
 
+/// Most samples adaptive sampling may need (see `Curve::sample_adaptive`): about 0.2 s of
+/// work on one core.
+pub const MAX_ADAPTIVE_SAMPLES: usize = 50_000;
+
 impl Segment {
     /// Samples at the given ascending arc lengths within the segment (caller's units,
     /// within [0, length]).
@@ -116,7 +120,16 @@ impl Segment {
             let chord = end_z - start_z;
             let split = self.deviation_point(&start, &end, chord);
             match split {
-                Some((st, z, dev)) if dev > scaled && out.len() + stack.len() < MAX_SAMPLES => {
+                Some((st, z, dev)) if dev > scaled => {
+                    if out.len() + stack.len() >= 2 * MAX_ADAPTIVE_SAMPLES {
+                        // The estimate in `Curve::sample_adaptive` keeps this from happening;
+                        // a polyline short of the accuracy asked is never returned.
+                        return Err(Error::OutOfRange {
+                            name: "accuracy",
+                            value: accuracy,
+                            expected: "an accuracy reachable with at most 50000 samples",
+                        });
+                    }
                     stack.push((st, start_z + z));
                 }
                 _ => {

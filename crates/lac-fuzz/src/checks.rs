@@ -1,0 +1,577 @@
+//! The invariants: what every `Ok` answer must satisfy, checked independently of the
+//! solver that produced it.
+
+use kurbo::{ParamCurve, Point, Vec2};
+use lac::{
+    curvature_plot, log_curvature_graph, CompoundCurve, Curve, Monotonicity, QuasiCurve,
+    RationalCubic, Sample, Segment, SpaceSegment, SpaceShape, Tolerance, TorsionType, Vec3,
+};
+
+use crate::Input;
+
+/// The bounds the invariants use, as documented in the README's robustness section.
+pub mod bounds {
+    /// Ends within this × (chord + the rounding of the inputs' magnitudes).
+    pub const POSITION: f64 = 1e-9;
+    /// End tangents within this (radians), plus what the position rounding allows.
+    pub const TANGENT: f64 = 1e-9;
+    /// Curvature at a joint: relative jump.
+    pub const JOINT_CURVATURE: f64 = 1e-9;
+    /// Curvature along a curve may step against its monotone direction by this (relative).
+    pub const MONOTONE_SLACK: f64 = 1e-9;
+}
+
+/// `Ok(true)`: an answer that met every invariant; `Ok(false)`: a typed error; `Err`: a
+/// broken invariant.
+pub(crate) fn check(input: &Input) -> Result<bool, String> {
+    match input {
+        Input::Segment {
+            points,
+            alpha,
+            samples,
+            accuracy,
+        } => {
+            let pts = points.map(pt);
+            let Ok(seg) = Segment::from_control_points(pts, *alpha) else {
+                return Ok(false);
+            };
+            check_curve(
+                &seg,
+                &[pts[0], pts[1]],
+                &[pts[1], pts[2]],
+                *samples,
+                *accuracy,
+            )?;
+            let lcg = seg.lcg();
+            if let Some(line) = lcg {
+                finite(
+                    "lcg",
+                    &[line.alpha, line.intercept, line.log_rho.0, line.log_rho.1],
+                )?;
+            }
+            Ok(true)
+        }
+        Input::Compound3 {
+            points,
+            alpha,
+            ratio,
+            samples,
+        } => {
+            let pts = points.map(pt);
+            let Ok(c) = CompoundCurve::from_three_points(pts, alpha[0], alpha[1], *ratio) else {
+                return Ok(false);
+            };
+            check_curve(&c, &[pts[0], pts[1]], &[pts[1], pts[2]], *samples, 1e-6)?;
+            check_joints(&c)?;
+            Ok(true)
+        }
+        Input::Compound4 {
+            points,
+            alpha,
+            samples,
+        } => {
+            let pts = points.map(pt);
+            let Ok(c) = CompoundCurve::from_four_points(pts, alpha[0], alpha[1]) else {
+                return Ok(false);
+            };
+            check_curve(&c, &[pts[0], pts[1]], &[pts[2], pts[3]], *samples, 1e-6)?;
+            check_joints(&c)?;
+            // The joint's tangent is parallel to the middle leg.
+            let leg = pts[2] - pts[1];
+            let theta = c.theta_at_s(c.joint_s()).map_err(|e| e.to_string())?;
+            let off = angle_between(Vec2::from_angle(theta), leg);
+            let allowed = bounds::TANGENT + rounding(&pts) / leg.x.hypot(leg.y) * 1e3;
+            if off > allowed {
+                return Err(format!("joint tangent off the middle leg by {off:e} rad"));
+            }
+            Ok(true)
+        }
+        Input::Monotone { points, weights } => {
+            let Ok(curve) = RationalCubic::new(points.map(pt), *weights) else {
+                return Ok(false);
+            };
+            let Ok(report) = curve.curvature_monotonicity() else {
+                return Ok(false);
+            };
+            check_verdict(&curve, report.verdict, report.proven)?;
+            Ok(true)
+        }
+        Input::Analysis { pieces, per_piece } => {
+            let Ok(curves) = pieces
+                .iter()
+                .map(|(p, w)| RationalCubic::new(p.map(pt), *w))
+                .collect::<lac::Result<Vec<_>>>()
+            else {
+                return Ok(false);
+            };
+            let Ok(plot) = curvature_plot(&curves, *per_piece) else {
+                return Ok(false);
+            };
+            for p in &plot {
+                finite(
+                    "curvature plot",
+                    &[p.s, p.point.x, p.point.y, p.kappa, p.dkappa_ds],
+                )?;
+            }
+            let graph = log_curvature_graph(&plot);
+            for (x, y) in &graph.points {
+                finite("logarithmic curvature graph", &[*x, *y])?;
+            }
+            if let Some(fit) = graph.fit {
+                finite(
+                    "LCG fit",
+                    &[
+                        fit.alpha,
+                        fit.intercept,
+                        fit.rms_residual,
+                        fit.max_residual,
+                        fit.log_rho.0,
+                        fit.log_rho.1,
+                    ],
+                )?;
+            }
+            Ok(true)
+        }
+        Input::Quasi {
+            points,
+            alpha,
+            tolerance,
+            cubic,
+        } => {
+            let pts = points.map(pt);
+            let Ok(seg) = Segment::from_control_points(pts, *alpha) else {
+                return Ok(false);
+            };
+            let fit = match (tolerance, cubic) {
+                (None, _) => seg.to_rational_cubic(),
+                (Some(t), false) => seg.to_rational_cubics(Tolerance::Relative(*t)),
+                (Some(t), true) => seg.to_cubics(Tolerance::Relative(*t)),
+            };
+            let Ok(quasi) = fit else {
+                return Ok(false);
+            };
+            check_quasi(&seg, &pts, &quasi, *tolerance)?;
+            Ok(true)
+        }
+        Input::Space {
+            points,
+            alpha,
+            beta,
+            omega,
+            torsion,
+        } => {
+            let Ok(torsion) = TorsionType::from_number(*torsion) else {
+                return Ok(false);
+            };
+            let pts = points.map(Vec3::from_array);
+            let shape = SpaceShape {
+                alpha: *alpha,
+                beta: *beta,
+                omega: *omega,
+                torsion,
+            };
+            let Ok(seg) = SpaceSegment::from_control_points(pts, shape) else {
+                return Ok(false);
+            };
+            check_space(&seg, &pts)?;
+            Ok(true)
+        }
+    }
+}
+
+fn pt(p: [f64; 2]) -> Point {
+    Point::new(p[0], p[1])
+}
+
+fn finite(what: &str, values: &[f64]) -> Result<(), String> {
+    match values.iter().find(|v| !v.is_finite()) {
+        Some(v) => Err(format!("{what}: a number is not finite ({v})")),
+        None => Ok(()),
+    }
+}
+
+/// What rounding the inputs' absolute coordinates allows in positions.
+fn rounding(points: &[Point]) -> f64 {
+    let magnitude = points
+        .iter()
+        .map(|p| p.x.abs().max(p.y.abs()))
+        .fold(0.0, f64::max);
+    64.0 * f64::EPSILON * magnitude
+}
+
+/// The unsigned angle between two directions, radians.
+fn angle_between(a: Vec2, b: Vec2) -> f64 {
+    a.cross(b).atan2(a.dot(b)).abs()
+}
+
+/// A planar curve: finite everywhere; starts on the first leg's start tangent to it, ends
+/// on the last leg's end tangent to it; every sampled chord's direction lies between the
+/// tangents at its ends; curvature of one sign and monotone; the polyline is no longer than
+/// the arc; adaptive samples within the accuracy asked.
+fn check_curve(
+    curve: &dyn Curve,
+    first_leg: &[Point; 2],
+    last_leg: &[Point; 2],
+    n: usize,
+    accuracy: f64,
+) -> Result<(), String> {
+    let all = [first_leg[0], first_leg[1], last_leg[0], last_leg[1]];
+    let len = curve.arc_length();
+    finite(
+        "arc length and end curvatures",
+        &[len, curve.curvature_start(), curve.curvature_end()],
+    )?;
+    let (start, end) = (first_leg[0], last_leg[1]);
+    let chord = dist(end, start);
+    let tol = bounds::POSITION * chord + rounding(&all);
+    if !(len > 0.0 && len >= chord * (1.0 - 1e-12) - tol) {
+        return Err(format!(
+            "arc length {len:e} shorter than the chord {chord:e}"
+        ));
+    }
+    let n_check = n.clamp(2, 2000).max(65);
+    let samples = curve
+        .sample_by_arc_length(n_check)
+        .map_err(|e| format!("sampling a solved curve failed: {e}"))?;
+    for s in &samples {
+        finite("sample", &[s.s, s.point.x, s.point.y, s.theta, s.kappa])?;
+    }
+    let (a, b) = (samples[0], samples[samples.len() - 1]);
+    if dist(a.point, start) > tol {
+        return Err(format!(
+            "starts {:e} from the first point",
+            dist(a.point, start)
+        ));
+    }
+    if dist(b.point, end) > 64.0 * tol {
+        return Err(format!("ends {:e} from the last point", dist(b.point, end)));
+    }
+    let angle_tol = bounds::TANGENT + 1e3 * tol / chord;
+    let leg0 = first_leg[1] - first_leg[0];
+    let leg1 = last_leg[1] - last_leg[0];
+    if angle_between(a.tangent(), leg0) > angle_tol {
+        return Err(format!(
+            "start tangent off the first leg by {:e} rad",
+            angle_between(a.tangent(), leg0)
+        ));
+    }
+    if angle_between(b.tangent(), leg1) > angle_tol {
+        return Err(format!(
+            "end tangent off the last leg by {:e} rad",
+            angle_between(b.tangent(), leg1)
+        ));
+    }
+    check_samples(&samples, tol, len)?;
+    // The requested sampling itself: Ok only for a valid count, and then finite.
+    if let Ok(s) = curve.sample_by_arc_length(n) {
+        if s.len() != n {
+            return Err(format!("asked for {n} samples, got {}", s.len()));
+        }
+    } else if (2..=10_000_000).contains(&n) {
+        return Err(format!("{n} samples refused"));
+    }
+    if let Ok(adaptive) = curve.sample_adaptive(accuracy) {
+        for s in &adaptive {
+            finite(
+                "adaptive sample",
+                &[s.s, s.point.x, s.point.y, s.theta, s.kappa],
+            )?;
+        }
+        // Every equally spaced sample lies within the accuracy of the polyline.
+        let mut j = 0;
+        for s in &samples {
+            while j + 2 < adaptive.len() && adaptive[j + 1].s < s.s {
+                j += 1;
+            }
+            let (p, q) = (adaptive[j].point, adaptive[j + 1].point);
+            let d = distance_to_segment(s.point, p, q);
+            if d > accuracy * 1.001 + 16.0 * tol {
+                return Err(format!(
+                    "adaptive polyline {d:e} from the curve (asked {accuracy:e})"
+                ));
+            }
+        }
+    }
+    // These may refuse with a typed error (dκ/ds beyond double range for tiny curves), but
+    // what they return must be finite.
+    for p in curve.evolute(9).unwrap_or_default() {
+        finite("evolute", &[p.x, p.y])?;
+    }
+    for p in curve.curvature_plot(9).unwrap_or_default() {
+        finite("curvature plot", &[p.s, p.kappa, p.dkappa_ds])?;
+    }
+    Ok(())
+}
+
+/// Samples of a log-aesthetic curve: chord directions between the tangents, curvature of
+/// one sign and monotone, the polyline no longer than the arc.
+fn check_samples(samples: &[Sample], tol: f64, len: f64) -> Result<(), String> {
+    let sign = samples[0].kappa.signum();
+    let increasing = samples[samples.len() - 1].kappa.abs() >= samples[0].kappa.abs();
+    let mut polyline = 0.0;
+    for w in samples.windows(2) {
+        let (p, q) = (w[0], w[1]);
+        if p.kappa.signum() != sign || q.kappa.signum() != sign {
+            return Err("curvature changes sign".to_string());
+        }
+        let (kp, kq) = (p.kappa.abs(), q.kappa.abs());
+        let slack = bounds::MONOTONE_SLACK * kp.max(kq);
+        if (increasing && kq < kp - slack) || (!increasing && kq > kp + slack) {
+            return Err(format!("curvature not monotone at s = {:e}", q.s));
+        }
+        if q.s < p.s {
+            return Err("samples not ascending in arc length".to_string());
+        }
+        let d = q.point - p.point;
+        let step = dist(q.point, p.point);
+        polyline += step;
+        // Skip chords that rounding dominates.
+        if step > 1e6 * tol {
+            let dir = d.atan2();
+            let (lo, hi) = (p.theta.min(q.theta), p.theta.max(q.theta));
+            let mid = 0.5 * (lo + hi);
+            // The chord's direction, unwrapped next to the tangents'.
+            let tau = std::f64::consts::TAU;
+            let dir = dir + tau * ((mid - dir) / tau).round();
+            let allowed = 1e-9 + 4.0 * tol / step;
+            if dir < lo - allowed || dir > hi + allowed {
+                return Err(format!(
+                    "the chord from s = {:e} to {:e} points {:e} rad outside the tangents there",
+                    p.s,
+                    q.s,
+                    (dir - mid).abs() - 0.5 * (hi - lo)
+                ));
+            }
+        }
+    }
+    if polyline > len * (1.0 + 1e-9) + 64.0 * tol {
+        return Err(format!("polyline {polyline:e} longer than the arc {len:e}"));
+    }
+    Ok(())
+}
+
+/// Pieces meet with continuous position, tangent and curvature.
+fn check_joints(curve: &CompoundCurve) -> Result<(), String> {
+    let [a, b] = curve.pieces() else {
+        return Err("a compound curve without two pieces".to_string());
+    };
+    let (pa, pb) = (a.end_point(), b.start_point());
+    let scale = curve.arc_length();
+    if (pa - pb).hypot() > 1e-12 * scale + rounding(&[pa]) {
+        return Err(format!("pieces {:e} apart at the joint", (pa - pb).hypot()));
+    }
+    let ka = a.curvature_end();
+    let kb = b.curvature_start();
+    if (ka - kb).abs() > bounds::JOINT_CURVATURE * ka.abs().max(kb.abs()) {
+        return Err(format!("curvature jumps at the joint: {ka:e} to {kb:e}"));
+    }
+    let ta = a.theta_at_s(a.arc_length()).map_err(|e| e.to_string())?;
+    let tb = b.theta_at_s(0.0).map_err(|e| e.to_string())?;
+    if (ta - tb).abs() > 1e-12 * (1.0 + ta.abs()) {
+        return Err(format!("tangent jumps at the joint: {ta} to {tb}"));
+    }
+    Ok(())
+}
+
+/// A verdict is never contradicted by sampling the curvature (within its rounding).
+fn check_verdict(curve: &RationalCubic, verdict: Monotonicity, proven: bool) -> Result<(), String> {
+    if let Monotonicity::NotMonotone { t } = verdict {
+        if !(0.0..=1.0).contains(&t) {
+            return Err(format!("sign change reported at t = {t}"));
+        }
+        return Ok(());
+    }
+    if !proven {
+        return Ok(());
+    }
+    let ks: Vec<f64> = (0..=256)
+        .map(|i| curve.signed_curvature(i as f64 / 256.0))
+        .collect();
+    if ks.iter().any(|k| !k.is_finite()) {
+        return Ok(());
+    }
+    let big = ks.iter().fold(0.0f64, |m, k| m.max(k.abs()));
+    let slack = 1e-9 * big;
+    for w in ks.windows(2) {
+        let bad = match verdict {
+            Monotonicity::Increasing => w[1] < w[0] - slack,
+            Monotonicity::Decreasing => w[1] > w[0] + slack,
+            Monotonicity::Constant => (w[1] - w[0]).abs() > slack,
+            Monotonicity::NotMonotone { .. } => false,
+        };
+        if bad {
+            return Err(format!(
+                "proven {verdict:?}, but sampled curvature goes {:e} → {:e}",
+                w[0], w[1]
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// A quasi-aesthetic chain: finite; ends on the segment's ends; pieces joined G2; within the
+/// tolerance of the segment by a polyline measure independent of the fit's own; each piece's
+/// curvature proven monotone in the segment's direction when a tolerance was asked.
+fn check_quasi(
+    seg: &Segment,
+    pts: &[Point; 3],
+    quasi: &QuasiCurve,
+    tolerance: Option<f64>,
+) -> Result<(), String> {
+    finite("rms and max", &[quasi.rms, quasi.max])?;
+    if quasi.pieces.is_empty() {
+        return Err("no pieces".to_string());
+    }
+    let len = seg.arc_length();
+    let tol = bounds::POSITION * len + rounding(pts);
+    for p in &quasi.pieces {
+        let b = p.curve.points();
+        finite(
+            "piece",
+            &[
+                b[0].x, b[0].y, b[1].x, b[1].y, b[2].x, b[2].y, b[3].x, b[3].y,
+            ],
+        )?;
+        finite("weights", &p.curve.weights())?;
+        finite(
+            "turning and deviation",
+            &[p.turning.0, p.turning.1, p.max_deviation],
+        )?;
+    }
+    let first = quasi.pieces[0].curve.points()[0];
+    let last = quasi.pieces[quasi.pieces.len() - 1].curve.points()[3];
+    if (first - pts[0]).hypot() > tol || (last - pts[2]).hypot() > 64.0 * tol {
+        return Err(format!(
+            "chain ends off the segment's: {:e}, {:e}",
+            (first - pts[0]).hypot(),
+            (last - pts[2]).hypot()
+        ));
+    }
+    for w in quasi.pieces.windows(2) {
+        let (a, b) = (w[0].curve, w[1].curve);
+        let (pa, pb) = (a.points()[3], b.points()[0]);
+        if (pa - pb).hypot() > 64.0 * tol {
+            return Err(format!("pieces {:e} apart", (pa - pb).hypot()));
+        }
+        let (ka, kb) = (a.signed_curvature(1.0), b.signed_curvature(0.0));
+        if (ka - kb).abs() > 1e-6 * ka.abs().max(kb.abs()) {
+            return Err(format!("curvature jumps between pieces: {ka:e} to {kb:e}"));
+        }
+    }
+    let Some(relative) = tolerance else {
+        return Ok(());
+    };
+    if quasi.max > relative {
+        return Err(format!(
+            "reported max {:e} over the tolerance {relative:e}",
+            quasi.max
+        ));
+    }
+    let (k0, k1) = (seg.curvature_start(), seg.curvature_end());
+    let constant = (k1 - k0).abs() <= 1e-9 * k0.abs().max(k1.abs());
+    for p in &quasi.pieces {
+        let m = p.monotonicity;
+        let faithful = match m.verdict {
+            Monotonicity::Constant => true,
+            Monotonicity::Increasing => m.proven && (constant || k1 >= k0),
+            Monotonicity::Decreasing => m.proven && (constant || k1 <= k0),
+            Monotonicity::NotMonotone { .. } => constant,
+        };
+        if !faithful {
+            return Err(format!("a piece's curvature verdict is {:?}", m.verdict));
+        }
+    }
+    // Independent distance: every point of every piece lies within the tolerance of a
+    // polyline that is itself within a tenth of it of the segment.
+    let allowed = relative * len;
+    let Ok(poly) = seg.sample_adaptive(0.1 * allowed) else {
+        return Ok(());
+    };
+    if poly.len() > 2_000_000 {
+        return Ok(());
+    }
+    for p in &quasi.pieces {
+        for i in 0..=32 {
+            let x = p.curve.eval(i as f64 / 32.0);
+            let d = poly
+                .windows(2)
+                .map(|w| distance_to_segment(x, w[0].point, w[1].point))
+                .fold(f64::INFINITY, f64::min);
+            if d > 1.1 * allowed + 64.0 * tol {
+                return Err(format!(
+                    "a piece lies {:e} (relative) from the segment, tolerance {relative:e}",
+                    d / len
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// |a − b| without kurbo's overflow of the squares from 1e154 on.
+fn dist(a: Point, b: Point) -> f64 {
+    (a.x - b.x).hypot(a.y - b.y)
+}
+
+fn distance_to_segment(x: Point, p: Point, q: Point) -> f64 {
+    let d = q - p;
+    let l2 = d.hypot2();
+    if l2 == 0.0 {
+        return (x - p).hypot();
+    }
+    let t = ((x - p).dot(d) / l2).clamp(0.0, 1.0);
+    (x - (p + t * d)).hypot()
+}
+
+/// A space segment: finite frames, orthonormal and right-handed; starts at P0 along the
+/// first leg, ends at P3 along the last.
+fn check_space(seg: &SpaceSegment, pts: &[Vec3; 4]) -> Result<(), String> {
+    let len = seg.arc_length();
+    let frames = seg.sample(33).map_err(|e| e.to_string())?;
+    let chord = (pts[3] - pts[0]).length();
+    let magnitude = pts
+        .iter()
+        .map(|p| p.x.abs().max(p.y.abs()).max(p.z.abs()))
+        .fold(0.0, f64::max);
+    let tol = bounds::POSITION * chord + 64.0 * f64::EPSILON * magnitude;
+    finite("arc length", &[len])?;
+    for f in &frames {
+        let v = [f.point, f.tangent, f.normal, f.binormal];
+        finite(
+            "frame",
+            &v.iter()
+                .flat_map(|p| [p.x, p.y, p.z])
+                .chain([f.s, f.curvature, f.torsion])
+                .collect::<Vec<_>>(),
+        )?;
+        let orth = [
+            (f.tangent.length() - 1.0).abs(),
+            (f.normal.length() - 1.0).abs(),
+            f.tangent.dot(f.normal).abs(),
+            (f.tangent.cross(f.normal) - f.binormal).length(),
+        ];
+        if orth.iter().any(|e| *e > 1e-9) {
+            return Err(format!("frame not orthonormal at s = {}", f.s));
+        }
+        if f.curvature < 0.0 {
+            return Err("negative curvature".to_string());
+        }
+    }
+    let (a, b) = (frames[0], frames[frames.len() - 1]);
+    if (a.point - pts[0]).length() > tol || (b.point - pts[3]).length() > 64.0 * tol {
+        return Err(format!(
+            "space segment ends off: {:e}, {:e} (chord {chord:e})",
+            (a.point - pts[0]).length(),
+            (b.point - pts[3]).length()
+        ));
+    }
+    let t0 = (pts[1] - pts[0]).normalize();
+    let t1 = (pts[3] - pts[2]).normalize();
+    let allowed = bounds::TANGENT + 1e3 * tol / chord;
+    let off0 = a.tangent.angle_to(t0);
+    let off1 = b.tangent.angle_to(t1);
+    if off0 > allowed || off1 > allowed {
+        return Err(format!("space end tangents off by {off0:e}, {off1:e} rad"));
+    }
+    Ok(())
+}

@@ -1,0 +1,373 @@
+//! The generators: ordinary values, extreme magnitudes, special floats and near-degenerate
+//! configurations, mixed.
+
+use crate::Input;
+
+/// A small deterministic generator (SplitMix64): input `index` of stream `seed` is the
+/// same on every machine, so any failure can be reproduced from its two numbers.
+#[derive(Clone, Debug)]
+pub struct Rng(u64);
+
+impl Rng {
+    /// The generator for input `index` of stream `seed`.
+    pub fn new(seed: u64, index: u64) -> Rng {
+        let mut r = Rng(seed ^ index.wrapping_mul(0xD1B5_4A32_D192_ED03));
+        r.next_u64();
+        r
+    }
+
+    /// 64 random bits.
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [0, 1).
+    pub fn unit(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// Uniform in [a, b).
+    pub fn uniform(&mut self, a: f64, b: f64) -> f64 {
+        a + (b - a) * self.unit()
+    }
+
+    /// Uniform in 0..n.
+    pub fn below(&mut self, n: usize) -> usize {
+        (self.next_u64() % n as u64) as usize
+    }
+
+    /// True with probability `p`.
+    pub fn chance(&mut self, p: f64) -> bool {
+        self.unit() < p
+    }
+
+    /// One of `items`.
+    pub fn pick<T: Copy>(&mut self, items: &[T]) -> T {
+        items[self.below(items.len())]
+    }
+
+    /// ±10^e with e uniform in [lo, hi].
+    pub fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        let m = 10f64.powf(self.uniform(lo, hi));
+        if self.chance(0.5) {
+            m
+        } else {
+            -m
+        }
+    }
+
+    /// A special float.
+    pub fn special(&mut self) -> f64 {
+        self.pick(&[
+            0.0,
+            -0.0,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::MIN_POSITIVE,
+            5e-324,
+            -5e-324,
+            f64::MAX,
+            f64::MIN,
+            f64::EPSILON,
+            1.0 + f64::EPSILON,
+            1.0 - f64::EPSILON / 2.0,
+        ])
+    }
+
+    /// A coordinate-like number: mostly ordinary, sometimes extreme or special.
+    pub fn number(&mut self) -> f64 {
+        match self.below(100) {
+            0..=59 => self.uniform(-10.0, 10.0),
+            60..=79 => self.pick(&[-2.0, -1.0, -0.5, 0.0, 0.25, 0.5, 1.0, 1.5, 2.0, 3.0]),
+            80..=94 => self.log_uniform(-300.0, 300.0),
+            _ => self.special(),
+        }
+    }
+}
+
+/// A slope α: the named members, ordinary values, values next to 0 and 1, extremes.
+fn alpha(rng: &mut Rng) -> f64 {
+    match rng.below(100) {
+        0..=29 => rng.pick(&[-2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 3.0]),
+        30..=69 => rng.uniform(-3.0, 4.0),
+        70..=79 => rng.pick(&[0.0, 1.0]) + rng.log_uniform(-17.0, -3.0),
+        80..=89 => rng.log_uniform(-3.0, 7.0),
+        90..=96 => rng.log_uniform(-300.0, 308.0),
+        _ => rng.special(),
+    }
+}
+
+/// A plane point from three: a random triangle, possibly near-degenerate, scaled and moved.
+fn triangle(rng: &mut Rng) -> [[f64; 2]; 3] {
+    let mut p = match rng.below(100) {
+        // Ordinary triangles.
+        0..=49 => [
+            [rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0)],
+            [rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0)],
+            [rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0)],
+        ],
+        // The canonical region's frame: P0 = (−1, 0), P2 = (1, 0).
+        50..=64 => [
+            [-1.0, 0.0],
+            [rng.uniform(-1.5, 1.5), rng.uniform(-1.5, 1.5)],
+            [1.0, 0.0],
+        ],
+        // Nearly collinear: P1 just off the line, on it, or beyond an end.
+        65..=72 => {
+            let t = rng.uniform(-0.5, 1.5);
+            let off = rng.log_uniform(-16.0, -2.0);
+            [[0.0, 0.0], [t, off], [1.0, 0.0]]
+        }
+        // Nearly isosceles (a circular arc) and exactly isosceles.
+        73..=80 => {
+            let h = rng.uniform(0.05, 3.0);
+            let skew = if rng.chance(0.3) {
+                0.0
+            } else {
+                rng.log_uniform(-15.0, -3.0)
+            };
+            [[-1.0, 0.0], [skew, h], [1.0, 0.0]]
+        }
+        // Nearly coincident points.
+        81..=86 => {
+            let eps = rng.log_uniform(-16.0, -6.0);
+            let which = rng.below(3);
+            let mut p = [[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]];
+            p[(which + 1) % 3] = [p[which][0] + eps, p[which][1] + eps.abs()];
+            p
+        }
+        // Any numbers at all.
+        _ => [
+            [rng.number(), rng.number()],
+            [rng.number(), rng.number()],
+            [rng.number(), rng.number()],
+        ],
+    };
+    transform(rng, &mut p);
+    p
+}
+
+/// Scale, rotate and move points, sometimes to extreme magnitudes or far from the origin.
+fn transform<const N: usize>(rng: &mut Rng, p: &mut [[f64; 2]; N]) {
+    if rng.chance(0.3) {
+        let scale = match rng.below(4) {
+            0 => 10f64.powf(rng.uniform(-160.0, 160.0)),
+            _ => 10f64.powf(rng.uniform(-6.0, 6.0)),
+        };
+        let (s, c) = rng.uniform(0.0, std::f64::consts::TAU).sin_cos();
+        let (dx, dy) = if rng.chance(0.3) {
+            (rng.log_uniform(-3.0, 8.0), rng.log_uniform(-3.0, 8.0))
+        } else {
+            (0.0, 0.0)
+        };
+        for q in p.iter_mut() {
+            let (x, y) = (q[0] * scale, q[1] * scale);
+            *q = [c * x - s * y + dx, s * x + c * y + dy];
+        }
+    }
+    if rng.chance(0.1) {
+        for q in p.iter_mut() {
+            q[1] = -q[1];
+        }
+    }
+}
+
+fn samples(rng: &mut Rng) -> usize {
+    match rng.below(10) {
+        0 => rng.pick(&[0, 1, 2, 3]),
+        1 => rng.below(5000),
+        _ => rng.pick(&[2, 9, 33, 65, 129]),
+    }
+}
+
+pub(crate) fn segment(rng: &mut Rng) -> Input {
+    Input::Segment {
+        points: triangle(rng),
+        alpha: alpha(rng),
+        samples: samples(rng),
+        accuracy: match rng.below(10) {
+            0 => rng.number(),
+            _ => 10f64.powf(rng.uniform(-12.0, -1.0)),
+        },
+    }
+}
+
+pub(crate) fn compound3(rng: &mut Rng) -> Input {
+    Input::Compound3 {
+        points: triangle(rng),
+        alpha: [alpha(rng), alpha(rng)],
+        ratio: match rng.below(10) {
+            0 => rng.number(),
+            1 => rng.pick(&[1e-12, 1e-6, 0.999999, 1.0 - 1e-12]),
+            _ => rng.uniform(0.02, 0.98),
+        },
+        samples: samples(rng),
+    }
+}
+
+pub(crate) fn compound4(rng: &mut Rng) -> Input {
+    let mut p = match rng.below(10) {
+        0..=6 => {
+            // A polygon turning one way, with random legs: the common case.
+            let mut theta = rng.uniform(-3.0, 3.0);
+            let sign = if rng.chance(0.5) { 1.0 } else { -1.0 };
+            let mut p = [[0.0; 2]; 4];
+            for i in 1..4 {
+                let leg = rng.uniform(0.2, 3.0);
+                p[i] = [
+                    p[i - 1][0] + leg * theta.cos(),
+                    p[i - 1][1] + leg * theta.sin(),
+                ];
+                theta += sign * rng.uniform(0.05, 2.2);
+            }
+            p
+        }
+        7 => {
+            // The kind of near-degenerate four-point input.
+            [
+                [0.0, 0.0],
+                [rng.uniform(5.0, 8.0), 0.0],
+                [rng.uniform(5.0, 7.0), rng.uniform(-2.0, 0.0)],
+                [rng.uniform(5.0, 7.0), rng.uniform(-0.5, 0.5)],
+            ]
+        }
+        _ => [
+            [rng.number(), rng.number()],
+            [rng.number(), rng.number()],
+            [rng.number(), rng.number()],
+            [rng.number(), rng.number()],
+        ],
+    };
+    transform(rng, &mut p);
+    Input::Compound4 {
+        points: p,
+        alpha: [alpha(rng), alpha(rng)],
+        samples: samples(rng),
+    }
+}
+
+fn bezier(rng: &mut Rng) -> ([[f64; 2]; 4], [f64; 4]) {
+    let mut p = if rng.chance(0.85) {
+        [
+            [rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0)],
+            [rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0)],
+            [rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0)],
+            [rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0)],
+        ]
+    } else {
+        [
+            [rng.number(), rng.number()],
+            [rng.number(), rng.number()],
+            [rng.number(), rng.number()],
+            [rng.number(), rng.number()],
+        ]
+    };
+    if rng.chance(0.1) {
+        // A repeated control point (a cusp or a degenerate end).
+        let i = rng.below(3);
+        p[i + 1] = p[i];
+    }
+    transform(rng, &mut p);
+    let w = match rng.below(10) {
+        0..=3 => [1.0; 4],
+        4..=7 => [
+            rng.uniform(0.1, 3.0),
+            rng.uniform(0.1, 3.0),
+            rng.uniform(0.1, 3.0),
+            rng.uniform(0.1, 3.0),
+        ],
+        8 => [
+            rng.log_uniform(-100.0, 100.0).abs(),
+            rng.log_uniform(-100.0, 100.0).abs(),
+            rng.log_uniform(-100.0, 100.0).abs(),
+            rng.log_uniform(-100.0, 100.0).abs(),
+        ],
+        _ => [rng.number(), rng.number(), rng.number(), rng.number()],
+    };
+    (p, w)
+}
+
+pub(crate) fn monotone(rng: &mut Rng) -> Input {
+    let (points, weights) = bezier(rng);
+    Input::Monotone { points, weights }
+}
+
+pub(crate) fn analysis(rng: &mut Rng) -> Input {
+    let n = 1 + rng.below(4);
+    Input::Analysis {
+        pieces: (0..n).map(|_| bezier(rng)).collect(),
+        per_piece: match rng.below(10) {
+            0 => rng.below(3),
+            _ => rng.pick(&[2, 8, 33, 64]),
+        },
+    }
+}
+
+pub(crate) fn quasi(rng: &mut Rng) -> Input {
+    Input::Quasi {
+        points: triangle(rng),
+        alpha: alpha(rng),
+        tolerance: match rng.below(10) {
+            0..=2 => None,
+            3 => Some(rng.number()),
+            _ => Some(10f64.powf(rng.uniform(-11.0, -1.0))),
+        },
+        cubic: rng.chance(0.3),
+    }
+}
+
+pub(crate) fn space(rng: &mut Rng) -> Input {
+    let mut p = if rng.chance(0.85) {
+        // A helix-like polygon: legs turning and climbing.
+        let mut p = [[0.0; 3]; 4];
+        let (mut theta, mut z) = (0.0f64, 0.0f64);
+        for i in 1..4 {
+            let leg = rng.uniform(0.3, 3.0);
+            theta += rng.uniform(0.1, 1.8);
+            z += rng.uniform(-1.5, 1.5);
+            p[i] = [
+                p[i - 1][0] + leg * theta.cos(),
+                p[i - 1][1] + leg * theta.sin(),
+                z,
+            ];
+        }
+        if rng.chance(0.1) {
+            // Coplanar.
+            for q in p.iter_mut() {
+                q[2] = 0.0;
+            }
+        }
+        p
+    } else {
+        [
+            [rng.number(), rng.number(), rng.number()],
+            [rng.number(), rng.number(), rng.number()],
+            [rng.number(), rng.number(), rng.number()],
+            [rng.number(), rng.number(), rng.number()],
+        ]
+    };
+    if rng.chance(0.2) {
+        let scale = 10f64.powf(rng.uniform(-100.0, 100.0));
+        for q in p.iter_mut() {
+            for c in q.iter_mut() {
+                *c *= scale;
+            }
+        }
+    }
+    Input::Space {
+        points: p,
+        alpha: alpha(rng),
+        beta: alpha(rng),
+        omega: match rng.below(10) {
+            0 => rng.number(),
+            1 => rng.log_uniform(-3.0, 8.0).abs(),
+            _ => rng.uniform(0.0, 0.6),
+        },
+        torsion: rng.pick(&[1, 2, 1, 2, 0, 3]),
+    }
+}

@@ -1,0 +1,214 @@
+//! Quasi-aesthetic curves: rational (or plain) cubic Bézier replacements of a
+//! log-aesthetic segment or compound curve (seed 001 §4, SPEC §5), one piece as in the
+//! seed or as many as a tolerance needs.
+//!
+//! * `fit.rs`: one piece over a span of the curve, the seed's least-squares rational cubic;
+//! * `hermite.rs`: the plain cubic of the span's G2 Hermite data;
+//! * `deviation.rs`: how far a piece strays from the curve, point by point where both have
+//!   turned by the same angle;
+//! * `chain.rs`: as few pieces as a tolerance allows, joined G2.
+
+mod chain;
+pub use chain::MAX_PIECES;
+mod deviation;
+mod fit;
+mod hermite;
+
+use kurbo::BezPath;
+
+use crate::bezier::RationalCubic;
+use crate::bezier_chain::BezierChain;
+use crate::curve::{Chain, Curve};
+use crate::error::{Error, Result};
+use crate::monotone::{Monotonicity, MonotonicityReport};
+use crate::segment::{Sample, Segment};
+use crate::tolerance::Tolerance;
+use crate::turn::Turn;
+
+use chain::greedy;
+use fit::fit_span;
+
+/// One piece of a [`QuasiCurve`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct QuasiPiece {
+    /// The rational cubic (all weights equal for plain cubics).
+    pub curve: RationalCubic,
+    /// Its curvature monotonicity, decided with a proof.
+    pub monotonicity: MonotonicityReport,
+    /// The turning of the original curve, from its start, at the piece's two ends (radians,
+    /// non-negative, ascending).
+    pub turning: (f64, f64),
+    /// Largest distance d(φ) to the original curve over the piece (caller's units).
+    pub max_deviation: f64,
+}
+
+/// A chain of cubic Bézier pieces replacing a log-aesthetic curve, with its deviation.
+///
+/// ```
+/// use kurbo::Point;
+/// use lac::{Curve, Monotonicity, Segment, Tolerance};
+///
+/// let seg = Segment::from_control_points(
+///     [Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(1.0, 0.8)],
+///     -1.0,
+/// )?;
+/// // The seed's single rational cubic …
+/// let one = seg.to_rational_cubic()?;
+/// assert_eq!(one.pieces.len(), 1);
+/// assert!(one.max < 1e-2);
+/// // … or as many as a tolerance of 1e-9 of the arc length needs.
+/// let fine = seg.to_rational_cubics(Tolerance::Relative(1e-9))?;
+/// assert!(fine.max <= 1e-9);
+/// assert!(fine.pieces.iter().all(|p| p.monotonicity.proven
+///     && p.monotonicity.verdict == Monotonicity::Increasing));
+/// # Ok::<(), lac::Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct QuasiCurve {
+    /// The pieces in order from the curve's first control point.
+    pub pieces: Vec<QuasiPiece>,
+    /// √(∫ d(φ)² dφ / Θ) divided by the original curve's arc length.
+    pub rms: f64,
+    /// max d(φ) divided by the original curve's arc length.
+    pub max: f64,
+}
+
+impl QuasiCurve {
+    /// The pieces as one curve for kurbo's traits, piece i of n covering the parameter
+    /// range [i/n, (i + 1)/n] (see [`BezierChain`]).
+    ///
+    /// Errors: no pieces ([`Error::OutOfRange`]; never for a curve this crate made).
+    pub fn chain(&self) -> Result<BezierChain> {
+        BezierChain::new(self.pieces.iter().map(|p| p.curve).collect())
+    }
+
+    /// The chain as a kurbo path when every piece is a plain cubic (all its weights equal),
+    /// as [`Segment::to_cubics`] makes them, e.g. for [`BezPath::to_svg`]; None when a piece
+    /// is rational (or there are none).
+    pub fn to_bez_path(&self) -> Option<BezPath> {
+        self.chain().ok()?.to_bez_path()
+    }
+}
+
+/// The quasi-aesthetic replacement of the chain of log-aesthetic `pieces` (see
+/// [`Curve::to_rational_cubic`], [`Curve::to_rational_cubics`], [`Curve::to_cubics`]).
+pub(crate) fn replace(
+    pieces: &[Segment],
+    tolerance: Option<Tolerance>,
+    kind: Kind,
+) -> Result<QuasiCurve> {
+    let chain = Chain(pieces);
+    let tolerance = tolerance
+        .map(|t| t.relative_to(chain.arc_length()))
+        .transpose()?;
+    approximate(&chain, tolerance, kind)
+}
+
+/// A curve with monotone curvature of one sign, evaluated by its turning φ ∈ [0, Θ] from
+/// the start tangent.
+pub(crate) trait TurningCurve {
+    /// Total turning Θ, radians, in (0, 2π).
+    fn total_turning(&self) -> f64;
+    /// Does it turn left (positive curvature)?
+    fn turns_left(&self) -> bool;
+    /// Arc length.
+    fn length(&self) -> f64;
+    /// Signed curvature at the start and at the end.
+    fn end_curvatures(&self) -> (f64, f64);
+    /// Samples where the tangent has turned by each of `phi` (ascending, within [0, Θ]).
+    fn at_turning(&self, phi: &[f64]) -> Result<Vec<Sample>>;
+}
+
+impl<C: Curve + ?Sized> TurningCurve for C {
+    fn total_turning(&self) -> f64 {
+        self.pieces().iter().map(Segment::turning_angle).sum()
+    }
+
+    fn turns_left(&self) -> bool {
+        self.pieces()[0].turn() == Turn::Left
+    }
+
+    fn length(&self) -> f64 {
+        self.arc_length()
+    }
+
+    fn end_curvatures(&self) -> (f64, f64) {
+        (self.curvature_start(), self.curvature_end())
+    }
+
+    fn at_turning(&self, phi: &[f64]) -> Result<Vec<Sample>> {
+        let pieces = self.pieces();
+        let mut out = Vec::with_capacity(phi.len());
+        let (mut next, mut turned, mut start) = (0, 0.0, 0.0);
+        for (i, piece) in pieces.iter().enumerate() {
+            let turning = piece.turning_angle();
+            let last = i + 1 == pieces.len();
+            let mut stations = Vec::new();
+            while next < phi.len() && (last || phi[next] <= turned + turning) {
+                stations.push(piece.station_at_turning(phi[next] - turned)?);
+                next += 1;
+            }
+            if !stations.is_empty() {
+                out.extend(piece.samples_at(&stations).into_iter().map(|s| Sample {
+                    s: s.s + start,
+                    ..s
+                }));
+            }
+            turned += turning;
+            start += piece.length();
+        }
+        Ok(out)
+    }
+}
+
+/// Which cubic a span gets.
+#[derive(Clone, Copy, PartialEq)]
+pub(crate) enum Kind {
+    /// The seed's least-squares rational cubic.
+    Seed,
+    /// The better of the seed's fit and the G2 cubic.
+    Rational,
+    /// The G2 plain cubic.
+    Polynomial,
+}
+
+fn approximate(
+    curve: &impl TurningCurve,
+    tolerance: Option<f64>,
+    kind: Kind,
+) -> Result<QuasiCurve> {
+    let length = curve.length();
+    let total = curve.total_turning();
+    let (k0, k1) = curve.end_curvatures();
+    let expected = expected_direction(k0, k1);
+    let pieces = match tolerance {
+        None => vec![fit_span(curve, 0.0, total, kind)?.fitted],
+        Some(tol) => greedy(curve, tol * length, kind, expected)?,
+    };
+    let (mut integral, mut max) = (0.0, 0.0f64);
+    for p in &pieces {
+        integral += p.integral;
+        max = max.max(p.piece.max_deviation);
+    }
+    Ok(QuasiCurve {
+        pieces: pieces.into_iter().map(|p| p.piece).collect(),
+        rms: (integral / total).sqrt() / length,
+        max: max / length,
+    })
+}
+
+/// The verdict a faithful piece must have: that of the curve (constant for an arc).
+fn expected_direction(k0: f64, k1: f64) -> Monotonicity {
+    if (k1 - k0).abs() <= 1e-12 * k0.abs().max(k1.abs()) {
+        Monotonicity::Constant
+    } else if k1 > k0 {
+        Monotonicity::Increasing
+    } else {
+        Monotonicity::Decreasing
+    }
+}
+
+/// The error of a span no cubic follows.
+fn unfittable() -> Error {
+    Error::FitFailed
+}

@@ -11,9 +11,9 @@ PY := $(VENV)/bin/python
 CARGO_TEST := cargo test --locked --workspace
 LAC_BIN := $(or $(CARGO_TARGET_DIR),$(CURDIR)/target)/debug/lac
 
-.PHONY: test rust python docs fixtures bench example fuzz
+.PHONY: test rust python e2e docs fixtures bench example fuzz
 
-test: rust python
+test: rust python e2e
 
 rust:
 	cargo fmt --all -- --check
@@ -24,6 +24,14 @@ rust:
 python: $(VENV)/.installed
 	$(CARGO_TEST) --no-run
 	LAC_BIN=$(LAC_BIN) $(PY) -m pytest -q tools/reference
+
+# The editor in a real browser: Debian's chromium (installed when missing; CI runs as root),
+# playwright-core from npm, the same `lac` binary serving on a free port of 127.0.0.1.
+e2e:
+	test -x /usr/bin/chromium || (apt-get update && apt-get install -y chromium)
+	cd crates/lac-serve/e2e && npm ci --no-audit --no-fund
+	$(CARGO_TEST) --no-run
+	cd crates/lac-serve/e2e && LAC_BIN=$(LAC_BIN) node --test --test-concurrency=1
 
 $(VENV)/.installed: tools/reference/requirements.txt
 	python3 -m venv $(VENV)

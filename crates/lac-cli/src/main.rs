@@ -30,6 +30,7 @@ mod raster;
 mod region;
 mod report;
 mod segment;
+mod serve;
 mod space;
 mod svg;
 
@@ -63,6 +64,7 @@ fn main() -> ExitCode {
         Command::Monotone(args) => monotone::run(args),
         Command::Lcg(args) => lcg::run(args),
         Command::Space(args) => space::run(args),
+        Command::Serve(args) => serve::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -532,14 +532,15 @@ fn dist(a: Point, b: Point) -> f64 {
     (a.x - b.x).hypot(a.y - b.y)
 }
 
+/// Distance from `x` to the segment pq, without squaring coordinates (curves of size 1e160).
 fn distance_to_segment(x: Point, p: Point, q: Point) -> f64 {
-    let d = q - p;
-    let l2 = d.hypot2();
-    if l2 == 0.0 {
-        return (x - p).hypot();
+    let len = dist(q, p);
+    if len == 0.0 {
+        return dist(x, p);
     }
-    let t = ((x - p).dot(d) / l2).clamp(0.0, 1.0);
-    (x - (p + t * d)).hypot()
+    let u = (q - p) / len;
+    let along = ((x - p).dot(u)).clamp(0.0, len);
+    dist(x, p + along * u)
 }
 
 /// A space segment: finite frames, orthonormal and right-handed; starts at P0 along the

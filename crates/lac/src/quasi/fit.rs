@@ -30,6 +30,7 @@ use crate::monotone::Monotonicity;
 pub(super) struct Fitted {
     pub(super) piece: QuasiPiece,
     /// ∫ d² dφ over the piece.
+    /// (relative to the curve's length squared)
     pub(super) integral: f64,
 }
 
@@ -383,7 +384,9 @@ impl Span {
         let cand = Candidate::new(*q);
         // Both in the caller's units: the local frame is scaled by `scale`.
         let (integral, _) = self.integral(&cand).ok_or_else(unfittable)?;
-        let integral = integral * self.scale * self.scale;
+        // Relative to the curve's length squared: in the caller's units it would overflow
+        // for curves of size 1e155.
+        let integral = integral * (self.scale / curve.length()).powi(2);
         let max_deviation = self.max_deviation(curve, &cand)? * self.scale;
         let curve_q = self.to_caller(q)?;
         let monotonicity = curve_q.curvature_monotonicity()?;

@@ -192,7 +192,8 @@ fn approximate(
     }
     Ok(QuasiCurve {
         pieces: pieces.into_iter().map(|p| p.piece).collect(),
-        rms: (integral / total).sqrt() / length,
+        // The integrals are relative to the length squared already.
+        rms: (integral / total).sqrt(),
         max: max / length,
     })
 }

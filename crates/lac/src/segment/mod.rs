@@ -261,15 +261,38 @@ impl Segment {
             && self.scale > 0.0
             && self.scale.is_finite()
             && self.length() > 0.0
-            && self.length().is_finite()
-            && [k0, k1].iter().all(|k| k.is_finite() && *k != 0.0);
-        if ok {
-            Ok(())
-        } else {
-            Err(Error::NumericalFailure {
+            && self.length().is_finite();
+        if !ok {
+            return Err(Error::NumericalFailure {
                 what: "the solved segment (a number overflowed or is not finite)",
-            })
+            });
         }
+        // Curvature is 1/length: for curves near 1e308 (or 1e-308) in size it leaves the
+        // range of double precision.
+        if ![k0, k1].iter().all(|k| k.is_finite() && *k != 0.0) {
+            return Err(Error::Unrepresentable {
+                what: "curvature (it scales as 1/length)",
+            });
+        }
+        // Where the curvature varies by more than a million, points are placed by integrals
+        // over tangent-angle steps that can fall below the resolution of θ: check that the
+        // two ends agree on the points between them.
+        let ratio = (k1 / k0).abs();
+        if !(1e-6..=1e6).contains(&ratio) {
+            let chord = self.chord.norm();
+            for u in [0.1, 0.5, 0.9] {
+                let st = self.station_at_s(u * self.length())?;
+                let from_first = self.span(&self.first, &st);
+                let from_last = self.chord - self.span(&st, &self.last);
+                if !((from_first - from_last).norm_max() <= 1e-9 * chord) {
+                    return Err(Error::Unrepresentable {
+                        what: "points (the curvature varies too much for the tangent angle \
+                               to place them)",
+                    });
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The placement of this segment (to place a neighbour built on the same standard form).
@@ -449,19 +472,21 @@ impl Segment {
         })
     }
 
+    /// P(b) − P(a) in the standard form.
+    fn span(&self, a: &Station, b: &Station) -> Complex {
+        if a.theta <= b.theta {
+            integrate(&self.form, a, b, false).value
+        } else {
+            -integrate(&self.form, b, a, false).value
+        }
+    }
+
     /// P(st) − P(first) in the standard form, integrating from the nearer end.
     pub(crate) fn offset_of(&self, st: &Station) -> Complex {
-        let span = |a: &Station, b: &Station| {
-            if a.theta <= b.theta {
-                integrate(&self.form, a, b, false).value
-            } else {
-                -integrate(&self.form, b, a, false).value
-            }
-        };
         if (st.theta - self.first.theta).abs() <= (self.last.theta - st.theta).abs() {
-            span(&self.first, st)
+            self.span(&self.first, st)
         } else {
-            self.chord - span(st, &self.last)
+            self.chord - self.span(st, &self.last)
         }
     }
 

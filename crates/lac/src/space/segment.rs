@@ -212,6 +212,16 @@ impl SpaceSegment {
             }
         }
         let [p0, p1, p2, p3] = points;
+        if ![p1 - p0, p2 - p1, p3 - p2, p3 - p0]
+            .iter()
+            .all(|d| d.is_finite() && d.length().is_finite())
+        {
+            return Err(Error::OutOfRange {
+                name: "control points",
+                value: f64::INFINITY,
+                expected: "coordinates whose differences do not overflow",
+            });
+        }
         let t0 = (p1 - p0).normalize();
         let t1 = (p3 - p2).normalize();
         let chord = p3 - p0;
@@ -234,12 +244,28 @@ impl SpaceSegment {
             } => s_end * transform.scale,
             Solved::Planar { segment, .. } => crate::Curve::arc_length(segment),
         };
-        Ok(SpaceSegment {
+        // The solver's last look: a length and end frames that double precision holds.
+        let segment = SpaceSegment {
             points,
             shape,
             solved,
             arc_length,
-        })
+        };
+        let ends_finite = [0.0, arc_length].iter().all(|&s| {
+            segment.frame_at(s).is_ok_and(|f| {
+                [f.point, f.tangent, f.normal, f.binormal]
+                    .iter()
+                    .all(|v| v.is_finite())
+                    && f.curvature.is_finite()
+                    && f.torsion.is_finite()
+            })
+        });
+        if !(arc_length.is_finite() && arc_length > 0.0 && ends_finite) {
+            return Err(Error::Unrepresentable {
+                what: "arc length or end frames",
+            });
+        }
+        Ok(segment)
     }
 
     /// The control points `[P0, P1, P2, P3]`.

@@ -22,7 +22,7 @@ rust:
 
 # `--no-run` is a no-op after `rust`; alone, it (re)builds the test-profile binary.
 python: $(VENV)/.installed
-	$(CARGO_TEST) --no-run
+	$(CARGO_TEST) --no-run --quiet
 	LAC_BIN=$(LAC_BIN) $(PY) -m pytest -q tools/reference
 
 # The editor in a real browser: Debian's chromium (installed when missing; CI runs as root),

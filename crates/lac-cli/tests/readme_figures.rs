@@ -121,7 +121,7 @@ fn first_different_line(a: &[u8], b: &[u8]) -> usize {
 }
 
 #[test]
-fn every_figure_the_readme_shows_has_one_made_by_command_and_every_committed_figure_is_shown() {
+fn every_figure_the_readme_shows_has_one_made_by_command_and_every_svg_in_docs_is_one() {
     let readme = readme();
     let mut made: Vec<String> = figures(&readme).into_iter().map(|f| f.file).collect();
     let mut shown = shown(&readme);
@@ -142,7 +142,12 @@ fn every_figure_the_readme_shows_has_one_made_by_command_and_every_committed_fig
         made, shown,
         "README: the figures made and the figures shown"
     );
-    assert_eq!(made, committed, "the figures made and those in docs/");
+    // A figure not committed yet is reported by the next test (and written by `make docs`).
+    let orphans: Vec<&String> = committed.iter().filter(|f| !made.contains(f)).collect();
+    assert!(
+        orphans.is_empty(),
+        "no *Made by* line draws {orphans:?}: delete the file or add its README lines"
+    );
 }
 
 #[test]

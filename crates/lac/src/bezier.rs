@@ -163,19 +163,39 @@ impl RationalCubic {
     /// Signed curvature κ at `t`, positive where the curve turns left (SPEC §1; kurbo's
     /// [`ParamCurveCurvature::curvature`] is its negative).
     pub fn signed_curvature(&self, t: f64) -> f64 {
-        let j = self.jet(t.clamp(0.0, 1.0));
+        let (j, size) = self.unit_jet(t.clamp(0.0, 1.0));
         let v = hodograph(&j);
         let speed = v[0].hypot(v[1]);
-        j.p[2].powi(3) * det3(&j.p, &j.d1, &j.d2) / (speed * speed * speed)
+        j.p[2].powi(3) * det3(&j.p, &j.d1, &j.d2) / (speed * speed * speed) / size
+    }
+
+    /// The jet of the curve scaled (exactly, by a power of two) to size about 1, and that
+    /// size: the cubes and sixth powers of curvature formulas neither underflow nor overflow
+    /// for curves of size 1e-100 or 1e100.
+    fn unit_jet(&self, t: f64) -> (HomJet, f64) {
+        let b0 = self.points[0];
+        let extent = self.points.iter().fold(0.0f64, |m, p| {
+            m.max((p.x - b0.x).abs()).max((p.y - b0.y).abs())
+        });
+        let size = if extent > 0.0 && extent.is_finite() {
+            2f64.powi(extent.log2().floor() as i32)
+        } else {
+            1.0
+        };
+        let q: [Hom; 4] = std::array::from_fn(|i| {
+            let (d, w) = ((self.points[i] - b0) / size, self.weights[i]);
+            [w * d.x, w * d.y, w]
+        });
+        (hom_jet(&q, t), size)
     }
 
     /// dκ/ds, the derivative of the signed curvature in arc length, at `t`.
     pub fn curvature_derivative(&self, t: f64) -> f64 {
-        let j = self.jet(t.clamp(0.0, 1.0));
+        let (j, size) = self.unit_jet(t.clamp(0.0, 1.0));
         let v = hodograph(&j);
         let vv = v[0] * v[0] + v[1] * v[1];
         let w = j.p[2];
-        (w * w) * (w * w) * numerator(&j) / (vv * vv * vv)
+        (w * w) * (w * w) * numerator(&j) / (vv * vv * vv) / (size * size)
     }
 
     /// Arc length from t = 0 to t = 1 (16-point Gauss–Legendre on 8 panels; relative error

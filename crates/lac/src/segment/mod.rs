@@ -284,7 +284,8 @@ impl Segment {
                 let st = self.station_at_s(u * self.length())?;
                 let from_first = self.span(&self.first, &st);
                 let from_last = self.chord - self.span(&st, &self.last);
-                if !((from_first - from_last).norm_max() <= 1e-9 * chord) {
+                let disagree = (from_first - from_last).norm_max();
+                if disagree.is_nan() || disagree > 1e-9 * chord {
                     return Err(Error::Unrepresentable {
                         what: "points (the curvature varies too much for the tangent angle \
                                to place them)",

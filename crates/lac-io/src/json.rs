@@ -13,8 +13,9 @@
 
 use kurbo::Point;
 use lac::{
-    CompoundCurve, CurvaturePoint, Curve, LcgFit, LcgLine, Monotonicity, MonotonicityReport,
-    QuasiCurve, QuasiPiece, RationalCubic, Sample, Segment,
+    CompoundCurve, CurvaturePoint, Curve, Frame, GraphPoint, LcgFit, LcgLine, Monotonicity,
+    MonotonicityReport, QuasiCurve, QuasiPiece, RationalCubic, Sample, Segment, SpaceSegment,
+    SpaceShape, Tolerance, TorsionType, Vec3,
 };
 use serde::{Deserialize, Serialize};
 
@@ -785,6 +786,554 @@ pub struct RegionReport {
     pub drawable: Vec<Vec<bool>>,
 }
 
+// ---------------------------------------------------------------------------------------
+// Analysis, fits and regions: what the editor's server answers besides the curve
+
+impl LcgReport {
+    /// The plot of `plot` (a log-aesthetic curve's [`Curve::curvature_plot`] or a Bézier
+    /// chain's [`lac::curvature_plot`]) with the line fitted to its logarithmic curvature
+    /// graph ([`lac::log_curvature_graph`]).
+    pub fn new(plot: &[CurvaturePoint]) -> Self {
+        LcgReport {
+            points: plot.iter().map(PlotRow::from).collect(),
+            fit: lac::log_curvature_graph(plot)
+                .fit
+                .as_ref()
+                .map(FitRow::from),
+        }
+    }
+}
+
+impl Report for LcgReport {
+    fn is_finite(&self) -> bool {
+        self.points.iter().all(|p| {
+            all_finite([p.s, p.kappa, p.dkappa_ds])
+                && p.log_rho.is_none_or(f64::is_finite)
+                && p.log_lcg.is_none_or(f64::is_finite)
+        }) && self.fit.as_ref().is_none_or(|f| {
+            all_finite([f.alpha, f.intercept, f.rms_residual, f.max_residual])
+                && all_finite(f.log_rho)
+        })
+    }
+}
+
+impl QuasiInput {
+    /// The shape, for error messages.
+    pub const SHAPE: &'static str = r#"{"points":[[x,y],[x,y],[x,y]],"alpha":A,"tolerance":T,"cubic":false} (or a compound curve's fields instead of "alpha")"#;
+
+    /// Solve the curve and replace it by Bézier pieces: the seed's single rational cubic
+    /// without a tolerance, else rational (or, with `cubic`, plain) cubics within
+    /// `tolerance` × arc length.
+    pub fn solve(&self) -> Result<(Solved, QuasiCurve), ErrorBody> {
+        let solved = self.curve.solve()?;
+        let quasi = match (&solved, self.tolerance, self.cubic) {
+            (Solved::Segment(s), None, _) => s.to_rational_cubic(),
+            (Solved::Segment(s), Some(t), false) => s.to_rational_cubics(Tolerance::Relative(t)),
+            (Solved::Segment(s), Some(t), true) => s.to_cubics(Tolerance::Relative(t)),
+            (Solved::Compound(c), None, _) => c.to_rational_cubic(),
+            (Solved::Compound(c), Some(t), false) => c.to_rational_cubics(Tolerance::Relative(t)),
+            (Solved::Compound(c), Some(t), true) => c.to_cubics(Tolerance::Relative(t)),
+        }?;
+        Ok((solved, quasi))
+    }
+}
+
+/// Where the middle control point may go: the request of [`RegionReport`],
+/// `{"alpha":A}` for segments or `{"alpha":A0,"alpha1":A1,"ratio":R}` for compound curves,
+/// with the map's pixels per side.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct RegionInput {
+    /// α, or α0 for compound curves.
+    pub alpha: f64,
+    /// α1 of compound curves.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub alpha1: Option<f64>,
+    /// The turning ratio of compound curves.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub ratio: Option<f64>,
+    /// Pixels per side (a front end's default when absent).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub size: Option<usize>,
+}
+
+impl RegionInput {
+    /// The shape, for error messages.
+    pub const SHAPE: &'static str =
+        r#"{"alpha":A,"size":N} or {"alpha":A0,"alpha1":A1,"ratio":R,"size":N}"#;
+
+    /// Check the parameters, for which every pixel would otherwise be "not drawable" for a
+    /// reason the map does not show: finite slopes, α1 and the ratio given together, and
+    /// 0 < ratio < 1.
+    pub fn check(&self) -> Result<(), ErrorBody> {
+        let finite = |what: &'static str, value: f64| {
+            if value.is_finite() {
+                Ok(())
+            } else {
+                Err(ErrorBody::from(lac::Error::NonFinite { what, value }))
+            }
+        };
+        match (self.alpha1, self.ratio) {
+            (None, None) => finite("alpha", self.alpha),
+            (Some(alpha1), Some(ratio)) => {
+                finite("alpha0", self.alpha)?;
+                finite("alpha1", alpha1)?;
+                finite("ratio", ratio)?;
+                if ratio > 0.0 && ratio < 1.0 {
+                    Ok(())
+                } else {
+                    Err(ErrorBody::from(lac::Error::OutOfRange {
+                        name: "ratio",
+                        value: ratio,
+                        expected: "a share of the turning strictly between 0 and 1",
+                    }))
+                }
+            }
+            _ => Err(ErrorBody::invalid_input(
+                "a compound curve's region needs both alpha1 and ratio; a segment's neither",
+            )),
+        }
+    }
+
+    /// One row of the map (row 0 at y = +1): [`lac::region::row`] or
+    /// [`lac::region::compound_row`].
+    pub fn row(&self, size: usize, row: usize) -> Vec<bool> {
+        match self.alpha1.zip(self.ratio) {
+            None => lac::region::row(self.alpha, size, row),
+            Some((alpha1, ratio)) => {
+                lac::region::compound_row(self.alpha, alpha1, ratio, size, row)
+            }
+        }
+    }
+
+    /// The report of the rows computed by [`RegionInput::row`].
+    pub fn report(&self, size: usize, drawable: Vec<Vec<bool>>) -> RegionReport {
+        let count: usize = drawable.iter().flatten().filter(|&&d| d).count();
+        RegionReport {
+            alpha: self.alpha,
+            alpha1: self.alpha1,
+            ratio: self.ratio,
+            size,
+            extent: [-1.0, 1.0, -1.0, 1.0],
+            first: xy(lac::region::FIRST),
+            last: xy(lac::region::LAST),
+            drawable_fraction: count as f64 / (size * size).max(1) as f64,
+            drawable,
+        }
+    }
+}
+
+/// Where one control point of a curve may go, the others staying put:
+/// `{"curve":{…a segment or compound curve…},"index":I,"extent":[x0,x1,y0,y1],"size":N}`.
+/// For the middle point of a segment or a three-point compound curve the canonical
+/// [`RegionReport`] says the same for every placement of the ends; for the four-point
+/// compound curve, whose regions depend on all four points, this is the map.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PointRegionInput {
+    /// The curve as it is now.
+    pub curve: CurveInput,
+    /// Which of its control points moves (0-based).
+    pub index: usize,
+    /// [x_min, x_max, y_min, y_max] of the map, in the curve's coordinates.
+    pub extent: [f64; 4],
+    /// Pixels per side (a front end's default when absent).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub size: Option<usize>,
+}
+
+impl PointRegionInput {
+    /// The shape, for error messages.
+    pub const SHAPE: &'static str = r#"{"curve":{"points":[…],"alpha0":A,"alpha1":B},"index":I,"extent":[x_min,x_max,y_min,y_max],"size":N}"#;
+
+    /// Check the index and the extent (finite, non-empty).
+    pub fn check(&self) -> Result<(), ErrorBody> {
+        let count = self.curve.points().len();
+        if self.index >= count {
+            return Err(ErrorBody::invalid_input(format!(
+                "index {} names no control point: the curve has {count} (0 to {})",
+                self.index,
+                count - 1
+            )));
+        }
+        let [x0, x1, y0, y1] = self.extent;
+        if !(all_finite(self.extent) && x0 < x1 && y0 < y1) {
+            return Err(ErrorBody::invalid_input(
+                "extent must be [x_min, x_max, y_min, y_max], finite, with x_min < x_max and \
+                 y_min < y_max",
+            ));
+        }
+        Ok(())
+    }
+
+    /// The centre of pixel (`row`, `col`) of a `size`×`size` map of the extent; row 0 is
+    /// the top (y = y_max), column 0 the left (x = x_min).
+    pub fn pixel_center(&self, size: usize, row: usize, col: usize) -> Xy {
+        let [x0, x1, y0, y1] = self.extent;
+        let n = size as f64;
+        [
+            x0 + (col as f64 + 0.5) * (x1 - x0) / n,
+            y1 - (row as f64 + 0.5) * (y1 - y0) / n,
+        ]
+    }
+
+    /// One row of the map: `true` where the curve is drawable with the point moved to the
+    /// pixel's centre.
+    pub fn row(&self, size: usize, row: usize) -> Vec<bool> {
+        let mut curve = self.curve.clone();
+        (0..size)
+            .map(|col| {
+                let at = self.pixel_center(size, row, col);
+                match &mut curve {
+                    CurveInput::Segment(s) => s.points[self.index] = at,
+                    CurveInput::Compound(c) => c.points[self.index] = at,
+                }
+                curve.solve().is_ok()
+            })
+            .collect()
+    }
+
+    /// The report of the rows computed by [`PointRegionInput::row`].
+    pub fn report(&self, size: usize, drawable: Vec<Vec<bool>>) -> PointRegionReport {
+        let count: usize = drawable.iter().flatten().filter(|&&d| d).count();
+        PointRegionReport {
+            index: self.index,
+            size,
+            extent: self.extent,
+            drawable_fraction: count as f64 / (size * size).max(1) as f64,
+            drawable,
+        }
+    }
+}
+
+/// Where one control point may go ([`PointRegionInput`]): pixels whose centre gives a
+/// drawable curve.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PointRegionReport {
+    /// Which control point moves.
+    pub index: usize,
+    /// Pixels per side.
+    pub size: usize,
+    /// [x_min, x_max, y_min, y_max] of the map.
+    pub extent: [f64; 4],
+    /// The share of the map that is drawable.
+    pub drawable_fraction: f64,
+    /// Rows top (y = y_max) to bottom, columns left (x = x_min) to right.
+    pub drawable: Vec<Vec<bool>>,
+}
+
+// ---------------------------------------------------------------------------------------
+// Space curves (seed 003): `lac space`'s JSON and the editor's
+
+/// A 3-D point, `[x, y, z]`.
+pub type Xyz = [f64; 3];
+
+/// The `"note"` of a planar (coplanar-points) space result.
+pub const PLANAR_NOTE: &str = "the four control points are coplanar, so the planar \
+     log-aesthetic segment through the first point, the tangents' intersection and the last \
+     point is drawn (torsion 0)";
+
+/// A log-aesthetic space curve segment from four control points (seed 003 §4):
+/// `{"points":[[x,y,z]×4],"alpha":A,"beta":B,"omega":W,"type":1}` (`omega` 0 and `type` 1
+/// when absent).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SpaceInput {
+    /// P0 (start), P1 (on the start tangent), P2 (on the end tangent), P3 (end).
+    pub points: [Xyz; 4],
+    /// Slope of the logarithmic curvature graph.
+    pub alpha: f64,
+    /// Slope of the logarithmic torsion graph.
+    pub beta: f64,
+    /// Torsion parameter Ω ≥ 0 (0: constant torsion).
+    #[serde(default)]
+    pub omega: f64,
+    /// Torsion type: 1 (the radius of torsion grows along the standard form) or 2.
+    #[serde(rename = "type", default = "torsion_type_one")]
+    pub torsion_type: u8,
+}
+
+fn torsion_type_one() -> u8 {
+    1
+}
+
+impl SpaceInput {
+    /// The shape, for error messages.
+    pub const SHAPE: &'static str =
+        r#"{"points":[[x,y,z],[x,y,z],[x,y,z],[x,y,z]],"alpha":A,"beta":B,"omega":W,"type":1}"#;
+
+    /// Solve it.
+    pub fn solve(&self) -> Result<SpaceSegment, ErrorBody> {
+        let shape = SpaceShape {
+            alpha: self.alpha,
+            beta: self.beta,
+            omega: self.omega,
+            torsion: TorsionType::from_number(self.torsion_type)?,
+        };
+        Ok(SpaceSegment::from_control_points(
+            self.points.map(Vec3::from_array),
+            shape,
+        )?)
+    }
+}
+
+/// The standard form (seed 003 §3) with the Λ and ν the solver found, and the standard-form
+/// arc length `s_end` of the segment.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SpaceFormRow {
+    /// Slope of the logarithmic curvature graph.
+    pub alpha: f64,
+    /// Slope of the logarithmic torsion graph.
+    pub beta: f64,
+    /// Λ.
+    pub lambda: f64,
+    /// Ω.
+    pub omega: f64,
+    /// ν.
+    pub nu: f64,
+    /// The torsion type, 1 or 2.
+    #[serde(rename = "type")]
+    pub torsion_type: u8,
+    /// The standard-form arc length of the segment.
+    pub s_end: f64,
+}
+
+/// `caller = translation + scale · rotation · M · standard`, M = diag(1, 1, −1) if
+/// `mirror_z`; `reversed`: the standard form runs from the last point to the first.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct TransformRow {
+    /// Standard-form lengths to the caller's.
+    pub scale: f64,
+    /// A proper rotation, row-major.
+    pub rotation: [[f64; 3]; 3],
+    /// Where the standard form's origin lands.
+    pub translation: Xyz,
+    /// The standard form is mirrored in its xy plane first.
+    pub mirror_z: bool,
+    /// The standard form runs from the last control point to the first.
+    pub reversed: bool,
+}
+
+/// One sample of a space curve; with frames also the unit tangent, normal and binormal.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SpaceSampleRow {
+    /// Arc length from the first control point.
+    pub s: f64,
+    /// Position, x.
+    pub x: f64,
+    /// Position, y.
+    pub y: f64,
+    /// Position, z.
+    pub z: f64,
+    /// Curvature, ≥ 0.
+    pub kappa: f64,
+    /// Torsion, negative for a left-handed (mirrored) segment.
+    pub tau: f64,
+    /// Unit tangent.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub t: Option<Xyz>,
+    /// Unit principal normal.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub n: Option<Xyz>,
+    /// Unit binormal.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub b: Option<Xyz>,
+}
+
+impl SpaceSampleRow {
+    /// The row of `frame`, with its Frenet frame when `frames`.
+    pub fn new(frame: &Frame, frames: bool) -> Self {
+        let Vec3 { x, y, z } = frame.point;
+        SpaceSampleRow {
+            s: frame.s,
+            x,
+            y,
+            z,
+            kappa: frame.curvature,
+            tau: frame.torsion,
+            t: frames.then_some(frame.tangent.to_array()),
+            n: frames.then_some(frame.normal.to_array()),
+            b: frames.then_some(frame.binormal.to_array()),
+        }
+    }
+
+    fn is_finite(&self) -> bool {
+        all_finite([self.s, self.x, self.y, self.z, self.kappa, self.tau])
+            && [self.t, self.n, self.b]
+                .iter()
+                .flatten()
+                .all(|v| all_finite(*v))
+    }
+}
+
+/// The planar segment drawn for coplanar points, its control points in the caller's
+/// coordinates.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PlanarRow {
+    /// α of the planar segment.
+    pub alpha: f64,
+    /// Λ of the planar segment.
+    pub lambda: f64,
+    /// The first point, the tangents' intersection and the last point.
+    pub control_points: [Xyz; 3],
+}
+
+/// A solved space curve segment: `lac space --format json`. `planar_segment` and `note` only
+/// for coplanar points.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SpaceReport {
+    /// The solved standard form; `null` when planar.
+    pub standard_form: Option<SpaceFormRow>,
+    /// Standard form to the caller's coordinates; `null` when planar.
+    pub transform: Option<TransformRow>,
+    /// Arc length from the first to the last control point.
+    pub arc_length: f64,
+    /// Were the points coplanar (the planar segment drawn instead)?
+    pub planar: bool,
+    /// Samples equally spaced in arc length, first and last at the end points.
+    pub samples: Vec<SpaceSampleRow>,
+    /// The planar segment drawn for coplanar points.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub planar_segment: Option<PlanarRow>,
+    /// Why the result is planar.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub note: Option<String>,
+}
+
+impl SpaceReport {
+    /// The report of `segment` with `n` samples, with their Frenet frames when `frames`.
+    pub fn new(segment: &SpaceSegment, n: usize, frames: bool) -> Result<Self, ErrorBody> {
+        SpaceReport {
+            standard_form: segment
+                .standard_form()
+                .zip(segment.s_end())
+                .map(|(form, s_end)| SpaceFormRow {
+                    alpha: form.alpha(),
+                    beta: form.beta(),
+                    lambda: form.lambda(),
+                    omega: form.omega(),
+                    nu: form.nu(),
+                    torsion_type: form.torsion_type().number(),
+                    s_end,
+                }),
+            transform: segment.transform().map(|t| TransformRow {
+                scale: t.scale,
+                rotation: t.rotation,
+                translation: t.translation.to_array(),
+                mirror_z: t.mirror_z,
+                reversed: t.reversed,
+            }),
+            arc_length: segment.arc_length(),
+            planar: segment.is_planar(),
+            samples: segment
+                .sample(n)?
+                .iter()
+                .map(|f| SpaceSampleRow::new(f, frames))
+                .collect(),
+            planar_segment: segment.planar().zip(planar_control_points(segment)).map(
+                |(planar, points)| PlanarRow {
+                    alpha: planar.alpha(),
+                    lambda: planar.lambda(),
+                    control_points: points.map(Vec3::to_array),
+                },
+            ),
+            note: segment.is_planar().then(|| PLANAR_NOTE.to_string()),
+        }
+        .checked()
+    }
+}
+
+impl Report for SpaceReport {
+    fn is_finite(&self) -> bool {
+        self.standard_form
+            .as_ref()
+            .is_none_or(|f| all_finite([f.alpha, f.beta, f.lambda, f.omega, f.nu, f.s_end]))
+            && self.transform.as_ref().is_none_or(|t| {
+                t.scale.is_finite()
+                    && all_finite(t.rotation.iter().flatten().copied())
+                    && all_finite(t.translation)
+            })
+            && self.arc_length.is_finite()
+            && self.samples.iter().all(SpaceSampleRow::is_finite)
+            && self.planar_segment.as_ref().is_none_or(|p| {
+                all_finite([p.alpha, p.lambda])
+                    && all_finite(p.control_points.iter().flatten().copied())
+            })
+    }
+}
+
+/// The control points of the planar segment drawn for coplanar points, in the caller's
+/// coordinates: the planar segment lives in the plane with origin P0, x along P1 − P0 and y
+/// toward the chord ([`SpaceSegment::planar`]). `None` when the segment is not planar.
+pub fn planar_control_points(segment: &SpaceSegment) -> Option<[Vec3; 3]> {
+    let planar = segment.planar()?;
+    let [p0, p1, _, p3] = segment.control_points();
+    // Divided by the length rather than `Vec3::normalize`d (a product with its reciprocal),
+    // so that the printed digits stay those `lac space` has always printed.
+    let unit = |v: Vec3| v / v.length();
+    let e1 = unit(p1 - p0);
+    let chord = p3 - p0;
+    let e2 = unit(chord - chord.dot(e1) * e1);
+    Some(planar.control_points().map(|q| p0 + q.x * e1 + q.y * e2))
+}
+
+/// One point of a space curve's logarithmic curvature graph `(ln ρ, ln(ρ |ds/dρ|))` or
+/// torsion graph `(ln μ, ln(μ |ds/dμ|))`, at arc length `s`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct GraphRow {
+    /// Arc length from P0.
+    pub s: f64,
+    /// ln ρ (or ln μ).
+    pub x: f64,
+    /// ln(ρ |ds/dρ|) (or ln(μ |ds/dμ|)).
+    pub y: f64,
+}
+
+impl From<&GraphPoint> for GraphRow {
+    fn from(p: &GraphPoint) -> Self {
+        GraphRow {
+            s: p.s,
+            x: p.x,
+            y: p.y,
+        }
+    }
+}
+
+/// A space curve's two graphs: `{"curvature":[…],"torsion":[…]}`, straight lines of slopes α
+/// and β (empty when ρ, or μ, is constant, or the segment is planar for the torsion).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SpaceGraphsReport {
+    /// The logarithmic curvature graph.
+    pub curvature: Vec<GraphRow>,
+    /// The logarithmic torsion graph.
+    pub torsion: Vec<GraphRow>,
+}
+
+impl SpaceGraphsReport {
+    /// Both graphs of `segment` at `n` points equally spaced in arc length.
+    pub fn new(segment: &SpaceSegment, n: usize) -> Result<Self, ErrorBody> {
+        SpaceGraphsReport {
+            curvature: segment
+                .log_curvature_graph(n)?
+                .iter()
+                .map(GraphRow::from)
+                .collect(),
+            torsion: segment
+                .log_torsion_graph(n)?
+                .iter()
+                .map(GraphRow::from)
+                .collect(),
+        }
+        .checked()
+    }
+}
+
+impl Report for SpaceGraphsReport {
+    fn is_finite(&self) -> bool {
+        self.curvature
+            .iter()
+            .chain(&self.torsion)
+            .all(|p| all_finite([p.s, p.x, p.y]))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -843,5 +1392,67 @@ mod tests {
         let report = CompoundReport::new(&curve.solve().unwrap(), &curve, 9).unwrap();
         assert_eq!(report.samples.len(), 9);
         assert!(report.is_finite());
+    }
+
+    #[test]
+    fn the_plot_of_a_segment_fits_its_own_alpha() {
+        let input = SegmentInput {
+            points: [[0.0, 0.0], [1.0, 0.0], [1.6, 0.9]],
+            alpha: 0.5,
+        };
+        let report = LcgReport::new(&input.solve().unwrap().curvature_plot(65).unwrap());
+        assert_eq!(report.points.len(), 65);
+        let fit = report.fit.as_ref().unwrap();
+        assert!((fit.alpha - 0.5).abs() < 1e-9, "{}", fit.alpha);
+        assert!(report.is_finite());
+    }
+
+    #[test]
+    fn a_quasi_input_fits_within_its_tolerance() {
+        let input: QuasiInput = parse(
+            r#"{"points":[[0,0],[3,0],[4,1.5]],"alpha":-1,"tolerance":1e-5}"#,
+            QuasiInput::SHAPE,
+        )
+        .unwrap();
+        let (solved, quasi) = input.solve().unwrap();
+        assert!(quasi.max <= 1e-5);
+        let report = QuasiReport::new(&quasi, solved.curve().arc_length(), input.tolerance, false);
+        assert!(report.is_finite() && !report.pieces.is_empty());
+    }
+
+    #[test]
+    fn region_rows_are_the_library_rows_and_a_moved_middle_point_agrees() {
+        let input = RegionInput {
+            alpha: -1.0,
+            alpha1: None,
+            ratio: None,
+            size: None,
+        };
+        input.check().unwrap();
+        let rows: Vec<Vec<bool>> = (0..16).map(|r| input.row(16, r)).collect();
+        assert_eq!(rows[3], lac::region::row(-1.0, 16, 3));
+        let report = input.report(16, rows.clone());
+        assert!(report.drawable_fraction > 0.0 && report.drawable_fraction < 1.0);
+        // The same map as the region of point 1 of a segment from (-1,0) to (1,0).
+        let moved = PointRegionInput {
+            curve: CurveInput::Segment(SegmentInput {
+                points: [[-1.0, 0.0], [0.0, 0.5], [1.0, 0.0]],
+                alpha: -1.0,
+            }),
+            index: 1,
+            extent: [-1.0, 1.0, -1.0, 1.0],
+            size: Some(16),
+        };
+        moved.check().unwrap();
+        let moved_rows: Vec<Vec<bool>> = (0..16).map(|r| moved.row(16, r)).collect();
+        assert_eq!(moved_rows, rows);
+        let bad = RegionInput {
+            ratio: Some(1.0),
+            alpha1: Some(2.0),
+            ..input
+        };
+        assert_eq!(bad.check().unwrap_err().kind, "out_of_range");
+        let far = PointRegionInput { index: 3, ..moved };
+        assert!(far.check().unwrap_err().message.contains("index 3"));
     }
 }

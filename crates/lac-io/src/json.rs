@@ -1478,7 +1478,8 @@ fn plot_not_monotone(plot: &[CurvaturePoint]) -> Option<String> {
     let mut sign = None;
     for p in plot {
         let d = p.dkappa_ds * scale;
-        if !(d.abs() > PLOT_ZERO) {
+        // NaN counts as zero: it shows no direction.
+        if d.is_nan() || d.abs() <= PLOT_ZERO {
             continue;
         }
         match sign {
@@ -1497,7 +1498,7 @@ fn inflection(plot: &[CurvaturePoint]) -> Option<String> {
     let kmax = plot.iter().fold(0.0f64, |m, p| m.max(p.kappa.abs()));
     let mut sign = None;
     for p in plot {
-        if !(p.kappa.abs() > PLOT_ZERO * kmax) {
+        if p.kappa.is_nan() || p.kappa.abs() <= PLOT_ZERO * kmax {
             continue;
         }
         match sign {

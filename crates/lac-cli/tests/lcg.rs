@@ -257,7 +257,7 @@ fn bad_input_is_a_one_line_json_error() {
             2,
             "invalid_input",
         ),
-        (r#"{"pieces":[]}"#, &[], 2, "out_of_range"),
+        (r#"{"pieces":[]}"#, &[], 2, "invalid_input"),
         (
             r#"{"pieces":[{"points":[[0,0],[1,0],[1,1],[2,1]],"weights":[1,0,1,1]}]}"#,
             &[],

@@ -123,6 +123,15 @@ fn size_and_alpha_are_checked() {
         "non_finite",
     );
     assert_failure(&lac(&["region"]), 2, "usage");
+    // A slope no curve takes is said so, not drawn as an empty map.
+    for args in [
+        &["region", "--alpha", "1e308", "--size", "4"][..],
+        &[
+            "region", "--alpha0", "1", "--alpha1", "-2e6", "--ratio", "0.5", "--size", "4",
+        ],
+    ] {
+        assert_failure(&lac(args), 2, "out_of_range");
+    }
 }
 
 #[test]

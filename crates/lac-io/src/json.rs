@@ -1516,7 +1516,8 @@ fn inflection(plot: &[CurvaturePoint]) -> Option<String> {
 }
 
 /// Why the curvature of a chain of pieces with these verdicts is not monotone: a piece's is
-/// not, two pieces' run in opposite directions, or it jumps the wrong way at a joint.
+/// proven not to be, two pieces' are proven to run in opposite directions, or it jumps the
+/// wrong way at a joint.
 fn chain_not_monotone(pieces: &[RationalCubic], verdicts: &[MonotonicityReport]) -> Option<String> {
     let n = pieces.len();
     let way = |up: bool| if up { "increases" } else { "decreases" };
@@ -1548,6 +1549,10 @@ fn chain_not_monotone(pieces: &[RationalCubic], verdicts: &[MonotonicityReport])
                     return Some(why);
                 }
             }
+        }
+        // An unproven verdict is dκ/ds zero within rounding (a circular arc): no direction.
+        if !v.proven {
+            continue;
         }
         match v.verdict {
             Monotonicity::NotMonotone { t } => {

@@ -18,6 +18,7 @@ use crate::output::{refuse_binary_on_terminal, write_to};
 pub(crate) fn run(args: &RegionArgs, limits: Limits) -> Result<(), ErrorBody> {
     let input = input(args)?;
     input.check()?;
+    check_slopes(&input)?;
     let size = limits.size(args.size as usize)?;
     if args.format == RegionFormat::Png {
         refuse_binary_on_terminal(args.file.as_deref(), "PNG", "--format json")?;
@@ -64,4 +65,24 @@ fn input(args: &RegionArgs) -> Result<RegionInput, ErrorBody> {
             "a compound curve's map needs all of --alpha0, --alpha1 and --ratio",
         )),
     }
+}
+
+/// Slopes the library takes (|α| ≤ [`lac::MAX_ABS_ALPHA`]): beyond them every pixel would
+/// be "not drawable" for a reason the map does not show.
+fn check_slopes(input: &RegionInput) -> Result<(), ErrorBody> {
+    let named = match input.alpha1 {
+        None => vec![("alpha", input.alpha)],
+        Some(alpha1) => vec![("alpha0", input.alpha), ("alpha1", alpha1)],
+    };
+    for (name, value) in named {
+        if value.abs() > lac::MAX_ABS_ALPHA {
+            return Err(lac::Error::OutOfRange {
+                name,
+                value,
+                expected: "a slope with |alpha| <= 1e6, as every curve takes",
+            }
+            .into());
+        }
+    }
+    Ok(())
 }

@@ -196,7 +196,7 @@ pub(crate) fn render(report: &LcgReport, joints: &[f64], title: &str) -> String 
         Some(f) => (
             format!(
                 "α = {} (rms residual {:.2e})",
-                short(f.alpha),
+                slope(f.alpha),
                 f.rms_residual
             ),
             LINE,
@@ -260,7 +260,7 @@ pub(crate) fn render_space(report: &SpaceLcgReport, title: &str) -> String {
             Some(f) => (
                 format!(
                     "{name} = {} (rms residual {:.2e})",
-                    short(f.slope),
+                    slope(f.slope),
                     f.rms_residual
                 ),
                 LINE,
@@ -399,7 +399,7 @@ fn footnote(report: &LcgReport, graph_points: usize) -> Block {
             format!(
                 "Fitted line ln(ρ\u{a0}|ds/dρ|)\u{a0}=\u{a0}{}\u{a0}ln\u{a0}ρ\u{a0}{sign}\u{a0}{}, \
                  max residual {:.2e}, ln\u{a0}ρ from {} to {}.",
-                short(f.alpha),
+                slope(f.alpha),
                 short(f.intercept.abs()),
                 f.max_residual,
                 short(f.log_rho[0]),
@@ -415,7 +415,7 @@ fn footnote(report: &LcgReport, graph_points: usize) -> Block {
             Some(f) => format!(
                 "piece\u{a0}{} α\u{a0}=\u{a0}{} (s\u{a0}{}\u{a0}to\u{a0}{})",
                 i + 1,
-                short(f.alpha),
+                slope(f.alpha),
                 short(p.s[0]),
                 short(p.s[1])
             ),
@@ -432,6 +432,12 @@ fn footnote(report: &LcgReport, graph_points: usize) -> Block {
         block = block.prose(NOTE, format!("{}.", capitalised(note)));
     }
     block
+}
+
+/// A fitted slope for reading: to ten decimals (a straight graph's slope of 1e-30 is the
+/// rounding of 0), with six significant digits at most.
+fn slope(x: f64) -> String {
+    short((x * 1e10).round() / 1e10)
 }
 
 /// `text` with its first letter in upper case.

@@ -11,9 +11,9 @@ PY := $(VENV)/bin/python
 CARGO_TEST := cargo test --locked --workspace
 LAC_BIN := $(or $(CARGO_TARGET_DIR),$(CURDIR)/target)/debug/lac
 
-.PHONY: test rust python docs fixtures bench example
+.PHONY: test rust python e2e docs fixtures bench example fuzz
 
-test: rust python
+test: rust python e2e
 
 rust:
 	cargo fmt --all -- --check
@@ -25,6 +25,14 @@ python: $(VENV)/.installed
 	$(CARGO_TEST) --no-run
 	LAC_BIN=$(LAC_BIN) $(PY) -m pytest -q tools/reference
 
+# The editor in a real browser: Debian's chromium (installed when missing; CI runs as root),
+# playwright-core from npm, the same `lac` binary serving on a free port of 127.0.0.1.
+e2e:
+	test -x /usr/bin/chromium || (apt-get update && apt-get install -y chromium)
+	cd crates/lac-serve/e2e && npm ci --no-audit --no-fund
+	$(CARGO_TEST) --no-run
+	cd crates/lac-serve/e2e && LAC_BIN=$(LAC_BIN) node --test --test-concurrency=1
+
 $(VENV)/.installed: tools/reference/requirements.txt
 	python3 -m venv $(VENV)
 	$(VENV)/bin/pip install --quiet --disable-pip-version-check -r tools/reference/requirements.txt
@@ -34,6 +42,14 @@ $(VENV)/.installed: tools/reference/requirements.txt
 # `lac`; `make test` fails while a committed figure differs from what its command draws.
 docs:
 	LAC_WRITE_FIGURES=1 $(CARGO_TEST) --test readme_figures -- --nocapture
+
+# The seeded random and adversarial driver, a million inputs per entry point (make test runs
+# a hundred thousand); FUZZ_SEED picks another stream. Exit code 1 on any panic, invariant
+# violation or call over a second; `lac-fuzz --replay FILE` reruns printed inputs.
+FUZZ_COUNT ?= 1000000
+FUZZ_SEED ?= 1
+fuzz:
+	cargo run --locked --release -p lac-fuzz -- --count $(FUZZ_COUNT) --seed $(FUZZ_SEED)
 
 # Regenerate the 40-digit reference fixtures (about 15 minutes; the output is committed).
 fixtures: $(VENV)/.installed

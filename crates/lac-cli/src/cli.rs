@@ -132,6 +132,10 @@ pub(crate) enum Command {
                                 lac space --batch FILE|- [--samples N] [--frames] [-o FILE|-]"
     )]
     Space(SpaceArgs),
+    /// Start the interactive editor: a local web server with the editor's page (embedded,
+    /// works offline) and its JSON API; prints the URL and serves until interrupted
+    #[command(override_usage = "lac serve [--port P] [--open] [--host ADDR --allow-remote]")]
+    Serve(ServeArgs),
 }
 
 /// Arguments of `lac segment`.
@@ -575,4 +579,24 @@ pub(crate) enum LcgFormat {
     Svg,
     /// The same picture as svg, rendered
     Png,
+}
+
+/// Arguments of `lac serve`.
+#[derive(Debug, Args)]
+pub(crate) struct ServeArgs {
+    /// The port to listen on (0: any free port; the URL printed says which)
+    #[arg(long, value_name = "P", default_value_t = 8787)]
+    pub(crate) port: u16,
+
+    /// Open the editor in the default web browser
+    #[arg(long)]
+    pub(crate) open: bool,
+
+    /// The address to listen on; anything but a loopback address needs --allow-remote
+    #[arg(long, value_name = "ADDR", default_value = "127.0.0.1")]
+    pub(crate) host: std::net::IpAddr,
+
+    /// Allow a non-loopback --host: anyone who can reach the port can use the editor's API
+    #[arg(long)]
+    pub(crate) allow_remote: bool,
 }

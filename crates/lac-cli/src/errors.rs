@@ -39,7 +39,7 @@ pub(crate) fn from_clap(err: &clap::Error) -> ErrorBody {
     if err.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
         return usage(
             "no subcommand given: use 'lac segment', 'lac compound', 'lac region', 'lac quasi', \
-             'lac monotone', 'lac lcg' or 'lac space'; see 'lac --help'",
+             'lac monotone', 'lac lcg', 'lac space' or 'lac serve'; see 'lac --help'",
         );
     }
     let text = err.render().to_string();

@@ -33,6 +33,7 @@ mod quasi;
 mod raster;
 mod region;
 mod segment;
+mod serve;
 mod space;
 mod svg;
 
@@ -71,6 +72,7 @@ fn main() -> ExitCode {
         Command::Monotone(args) => monotone::run(args, limits),
         Command::Lcg(args) => lcg::run(args, limits),
         Command::Space(args) => space::run(args, limits),
+        Command::Serve(args) => serve::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -17,6 +17,9 @@ pub mod bounds {
     pub const TANGENT: f64 = 1e-9;
     /// Curvature at a joint: relative jump.
     pub const JOINT_CURVATURE: f64 = 1e-9;
+    /// Curvature at a join of Bézier pieces: jump relative to the curve's largest curvature
+    /// (plus what rounding of the control points' absolute coordinates allows).
+    pub const QUASI_JOINT_CURVATURE: f64 = 1e-6;
     /// Curvature along a curve may step against its monotone direction by this (relative).
     pub const MONOTONE_SLACK: f64 = 1e-9;
 }
@@ -292,10 +295,12 @@ fn check_curve(
             }
         }
     }
-    for p in curve.evolute(9).map_err(|e| e.to_string())? {
+    // These may refuse with a typed error (dκ/ds beyond double range for tiny curves), but
+    // what they return must be finite.
+    for p in curve.evolute(9).unwrap_or_default() {
         finite("evolute", &[p.x, p.y])?;
     }
-    for p in curve.curvature_plot(9).map_err(|e| e.to_string())? {
+    for p in curve.curvature_plot(9).unwrap_or_default() {
         finite("curvature plot", &[p.s, p.kappa, p.dkappa_ds])?;
     }
     Ok(())
@@ -321,7 +326,7 @@ fn check_samples(samples: &[Sample], tol: f64, len: f64) -> Result<(), String> {
             return Err("samples not ascending in arc length".to_string());
         }
         let d = q.point - p.point;
-        let step = d.hypot();
+        let step = dist(q.point, p.point);
         polyline += step;
         // Skip chords that rounding dominates.
         if step > 1e6 * tol {
@@ -445,14 +450,20 @@ fn check_quasi(
             (last - pts[2]).hypot()
         ));
     }
+    // Curvature at a join is computed from control points rounded in absolute coordinates:
+    // its error grows with the coordinates' magnitude over the piece's size.
+    let kmax = seg.curvature_start().abs().max(seg.curvature_end().abs());
+    let magnitude = rounding(pts) / 64.0;
     for w in quasi.pieces.windows(2) {
         let (a, b) = (w[0].curve, w[1].curve);
         let (pa, pb) = (a.points()[3], b.points()[0]);
         if (pa - pb).hypot() > 64.0 * tol {
             return Err(format!("pieces {:e} apart", (pa - pb).hypot()));
         }
+        let size = dist(a.points()[0], a.points()[3]).min(dist(b.points()[0], b.points()[3]));
         let (ka, kb) = (a.signed_curvature(1.0), b.signed_curvature(0.0));
-        if (ka - kb).abs() > 1e-6 * ka.abs().max(kb.abs()) {
+        let allowed = (bounds::QUASI_JOINT_CURVATURE + 1e3 * magnitude / size) * kmax;
+        if (ka - kb).abs() > allowed {
             return Err(format!("curvature jumps between pieces: {ka:e} to {kb:e}"));
         }
     }
@@ -471,8 +482,8 @@ fn check_quasi(
         let m = p.monotonicity;
         let faithful = match m.verdict {
             Monotonicity::Constant => true,
-            Monotonicity::Increasing => m.proven && (constant || k1.abs() >= k0.abs()),
-            Monotonicity::Decreasing => m.proven && (constant || k1.abs() <= k0.abs()),
+            Monotonicity::Increasing => m.proven && (constant || k1 >= k0),
+            Monotonicity::Decreasing => m.proven && (constant || k1 <= k0),
             Monotonicity::NotMonotone { .. } => constant,
         };
         if !faithful {
@@ -485,13 +496,23 @@ fn check_quasi(
     let Ok(poly) = seg.sample_adaptive(0.1 * allowed) else {
         return Ok(());
     };
-    if poly.len() > 2_000_000 {
+    if poly.len() > 20_000 {
         return Ok(());
     }
+    // Each piece is compared with the part of the polyline over its turning range (and a
+    // margin), found by bisection on the samples' turning, which ascends.
+    let theta0 = poly[0].theta;
+    let turned: Vec<f64> = poly.iter().map(|s| (s.theta - theta0).abs()).collect();
     for p in &quasi.pieces {
+        let margin = 0.5 * (p.turning.1 - p.turning.0) + 1e-9;
+        let lo = turned
+            .partition_point(|&t| t < p.turning.0 - margin)
+            .saturating_sub(1);
+        let hi = (turned.partition_point(|&t| t <= p.turning.1 + margin) + 1).min(poly.len());
+        let part = &poly[lo..hi.max(lo + 2).min(poly.len())];
         for i in 0..=32 {
             let x = p.curve.eval(i as f64 / 32.0);
-            let d = poly
+            let d = part
                 .windows(2)
                 .map(|w| distance_to_segment(x, w[0].point, w[1].point))
                 .fold(f64::INFINITY, f64::min);

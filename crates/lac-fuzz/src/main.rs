@@ -1,7 +1,8 @@
 //! `lac-fuzz [--count N] [--seed S] [ENTRY…]`: run the seeded random driver over the entry
 //! points (all by default) and print each one's figures; exit code 1 if any input panicked,
 //! broke an invariant or took over a second. `make fuzz` runs it with a million inputs per
-//! entry point.
+//! entry point. `lac-fuzz --replay FILE` runs the inputs of a file (one JSON input a line,
+//! as printed) and prints each outcome and time.
 
 use std::io::Write;
 use std::process::ExitCode;
@@ -25,6 +26,32 @@ fn main() -> ExitCode {
         match arg.as_str() {
             "--count" => count = value(&mut args),
             "--seed" => seed = value(&mut args),
+            "--replay" => {
+                // Each kept input of a file, with its outcome and time.
+                let path = args.next().unwrap_or_default();
+                let text = std::fs::read_to_string(&path).unwrap_or_else(|e| {
+                    eprintln!("cannot read {path}: {e}");
+                    std::process::exit(2)
+                });
+                let mut clean = true;
+                for line in text.lines().filter(|l| l.starts_with('{')) {
+                    let input: lac_fuzz::Input = match serde_json::from_str(line) {
+                        Ok(i) => i,
+                        Err(e) => {
+                            eprintln!("unreadable input ({e}): {line}");
+                            return ExitCode::from(2);
+                        }
+                    };
+                    let (outcome, elapsed) = lac_fuzz::run(&input);
+                    println!("{:>10.3} ms  {outcome:?}", elapsed.as_secs_f64() * 1e3);
+                    clean &= matches!(outcome, lac_fuzz::Outcome::Ok | lac_fuzz::Outcome::Refused);
+                }
+                return if clean {
+                    ExitCode::SUCCESS
+                } else {
+                    ExitCode::from(1)
+                };
+            }
             name => match EntryPoint::from_name(name) {
                 Some(e) => entries.push(e),
                 None => {

@@ -87,7 +87,9 @@ impl ErrorBody {
     /// How a front end should treat it.
     pub fn class(&self) -> ErrorClass {
         match self.kind.as_str() {
-            "not_drawable" | "fit_failed" | "tolerance_not_met" => ErrorClass::Undrawable,
+            "not_drawable" | "fit_failed" | "tolerance_not_met" | "too_many_pieces" => {
+                ErrorClass::Undrawable
+            }
             "io" => ErrorClass::Io,
             "internal" | "numerical_failure" => ErrorClass::Internal,
             _ => ErrorClass::Invalid,
@@ -1941,6 +1943,7 @@ mod tests {
         let far = PointRegionInput { index: 3, ..moved };
         assert!(far.check().unwrap_err().message.contains("index 3"));
     }
+
     #[test]
     fn lcg_reports_fit_each_piece_and_refuse_a_line_when_the_curvature_is_not_monotone() {
         let compound = CompoundInput {

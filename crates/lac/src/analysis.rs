@@ -103,12 +103,25 @@ pub fn curvature_plot(pieces: &[RationalCubic], per_piece: usize) -> Result<Vec<
             let t = i as f64 / (per_piece - 1) as f64;
             s += arc_length_gauss8(piece, prev_t, t);
             prev_t = t;
-            out.push(CurvaturePoint {
+            let point = CurvaturePoint {
                 s,
                 point: piece.eval(t),
                 kappa: piece.signed_curvature(t),
                 dkappa_ds: piece.curvature_derivative(t),
-            });
+            };
+            let values = [
+                s,
+                point.point.x,
+                point.point.y,
+                point.kappa,
+                point.dkappa_ds,
+            ];
+            if !values.iter().all(|v| v.is_finite()) {
+                // A cusp (zero speed: a repeated control point, or a loop's tip) has no
+                // curvature; an overflow is beyond double range. Either way, no plot.
+                return Err(Error::CurvatureUndefined { piece: k, t });
+            }
+            out.push(point);
         }
     }
     Ok(out)

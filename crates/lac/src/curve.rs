@@ -156,8 +156,8 @@ pub trait Curve {
             return Err(Error::OutOfRange {
                 name: "accuracy",
                 value: accuracy,
-                expected: "an accuracy reachable with at most 1000000 samples (about \
-                           arc_length * turning / 8e12 or more)",
+                expected: "an accuracy reachable with at most 50000 samples (about \
+                           arc_length * turning / 2e10 or more)",
             });
         }
         let mut out: Vec<Sample> = Vec::new();
@@ -194,10 +194,18 @@ pub trait Curve {
         let at: Vec<f64> = (0..n)
             .map(|i| if i == n - 1 { len } else { i as f64 * step })
             .collect();
-        Ok(by_piece(pieces, &at)?
+        let plot: Vec<CurvaturePoint> = by_piece(pieces, &at)?
             .into_iter()
             .map(|(i, s)| pieces[i].curvature_point(&s))
-            .collect())
+            .collect();
+        // dκ/ds scales as 1/length²: for a curve of size 1e-155 it exceeds double range.
+        if plot.iter().all(|p| p.dkappa_ds.is_finite()) {
+            Ok(plot)
+        } else {
+            Err(Error::Unrepresentable {
+                what: "dκ/ds (it scales as 1/length²)",
+            })
+        }
     }
 
     /// One rational cubic with the curve's ends, end tangents and end curvatures, closest

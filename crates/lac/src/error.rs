@@ -92,6 +92,41 @@ pub enum Error {
         /// The smallest deviation reached for the piece that failed, relative.
         reached: f64,
     },
+    /// The curvature of a Bézier piece is undefined (or beyond double range) at a parameter:
+    /// its speed vanishes there (a repeated control point, a cusp).
+    #[error(
+        "the curvature of piece {piece} is undefined at t = {t} (the curve stops there: a \
+         repeated control point or a cusp), or beyond the range of double precision; move \
+         the control points apart"
+    )]
+    CurvatureUndefined {
+        /// The piece, from 0.
+        piece: usize,
+        /// The parameter.
+        t: f64,
+    },
+    /// A quantity of a valid curve is beyond the range of double precision (the curve is
+    /// too small or too large for it): scale the control points.
+    #[error(
+        "the {what} of this curve is beyond the range of double precision (the curve is too \
+         small or too large for it); scale the control points toward size 1"
+    )]
+    Unrepresentable {
+        /// What could not be represented.
+        what: &'static str,
+    },
+    /// A chain within the tolerance would need more than [`MAX_PIECES`](crate::MAX_PIECES)
+    /// pieces.
+    #[error(
+        "a chain of cubics within the tolerance {tolerance:e} (relative to the arc length) \
+         would need more than {max_pieces} pieces; use a larger tolerance"
+    )]
+    TooManyPieces {
+        /// The requested maximum deviation, relative to the arc length.
+        tolerance: f64,
+        /// The most pieces a chain may have.
+        max_pieces: usize,
+    },
     /// A computation that should succeed for a solved curve did not (an overflow, or a
     /// bound of the family reached through rounding). This is a defect: please report the
     /// input that caused it.
@@ -128,6 +163,12 @@ pub enum ErrorKind {
     FitFailed,
     /// [`Error::ToleranceNotMet`].
     ToleranceNotMet,
+    /// [`Error::TooManyPieces`].
+    TooManyPieces,
+    /// [`Error::CurvatureUndefined`].
+    CurvatureUndefined,
+    /// [`Error::Unrepresentable`].
+    Unrepresentable,
     /// [`Error::NumericalFailure`].
     NumericalFailure,
 }
@@ -167,6 +208,9 @@ impl Error {
             Error::NotDrawable(_) => ErrorKind::NotDrawable,
             Error::FitFailed => ErrorKind::FitFailed,
             Error::ToleranceNotMet { .. } => ErrorKind::ToleranceNotMet,
+            Error::TooManyPieces { .. } => ErrorKind::TooManyPieces,
+            Error::CurvatureUndefined { .. } => ErrorKind::CurvatureUndefined,
+            Error::Unrepresentable { .. } => ErrorKind::Unrepresentable,
             Error::NumericalFailure { .. } => ErrorKind::NumericalFailure,
         }
     }

@@ -90,7 +90,7 @@ pub use curve::{Curve, HIDDEN_SHARE, HIDDEN_TURNING};
 pub use error::{Error, ErrorKind, NotDrawable, Result};
 pub use lcg::LcgLine;
 pub use monotone::{Monotonicity, MonotonicityReport};
-pub use quasi::{QuasiCurve, QuasiPiece};
+pub use quasi::{QuasiCurve, QuasiPiece, MAX_PIECES};
 pub use segment::{Sample, Segment, SegmentDerivative, MAX_ABS_ALPHA, MAX_ADAPTIVE_SAMPLES};
 pub use space::{
     BoundBy, EndBehaviour, RadiusCell, RadiusLimit, RatioLimit, SeedRow, SpaceClassification,

@@ -60,7 +60,6 @@ pub(crate) fn minus_one(x: f64) -> (f64, f64) {
 
 /// Why [`find_root`] gave no root.
 #[derive(Clone, Copy, Debug, PartialEq)]
-#[allow(dead_code)]
 pub(crate) enum RootFailure {
     /// f has the same sign at both ends of the bracket (or is NaN there).
     NotBracketed,
@@ -83,7 +82,6 @@ pub(crate) enum RootFailure {
 /// iteration never leaves it; it stops when f(x) = 0, when the bracket is narrower than
 /// `x_tol` (absolute) or a few ulps, or when a Newton step is below `x_tol`. After
 /// `max_iter` evaluations it reports [`RootFailure::NotConverged`] rather than a guess.
-#[allow(dead_code)] // Callers move onto it one module at a time.
 pub(crate) fn find_root<F>(
     mut f: F,
     (a, fa): (f64, f64),

@@ -8,8 +8,9 @@ use super::{Kind, QuasiPiece, TurningCurve};
 use crate::error::{Error, Result};
 use crate::monotone::Monotonicity;
 
-/// Most pieces a tolerance may ask for.
-const MAX_PIECES: usize = 100_000;
+/// Most pieces a tolerance may ask for: about a second of work at most, and far beyond
+/// what a CAD system wants of one curve.
+pub const MAX_PIECES: usize = 1000;
 
 /// Is this piece's monotonicity the curve's, proven (or constant within rounding where the
 /// curve's curvature hardly changes over the piece)?
@@ -39,10 +40,17 @@ pub(super) fn greedy(
     let mut start = 0.0;
     let mut width = total;
     while start < total {
-        if out.len() >= MAX_PIECES {
-            return Err(Error::ToleranceNotMet {
+        // Stop as soon as the pieces so far say the chain would be too long: the turning
+        // left, at the average turning per piece so far.
+        let projected = if start > 0.0 {
+            out.len() as f64 * total / start
+        } else {
+            0.0
+        };
+        if out.len() >= MAX_PIECES || projected > 2.0 * MAX_PIECES as f64 {
+            return Err(Error::TooManyPieces {
                 tolerance: tol / curve.length(),
-                reached: f64::INFINITY,
+                max_pieces: MAX_PIECES,
             });
         }
         let remaining = total - start;

@@ -101,6 +101,10 @@ pub(super) struct Span {
     pub(super) origin: Point,
     /// (cos, sin) of the start tangent direction in the caller's frame.
     pub(super) rot: Vec2,
+    /// Caller's lengths per local length: a power of two near the span's chord, so that the
+    /// fit works at size ~1 (exactly) whatever the caller's scale — squared deviations of a
+    /// curve of size 1e-157 would otherwise be subnormal: slow and inexact.
+    pub(super) scale: f64,
     pub(super) mirror: bool,
     pub(super) phi_a: f64,
     pub(super) phi_b: f64,
@@ -142,15 +146,23 @@ impl Span {
         let samples = curve.at_turning(&phi)?;
         let (a, b) = (samples[0], samples[samples.len() - 1]);
         let mirror = !curve.turns_left();
+        let chord = b.point - a.point;
+        let size = chord.x.abs().max(chord.y.abs());
+        let scale = if size > 0.0 && size.is_finite() {
+            2f64.powi(size.log2().floor() as i32)
+        } else {
+            1.0
+        };
         let mut span = Span {
             origin: a.point,
             rot: Vec2::from_angle(a.theta),
+            scale,
             mirror,
             phi_a,
             phi_b,
             turning,
             end: Vec2::ZERO,
-            kappa: [a.kappa.abs(), b.kappa.abs()],
+            kappa: [a.kappa.abs() * scale, b.kappa.abs() * scale],
             signed_kappa: [a.kappa, b.kappa],
             nodes: Vec::with_capacity(2 * GAUSS_16.len()),
         };
@@ -177,7 +189,7 @@ impl Span {
     }
 
     pub(super) fn local(&self, p: Point) -> Vec2 {
-        let d = p - self.origin;
+        let d = (p - self.origin) / self.scale;
         let (c, s) = (self.rot.x, self.rot.y);
         let v = Vec2::new(c * d.x + s * d.y, -s * d.x + c * d.y);
         if self.mirror {
@@ -188,7 +200,7 @@ impl Span {
     }
 
     fn caller(&self, v: Vec2) -> Point {
-        let v = if self.mirror { Vec2::new(v.x, -v.y) } else { v };
+        let v = if self.mirror { Vec2::new(v.x, -v.y) } else { v } * self.scale;
         let (c, s) = (self.rot.x, self.rot.y);
         self.origin + Vec2::new(c * v.x - s * v.y, s * v.x + c * v.y)
     }
@@ -369,8 +381,10 @@ impl Span {
     /// The piece for local homogeneous control points `q`, with its deviation and verdict.
     fn trial(&self, curve: &impl TurningCurve, q: &[Hom; 4]) -> Result<Trial> {
         let cand = Candidate::new(*q);
+        // Both in the caller's units: the local frame is scaled by `scale`.
         let (integral, _) = self.integral(&cand).ok_or_else(unfittable)?;
-        let max_deviation = self.max_deviation(curve, &cand)?;
+        let integral = integral * self.scale * self.scale;
+        let max_deviation = self.max_deviation(curve, &cand)? * self.scale;
         let curve_q = self.to_caller(q)?;
         let monotonicity = curve_q.curvature_monotonicity()?;
         Ok(Trial {

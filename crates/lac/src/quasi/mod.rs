@@ -9,6 +9,7 @@
 //! * `chain.rs`: as few pieces as a tolerance allows, joined G2.
 
 mod chain;
+pub use chain::MAX_PIECES;
 mod deviation;
 mod fit;
 mod hermite;

@@ -48,8 +48,9 @@ impl Sample {
 /// Largest number of samples any sampling call returns.
 const MAX_SAMPLES: usize = 10_000_000;
 
-/// Most samples adaptive sampling may need (see `Curve::sample_adaptive`).
-pub const MAX_ADAPTIVE_SAMPLES: usize = 1_000_000;
+/// Most samples adaptive sampling may need (see `Curve::sample_adaptive`): about 0.2 s of
+/// work on one core.
+pub const MAX_ADAPTIVE_SAMPLES: usize = 50_000;
 
 impl Segment {
     /// Samples at the given ascending arc lengths within the segment (caller's units,
@@ -126,7 +127,7 @@ impl Segment {
                         return Err(Error::OutOfRange {
                             name: "accuracy",
                             value: accuracy,
-                            expected: "an accuracy reachable with at most 1000000 samples",
+                            expected: "an accuracy reachable with at most 50000 samples",
                         });
                     }
                     stack.push((st, start_z + z));

@@ -1,0 +1,47 @@
+//! `lac serve`: the interactive editor (the `lac-serve` crate) on a local port.
+
+use std::net::SocketAddr;
+use std::process::{Command, Stdio};
+
+use crate::cli::ServeArgs;
+use lac_io::json::ErrorBody;
+
+/// Run `lac serve`: bind, print the URL (and open it with `--open`), serve until
+/// interrupted.
+pub(crate) fn run(args: &ServeArgs) -> Result<(), ErrorBody> {
+    let addr = SocketAddr::new(args.host, args.port);
+    lac_serve::run(
+        addr,
+        args.allow_remote,
+        lac_serve::Limits::default(),
+        |bound| {
+            let url = format!("http://{bound}/");
+            println!("lac editor: {url}  (Ctrl-C stops it)");
+            if args.open {
+                if let Err(err) = open_browser(&url) {
+                    eprintln!("could not open a browser ({err}); open {url} yourself");
+                }
+            }
+        },
+    )
+}
+
+/// Ask the desktop to open `url`, without waiting for the browser.
+fn open_browser(url: &str) -> std::io::Result<()> {
+    let mut command = if cfg!(target_os = "macos") {
+        Command::new("open")
+    } else if cfg!(target_os = "windows") {
+        let mut c = Command::new("cmd");
+        c.args(["/C", "start", ""]);
+        c
+    } else {
+        Command::new("xdg-open")
+    };
+    command
+        .arg(url)
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .map(|_| ())
+}

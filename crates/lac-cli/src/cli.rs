@@ -1,24 +1,36 @@
 //! The command-line grammar (clap derive). Help texts here are what `lac --help` shows.
+//!
+//! The same flag means the same thing in every subcommand: `--points` (control points
+//! "x,y" or "x,y,z" separated by spaces or semicolons), `--alpha` (a segment's slope),
+//! `--alpha0`/`--alpha1`/`--ratio` (a compound curve's), `--samples` (points equally spaced
+//! in arc length), `--tolerance` (relative to the arc length), `--format`, `-o/--output`
+//! (a file, "-" for standard output) and `--batch` (JSON lines in, JSON lines out).
 
 use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
-
-use crate::failure::Failure;
 
 /// Log-aesthetic curves: segments from three control points, compound-rhythm curves of two
 /// pieces, drawable regions, their cubic Bézier replacements, curvature analysis, and space
 /// curve segments from four control points.
 ///
 /// Errors go to standard error as one line of JSON, {"error":{"kind":…,"message":…}}, with
-/// exit code 2 for invalid input, 3 when the points and slopes admit no curve (or no Bézier
-/// fit meets the request), 1 for I/O.
+/// exit code 2 for invalid input (a usage error, a bad number, a limit), 3 when the input
+/// admits no curve (or no Bézier fit meets the request), 1 for I/O, 70 for a defect of lac
+/// (please report it). Work is limited so that one command needs at most about 1 GB and a
+/// few seconds: --samples ≤ 1,000,000, region --size ≤ 2048, batch lines ≤ 1 MiB, input
+/// documents ≤ 64 MiB; --allow-large raises these to 10,000,000, 8192, 64 MiB and 1 GiB.
 #[derive(Debug, Parser)]
 #[command(name = "lac", version, max_term_width = 100)]
 pub(crate) struct Cli {
     /// What to do.
     #[command(subcommand)]
     pub(crate) command: Command,
+
+    /// Raise the work limits (--samples to 10,000,000, region --size to 8192, batch lines
+    /// to 64 MiB, input documents to 1 GiB): a command may then need several GB and minutes
+    #[arg(long, global = true)]
+    pub(crate) allow_large: bool,
 }
 
 /// The subcommands.
@@ -26,8 +38,9 @@ pub(crate) struct Cli {
 pub(crate) enum Command {
     /// Solve the segment for three control points and alpha; print samples as JSON, CSV or SVG
     #[command(
-        override_usage = "lac segment --points \"x0,y0 x1,y1 x2,y2\" --alpha A [OPTIONS]\n       \
-                                lac segment --batch FILE.jsonl [--samples N] [-o FILE]"
+        override_usage = "lac segment --points \"x0,y0 x1,y1 x2,y2\" --alpha A [--samples N] \
+                                [--format json|csv|svg] [-o FILE|-] [--comb] [--evolute]\n       \
+                                lac segment --batch FILE|- [--samples N] [-o FILE|-]"
     )]
     Segment(SegmentArgs),
     /// Solve a compound-rhythm curve (two pieces, slopes alpha0 then alpha1, joined with G3
@@ -37,19 +50,20 @@ pub(crate) enum Command {
                                 [OPTIONS]\n       \
                                 lac compound --points \"x0,y0 x1,y1 x2,y2 x3,y3\" --alpha0 A --alpha1 B \
                                 [OPTIONS]\n       \
-                                lac compound --batch FILE.jsonl [--samples N] [-o FILE]"
+                                lac compound --batch FILE|- [--samples N] [-o FILE|-]"
     )]
     Compound(CompoundArgs),
     /// Map where the middle control point gives a segment (seed 000 Fig. 9), or a compound
     /// curve, as PNG or JSON
     #[command(
-        override_usage = "lac region --alpha A [--size PIXELS] [--format png|json] [-o FILE]\n       \
-                                lac region --alpha A --alpha1 B --ratio R [OPTIONS]"
+        override_usage = "lac region --alpha A [--size PIXELS] [--format png|json] [-o FILE|-]\n       \
+                                lac region --alpha0 A --alpha1 B --ratio R [--size PIXELS] \
+                                [--format png|json] [-o FILE|-]"
     )]
     Region(RegionArgs),
     /// Replace a segment or compound curve by rational (or plain) cubic Bézier pieces with its
     /// end points, tangents and curvatures (seed 001): one piece, or as many as a tolerance
-    /// needs; print them as JSON or draw them over the curve
+    /// needs; print them as JSON or CSV or draw them over the curve
     ///
     /// Each piece has its control points and weights, its curvature verdict ("monotone", with
     /// "proven" true when it is a proof, and "t" where dκ/ds changes sign if not monotone), the
@@ -58,51 +72,64 @@ pub(crate) enum Command {
     /// length.
     #[command(
         override_usage = "lac quasi --points \"x0,y0 x1,y1 x2,y2\" --alpha A [--tolerance T [--cubic]] \
-                                [--format json|svg] [-o FILE]\n       \
+                                [--format json|csv|svg] [-o FILE|-]\n       \
                                 lac quasi --points \"x0,y0 x1,y1 x2,y2\" --alpha0 A --alpha1 B --ratio R \
                                 [OPTIONS]\n       \
                                 lac quasi --points \"x0,y0 x1,y1 x2,y2 x3,y3\" --alpha0 A --alpha1 B \
-                                [OPTIONS]"
+                                [OPTIONS]\n       \
+                                lac quasi --batch FILE|- [-o FILE|-]"
     )]
     Quasi(QuasiArgs),
     /// Decide, with a proof, whether the curvature of a (rational) cubic Bézier curve is
-    /// monotone
+    /// monotone: of one curve, or of every piece that lac quasi prints
     ///
     /// Prints one line, {"verdict":"increasing"|"decreasing"|"constant"|"not_monotone",
-    /// "proven":true|false}, with "t", a parameter where dκ/ds changes sign, when not monotone.
-    /// "proven" is false where dκ/ds is zero within rounding (always for a circular arc).
+    /// "proven":true|false}, with "t", a parameter where dκ/ds changes sign, when not monotone;
+    /// for a chain of pieces ({"pieces":[…]}, as lac quasi prints) {"pieces":[{"verdict":…,
+    /// "proven":…},…]}, a verdict for each piece. "proven" is false where dκ/ds is zero within
+    /// rounding (always for a circular arc).
     #[command(
-        override_usage = "lac monotone --points \"x0,y0 x1,y1 x2,y2 x3,y3\" [--weights \"w0,w1,w2,w3\"]"
+        override_usage = "lac monotone --points \"x0,y0 x1,y1 x2,y2 x3,y3\" [--weights \"w0,w1,w2,w3\"] \
+                                [-o FILE|-]\n       \
+                                lac monotone [FILE|-] [-o FILE|-]        (e.g. lac quasi … | lac monotone)\n       \
+                                lac monotone --batch FILE|- [-o FILE|-]"
     )]
     Monotone(MonotoneArgs),
     /// Curvature plot and logarithmic curvature graph, with its fitted slope alpha, of Bézier
-    /// pieces (lac quasi output) or of a lac segment or lac compound result
+    /// pieces (lac quasi output) or of a lac segment or lac compound result; the curvature and
+    /// torsion graphs, with their slopes alpha and beta, of a lac space result
     ///
     /// The graph plots ln ρ against ln(ρ |ds/dρ|) with the exact dκ/ds of each piece; its line
     /// is fitted by least squares weighted along ln ρ, so a log-aesthetic curve gives its own
-    /// alpha back.
+    /// alpha back. A compound curve's report also has each piece's own line ("pieces"). When
+    /// the curvature is not monotone (a piece whose dκ/ds changes sign, pieces that turn in
+    /// opposite directions, an inflection) the graph is not one line: "fit" is null,
+    /// "monotone" false and "note" says where, and no slope is printed.
     #[command(
-        override_usage = "lac lcg [FILE|-] [--samples N] [--format json|csv|svg|png] [-o FILE]"
+        override_usage = "lac lcg [FILE|-] [--samples N] [--format json|csv|svg|png] [-o FILE|-]"
     )]
     Lcg(LcgArgs),
     /// Solve a log-aesthetic space curve segment (seed 003) for four control points, the
     /// slopes alpha and beta of its curvature and torsion graphs, and the torsion parameter
-    /// omega; print its standard form and samples as JSON, draw it as SVG, or export it as an
-    /// OBJ or PLY polyline
+    /// omega; print its standard form and samples as JSON or CSV, draw it as SVG, or export
+    /// it as an OBJ or PLY polyline
     ///
     /// The JSON has "standard_form" {alpha, beta, lambda, omega, nu, type, s_end}, "transform"
     /// {scale, rotation, translation, mirror_z, reversed} (your point = translation + scale ·
     /// rotation · M · standard-form point, M = diag(1, 1, -1) when mirror_z; when reversed
-    /// the standard form runs from the last point to the first), "arc_length", "planar" and
-    /// "samples" [{s, x, y, z, kappa, tau}] equally spaced in arc length from the first point.
-    /// Coplanar points give the planar segment through the first point, the tangents'
-    /// intersection and the last point (torsion 0): "planar" true, "standard_form" and
-    /// "transform" null, and "planar_segment" {alpha, lambda, control_points} and a "note".
-    /// When omega is too large the error line has "omega_max", the largest omega that works.
+    /// the standard form runs from the last point to the first), "arc_length", "planar",
+    /// "samples" [{s, x, y, z, kappa, tau}] equally spaced in arc length from the first point,
+    /// and the input as given ("points", "alpha", "beta", "omega", "type"), so that lac lcg
+    /// can read it. Coplanar points give the planar segment through the first point, the
+    /// tangents' intersection and the last point (torsion 0): "planar" true, "standard_form"
+    /// and "transform" null, and "planar_segment" {alpha, lambda, control_points} and a
+    /// "note". When omega is too large the error line has "omega_max", the largest omega that
+    /// works.
     #[command(
         override_usage = "lac space --points \"x0,y0,z0 x1,y1,z1 x2,y2,z2 x3,y3,z3\" --alpha A --beta B \
                                 [--omega W] [--type 1|2]\n                 \
-                                [--samples N] [--frames] [--format json|svg|obj|ply] [-o FILE]"
+                                [--samples N] [--frames] [--format json|csv|svg|obj|ply] [-o FILE|-]\n       \
+                                lac space --batch FILE|- [--samples N] [--frames] [-o FILE|-]"
     )]
     Space(SpaceArgs),
     /// Start the interactive editor: a local web server with the editor's page (embedded,
@@ -133,9 +160,13 @@ pub(crate) struct SegmentArgs {
     )]
     pub(crate) alpha: Option<f64>,
 
-    /// Read one JSON object {"points":[[x,y],[x,y],[x,y]],"alpha":A} per line ("-" for standard
-    /// input) and write one JSON line per input line: the result or {"error":…}
-    #[arg(long, value_name = "FILE.jsonl", conflicts_with_all = ["points", "alpha"])]
+    /// Read one JSON object {"points":[[x,y],[x,y],[x,y]],"alpha":A} per line ("-": standard
+    /// input) and write one JSON line per input line, in order: the result, or {"error":…}
+    /// whose message starts with the line number. Lines are solved in parallel and written as
+    /// soon as they and the lines before them are done; a line may have at most 1 MiB. Exit
+    /// code 0 when every line was solved, else that of the first failed line (2 invalid, 3 no
+    /// curve, 70 internal), with a one-line summary on standard error
+    #[arg(long, value_name = "FILE|-", conflicts_with_all = ["points", "alpha"])]
     pub(crate) batch: Option<PathBuf>,
 
     /// What to print and where.
@@ -181,12 +212,14 @@ pub(crate) struct CompoundArgs {
     #[arg(long, value_name = "R", allow_hyphen_values = true)]
     pub(crate) ratio: Option<f64>,
 
-    /// Read one JSON object per line ("-" for standard input), {"points":[[x,y],[x,y],[x,y]],
+    /// Read one JSON object per line ("-": standard input), {"points":[[x,y],[x,y],[x,y]],
     /// "alpha0":A,"alpha1":B,"ratio":R} or {"points":[[x,y],[x,y],[x,y],[x,y]],"alpha0":A,
-    /// "alpha1":B}, and write one JSON line per input line: the result or {"error":…}
+    /// "alpha1":B}, and write one JSON line per input line, in order: the result, or
+    /// {"error":…} whose message starts with the line number (see lac segment --help for the
+    /// line limit and the exit code)
     #[arg(
         long,
-        value_name = "FILE.jsonl",
+        value_name = "FILE|-",
         conflicts_with_all = ["points", "alpha0", "alpha1", "ratio"]
     )]
     pub(crate) batch: Option<PathBuf>,
@@ -200,12 +233,12 @@ pub(crate) struct CompoundArgs {
 #[derive(Debug, Args)]
 pub(crate) struct CurveOutput {
     /// Number of samples, equally spaced in arc length from the first to the last point (the
-    /// number of comb teeth in SVG)
+    /// number of comb teeth in SVG); at most 1,000,000 (10,000,000 with --allow-large)
     #[arg(
         long,
         value_name = "N",
         default_value_t = 65,
-        value_parser = clap::value_parser!(u32).range(2..=10_000_000)
+        value_parser = clap::value_parser!(u32).range(2..)
     )]
     pub(crate) samples: u32,
 
@@ -213,7 +246,7 @@ pub(crate) struct CurveOutput {
     #[arg(long, value_enum, default_value_t = CurveFormat::Json)]
     pub(crate) format: CurveFormat,
 
-    /// Write to FILE instead of standard output
+    /// Write to FILE instead of standard output ("-": standard output)
     #[arg(short = 'o', long = "output", value_name = "FILE")]
     pub(crate) file: Option<PathBuf>,
 
@@ -226,29 +259,11 @@ pub(crate) struct CurveOutput {
     pub(crate) evolute: bool,
 }
 
-impl CurveOutput {
-    /// Reject combinations of flags that would be silently ignored; `batch`: is `--batch`
-    /// given?
-    pub(crate) fn check(&self, batch: bool) -> Result<(), Failure> {
-        if batch && self.format != CurveFormat::Json {
-            return Err(Failure::usage(
-                "--batch writes JSON lines; --format csv and svg need --points",
-            ));
-        }
-        if (self.comb || self.evolute) && self.format != CurveFormat::Svg {
-            return Err(Failure::usage(
-                "--comb and --evolute draw; add --format svg",
-            ));
-        }
-        Ok(())
-    }
-}
-
 /// Output formats of `lac segment` and `lac compound`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub(crate) enum CurveFormat {
     /// One line: the slope(s), lambda, arc_length, curvature_start/end (compound curves also
-    /// joint_s, curvature_joint, joint, lcg), samples [{s,x,y,theta,kappa}]
+    /// joint_s, curvature_joint, joint, lcg), points, samples [{s,x,y,theta,kappa}]
     Json,
     /// A header s,x,y,theta,kappa and one row per sample
     Csv,
@@ -262,16 +277,31 @@ pub(crate) struct SpaceArgs {
     /// The four control points "x0,y0,z0 x1,y1,z1 x2,y2,z2 x3,y3,z3", separated by spaces
     /// and/or semicolons: the curve starts at the first point, tangent to the first leg, and
     /// ends at the last point, tangent to the last leg
-    #[arg(long, value_name = "POINTS", allow_hyphen_values = true)]
-    pub(crate) points: String,
+    #[arg(
+        long,
+        value_name = "POINTS",
+        allow_hyphen_values = true,
+        required_unless_present = "batch"
+    )]
+    pub(crate) points: Option<String>,
 
     /// Slope of the logarithmic curvature graph
-    #[arg(long, value_name = "A", allow_hyphen_values = true)]
-    pub(crate) alpha: f64,
+    #[arg(
+        long,
+        value_name = "A",
+        allow_hyphen_values = true,
+        required_unless_present = "batch"
+    )]
+    pub(crate) alpha: Option<f64>,
 
     /// Slope of the logarithmic torsion graph
-    #[arg(long, value_name = "B", allow_hyphen_values = true)]
-    pub(crate) beta: f64,
+    #[arg(
+        long,
+        value_name = "B",
+        allow_hyphen_values = true,
+        required_unless_present = "batch"
+    )]
+    pub(crate) beta: Option<f64>,
 
     /// Torsion parameter, >= 0: how fast the radius of torsion changes along the standard
     /// form (0: constant torsion; with Λ = 0 a helix)
@@ -287,18 +317,29 @@ pub(crate) struct SpaceArgs {
     #[arg(long = "type", value_name = "1|2", default_value_t = 1)]
     pub(crate) torsion_type: u8,
 
+    /// Read one JSON object {"points":[[x,y,z]×4],"alpha":A,"beta":B,"omega":W,"type":1}
+    /// per line (omega 0 and type 1 when absent; "-": standard input) and write one JSON line
+    /// per input line, in order: the result, or {"error":…} whose message starts with the
+    /// line number (see lac segment --help for the line limit and the exit code)
+    #[arg(
+        long,
+        value_name = "FILE|-",
+        conflicts_with_all = ["points", "alpha", "beta", "omega", "torsion_type"]
+    )]
+    pub(crate) batch: Option<PathBuf>,
+
     /// Number of samples, equally spaced in arc length from the first to the last point (the
-    /// vertices of OBJ and PLY)
+    /// vertices of OBJ and PLY); at most 1,000,000 (10,000,000 with --allow-large)
     #[arg(
         long,
         value_name = "N",
         default_value_t = 65,
-        value_parser = clap::value_parser!(u32).range(2..=10_000_000)
+        value_parser = clap::value_parser!(u32).range(2..)
     )]
     pub(crate) samples: u32,
 
-    /// JSON: add each sample's Frenet frame, unit vectors "t" (tangent), "n" (principal
-    /// normal) and "b" (binormal)
+    /// JSON and CSV: add each sample's Frenet frame, unit vectors "t" (tangent), "n"
+    /// (principal normal) and "b" (binormal)
     #[arg(long)]
     pub(crate) frames: bool,
 
@@ -306,7 +347,7 @@ pub(crate) struct SpaceArgs {
     #[arg(long, value_enum, default_value_t = SpaceFormat::Json)]
     pub(crate) format: SpaceFormat,
 
-    /// Write to FILE instead of standard output
+    /// Write to FILE instead of standard output ("-": standard output)
     #[arg(short = 'o', long = "output", value_name = "FILE")]
     pub(crate) file: Option<PathBuf>,
 }
@@ -314,8 +355,12 @@ pub(crate) struct SpaceArgs {
 /// Output formats of `lac space`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub(crate) enum SpaceFormat {
-    /// One line: standard_form, transform, arc_length, planar, samples [{s,x,y,z,kappa,tau}]
+    /// One line: standard_form, transform, arc_length, planar, samples [{s,x,y,z,kappa,tau}],
+    /// and the input (points, alpha, beta, omega, type)
     Json,
+    /// A header s,x,y,z,kappa,tau (with --frames also tx,ty,tz,nx,ny,nz,bx,by,bz) and one row
+    /// per sample
+    Csv,
     /// Top (xy), front (xz) and side (yz) views at one scale, and a perspective view with
     /// the curve's shadow
     Svg,
@@ -328,40 +373,39 @@ pub(crate) enum SpaceFormat {
 /// Arguments of `lac region`.
 #[derive(Debug, Args)]
 pub(crate) struct RegionArgs {
-    /// Slope of the logarithmic curvature graph (with --alpha1 and --ratio: alpha0, the slope
-    /// of the compound curve's piece from the first point)
+    /// Map segments: the slope of their logarithmic curvature graph
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
-    pub(crate) alpha: f64,
+    pub(crate) alpha: Option<f64>,
 
-    /// Map compound-rhythm curves instead of segments: the slope of the piece that ends at the
-    /// last point (give --ratio too)
-    #[arg(long, value_name = "B", allow_hyphen_values = true, requires = "ratio")]
+    /// Map compound-rhythm curves: the slope of the piece from the first point (give --alpha1
+    /// and --ratio too)
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub(crate) alpha0: Option<f64>,
+
+    /// Compound curves: the slope of the piece that ends at the last point
+    #[arg(long, value_name = "B", allow_hyphen_values = true)]
     pub(crate) alpha1: Option<f64>,
 
-    /// Compound curves: the share of the turning made by the --alpha piece, strictly between
-    /// 0 and 1 (give --alpha1 too)
-    #[arg(
-        long,
-        value_name = "R",
-        allow_hyphen_values = true,
-        requires = "alpha1"
-    )]
+    /// Compound curves: the share of the turning made by the alpha0 piece, strictly between
+    /// 0 and 1
+    #[arg(long, value_name = "R", allow_hyphen_values = true)]
     pub(crate) ratio: Option<f64>,
 
-    /// Width and height of the map in pixels, 1 to 8192; the map covers [-1,1]² with the
-    /// first point at (-1,0) and the last at (1,0)
+    /// Width and height of the map in pixels, 1 to 2048 (8192 with --allow-large; 2048 takes
+    /// about 10 s for segments and 30 s for compound curves on two cores, 8192 sixteen times
+    /// that); the map covers [-1,1]² with the first point at (-1,0) and the last at (1,0)
     #[arg(
         long,
         value_name = "PIXELS",
         default_value_t = 512,
-        value_parser = clap::value_parser!(u32).range(1..=8192)
+        value_parser = clap::value_parser!(u32).range(1..)
     )]
     pub(crate) size: u32,
 
-    /// Write to FILE instead of standard output (PNG goes to standard output only when it is
-    /// not a terminal)
-    #[arg(short, long, value_name = "FILE")]
-    pub(crate) output: Option<PathBuf>,
+    /// Write to FILE instead of standard output ("-": standard output; a PNG is not written
+    /// to a terminal)
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub(crate) file: Option<PathBuf>,
 
     /// Output format
     #[arg(long, value_enum, default_value_t = RegionFormat::Png)]
@@ -374,7 +418,7 @@ pub(crate) enum RegionFormat {
     /// 8-bit grayscale: white where drawable, black where not; row 0 is y = +1
     Png,
     /// {"alpha","size","extent","first","last","drawable_fraction","drawable":[[bool…]…]},
-    /// with "alpha1" and "ratio" after "alpha" for compound curves
+    /// with "alpha1" and "ratio" after "alpha" (then alpha0) for compound curves
     Json,
 }
 
@@ -384,50 +428,35 @@ pub(crate) struct QuasiArgs {
     /// The control points, separated by spaces and/or semicolons: three with --alpha (a
     /// segment), three with --alpha0, --alpha1 and --ratio, or four with --alpha0 and --alpha1
     /// (a compound curve, as in lac compound)
-    #[arg(long, value_name = "POINTS", allow_hyphen_values = true)]
-    pub(crate) points: String,
-
-    /// A segment: the slope of its logarithmic curvature graph
     #[arg(
         long,
-        value_name = "A",
+        value_name = "POINTS",
         allow_hyphen_values = true,
-        conflicts_with_all = ["alpha0", "alpha1", "ratio"]
+        required_unless_present = "batch"
     )]
+    pub(crate) points: Option<String>,
+
+    /// A segment: the slope of its logarithmic curvature graph
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub(crate) alpha: Option<f64>,
 
     /// A compound curve: the slope of the piece from the first point to the joint
-    #[arg(
-        long,
-        value_name = "A",
-        allow_hyphen_values = true,
-        requires = "alpha1"
-    )]
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub(crate) alpha0: Option<f64>,
 
     /// A compound curve: the slope of the piece from the joint to the last point
-    #[arg(
-        long,
-        value_name = "B",
-        allow_hyphen_values = true,
-        requires = "alpha0"
-    )]
+    #[arg(long, value_name = "B", allow_hyphen_values = true)]
     pub(crate) alpha1: Option<f64>,
 
     /// A compound curve from three points: the share of the turning made by the alpha0
     /// piece, strictly between 0 and 1
-    #[arg(
-        long,
-        value_name = "R",
-        allow_hyphen_values = true,
-        requires = "alpha0"
-    )]
+    #[arg(long, value_name = "R", allow_hyphen_values = true)]
     pub(crate) ratio: Option<f64>,
 
     /// Use as many pieces as needed for a maximum deviation of T times the arc length (1e-12
     /// to 1), each with curvature proven monotone, joined with continuous curvature. Without
     /// it: the single rational cubic of seed 001
-    #[arg(long, value_name = "T")]
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub(crate) tolerance: Option<f64>,
 
     /// Plain cubic Bézier pieces (all weights 1) instead of rational ones, for consumers that
@@ -435,11 +464,23 @@ pub(crate) struct QuasiArgs {
     #[arg(long, requires = "tolerance")]
     pub(crate) cubic: bool,
 
+    /// Read one JSON object per line ("-": standard input): a lac segment or lac compound
+    /// input ({"points":…,"alpha":A} or {"points":…,"alpha0":A,"alpha1":B,"ratio":R}) with
+    /// "tolerance":T and "cubic":true as --tolerance and --cubic; write one JSON line per
+    /// input line, in order: the result, or {"error":…} whose message starts with the line
+    /// number (see lac segment --help for the line limit and the exit code)
+    #[arg(
+        long,
+        value_name = "FILE|-",
+        conflicts_with_all = ["points", "alpha", "alpha0", "alpha1", "ratio", "tolerance", "cubic"]
+    )]
+    pub(crate) batch: Option<PathBuf>,
+
     /// Output format
     #[arg(long, value_enum, default_value_t = QuasiFormat::Json)]
     pub(crate) format: QuasiFormat,
 
-    /// Write to FILE instead of standard output
+    /// Write to FILE instead of standard output ("-": standard output)
     #[arg(short = 'o', long = "output", value_name = "FILE")]
     pub(crate) file: Option<PathBuf>,
 }
@@ -450,6 +491,9 @@ pub(crate) enum QuasiFormat {
     /// One line: pieces [{points, weights, monotone, proven, turning, max_deviation}], rms,
     /// max (relative to the arc length), arc_length, tolerance, kind ("rational" or "cubic")
     Json,
+    /// A header piece,x0,y0,x1,y1,x2,y2,x3,y3,w0,w1,w2,w3,monotone,proven,t,turning0,turning1,
+    /// max_deviation and one row per piece (t empty unless not monotone)
+    Csv,
     /// The Bézier pieces over the log-aesthetic curve, their control polygons and joints, and
     /// the curvature combs of both
     Svg,
@@ -458,14 +502,32 @@ pub(crate) enum QuasiFormat {
 /// Arguments of `lac monotone`.
 #[derive(Debug, Args)]
 pub(crate) struct MonotoneArgs {
+    /// A JSON document to decide ("-": standard input; nothing: standard input when it is not
+    /// a terminal): one piece {"points":[[x,y]×4],"weights":[w0,w1,w2,w3]} (weights
+    /// optional), or lac quasi output {"pieces":[…]} for a verdict on every piece; at most 64
+    /// MiB (1 GiB with --allow-large)
+    #[arg(value_name = "FILE", conflicts_with_all = ["points", "weights", "batch"])]
+    pub(crate) input: Option<PathBuf>,
+
     /// The four control points "x0,y0 x1,y1 x2,y2 x3,y3", separated by spaces and/or
     /// semicolons
     #[arg(long, value_name = "POINTS", allow_hyphen_values = true)]
-    pub(crate) points: String,
+    pub(crate) points: Option<String>,
 
     /// The four weights "w0,w1,w2,w3", all positive (default 1,1,1,1: a plain cubic)
-    #[arg(long, value_name = "WEIGHTS")]
+    #[arg(long, value_name = "WEIGHTS", requires = "points")]
     pub(crate) weights: Option<String>,
+
+    /// Read one JSON document per line ("-": standard input), a piece or {"pieces":[…]} as
+    /// for FILE, and write one JSON line per input line, in order: the verdict(s), or
+    /// {"error":…} whose message starts with the line number (see lac segment --help for the
+    /// line limit and the exit code)
+    #[arg(long, value_name = "FILE|-", conflicts_with_all = ["points", "weights"])]
+    pub(crate) batch: Option<PathBuf>,
+
+    /// Write to FILE instead of standard output ("-": standard output)
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub(crate) file: Option<PathBuf>,
 }
 
 /// Arguments of `lac lcg`.
@@ -473,16 +535,19 @@ pub(crate) struct MonotoneArgs {
 pub(crate) struct LcgArgs {
     /// The JSON to analyse ("-" or nothing: standard input): {"pieces":[{"points":[[x,y],…],
     /// "weights":[…]},…]} with four points a piece and optional weights (the output of lac
-    /// quasi), or one result of lac segment or lac compound
+    /// quasi), one result of lac segment or lac compound, or one result of lac space; at most
+    /// 64 MiB (1 GiB with --allow-large)
     #[arg(value_name = "FILE")]
     pub(crate) input: Option<PathBuf>,
 
     /// Curvature points: for Bézier pieces, per piece, equally spaced in t (default 64); for a
-    /// log-aesthetic curve, in all, equally spaced in arc length (default 257)
+    /// log-aesthetic curve (and each of its pieces) or a space curve, in all, equally spaced in
+    /// arc length (default 257); at most 1,000,000 points in all (10,000,000 with
+    /// --allow-large)
     #[arg(
         long,
         value_name = "N",
-        value_parser = clap::value_parser!(u32).range(2..=1_000_000)
+        value_parser = clap::value_parser!(u32).range(2..)
     )]
     pub(crate) samples: Option<u32>,
 
@@ -490,8 +555,8 @@ pub(crate) struct LcgArgs {
     #[arg(long, value_enum, default_value_t = LcgFormat::Json)]
     pub(crate) format: LcgFormat,
 
-    /// Write to FILE instead of standard output (PNG goes to standard output only when it is
-    /// not a terminal)
+    /// Write to FILE instead of standard output ("-": standard output; a PNG is not written
+    /// to a terminal)
     #[arg(short = 'o', long = "output", value_name = "FILE")]
     pub(crate) file: Option<PathBuf>,
 }
@@ -500,12 +565,17 @@ pub(crate) struct LcgArgs {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub(crate) enum LcgFormat {
     /// One line: points [{s, kappa, dkappa_ds, log_rho, log_lcg}] and fit {alpha, intercept,
-    /// rms_residual, max_residual, log_rho} (null when there is no line)
+    /// rms_residual, max_residual, log_rho} (null when there is no line), with "pieces"
+    /// [{s, fit}] for a compound curve and "monotone": false and "note" when the curvature is
+    /// not monotone; for a space curve {"curvature":{points [{s, x, y}], fit {slope, intercept,
+    /// rms_residual, max_residual, x}}, "torsion":{…}} (the slopes are alpha and beta)
     Json,
-    /// A header s,kappa,dkappa_ds,log_rho,log_lcg and one row per point (empty where there is
-    /// no graph point)
+    /// A header s,kappa,dkappa_ds,log_rho,log_lcg (a space curve: s,log_rho,log_lcg,log_mu,
+    /// log_ltg) and one row per point, empty where there is no graph point; first a comment
+    /// line "# …" with the note when there is one
     Csv,
-    /// Two panels: the curvature plot and the logarithmic curvature graph with its line
+    /// Two panels: the curvature plot and the logarithmic curvature graph with its line(s);
+    /// for a space curve the curvature and torsion graphs with their lines
     Svg,
     /// The same picture as svg, rendered
     Png,

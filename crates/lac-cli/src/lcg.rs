@@ -1,257 +1,94 @@
 //! `lac lcg`: the curvature plot and the logarithmic curvature graph (LCG) of Bézier pieces
 //! or of a log-aesthetic curve, with the slope α of the line fitted to the graph (seed 001
-//! §6, SPEC §1), as JSON, CSV, SVG or PNG.
+//! §6, SPEC §1), or the curvature and torsion graphs of a space curve with their slopes α and
+//! β (seed 003), as JSON, CSV, SVG or PNG.
 //!
-//! The input is one JSON document: `{"pieces":[{"points":[[x,y]×4],"weights":[…]},…]}`
-//! (what `lac quasi` prints), or one result of `lac segment` or `lac compound`, which is
-//! solved again from its points and slopes.
+//! The input is one JSON document ([`LcgInput`]): `lac quasi` output, or one result of `lac
+//! segment`, `lac compound` or `lac space`, which is solved again from its points and
+//! parameters.
 
-use std::io::{self, IsTerminal, Read};
-use std::path::Path;
-
-use kurbo::Point;
-use lac::{curvature_plot, log_curvature_graph, CurvaturePoint, LcgFit, RationalCubic, Segment};
-use serde::{Deserialize, Serialize};
-use serde_json::Value;
+use lac_io::json::{to_line, ErrorBody, LcgInput, LcgReport, Report, SpaceLcgReport};
 
 use crate::cli::{LcgArgs, LcgFormat};
-use crate::compound::{self, Misfit};
-use crate::curve::Lac;
-use crate::failure::Failure;
-use crate::output::write_to;
+use crate::input::read_document;
+use crate::limits::Limits;
+use crate::output::{refuse_binary_on_terminal, write_document};
 use crate::raster;
 use crate::svg;
 
-/// The shapes of the input, for error messages.
-const SHAPES: &str = r#"{"pieces":[{"points":[[x,y],[x,y],[x,y],[x,y]],"weights":[w0,w1,w2,w3]},…]} (weights optional), a lac segment result {"alpha":A,"points":[[x,y],[x,y],[x,y]],…} or a lac compound result {"alpha0":A,"alpha1":B,"points":[…3 or 4…],"ratio":R,…}"#;
-
 /// Curvature points per Bézier piece when `--samples` is not given.
 const PER_PIECE: usize = 64;
-/// Curvature points along a log-aesthetic curve when `--samples` is not given.
+/// Curvature points along a log-aesthetic or space curve when `--samples` is not given.
 const ALONG_CURVE: usize = 257;
 
-/// `{"pieces":[…]}`.
-#[derive(Debug, Deserialize)]
-struct PiecesInput {
-    pieces: Vec<PieceInput>,
-}
+/// What to give when there is nothing to read.
+const HINT: &str = "give a FILE of JSON, or pipe it into standard input (for example lac \
+                    quasi … | lac lcg); '-' reads the terminal";
 
-/// One Bézier piece; fields other than these (as in `lac quasi` output) are ignored.
-#[derive(Debug, Deserialize)]
-struct PieceInput {
-    points: [[f64; 2]; 4],
-    weights: Option<[f64; 4]>,
-}
-
-/// A `lac segment` result; only the fields it is solved from.
-#[derive(Debug, Deserialize)]
-struct SegmentInput {
-    alpha: f64,
-    points: Vec<[f64; 2]>,
-}
-
-/// A `lac compound` result; only the fields it is solved from.
-#[derive(Debug, Deserialize)]
-struct CompoundInput {
-    alpha0: f64,
-    alpha1: f64,
-    ratio: Option<f64>,
-    points: Vec<[f64; 2]>,
-}
-
-/// What the input describes.
-enum Input {
-    /// A chain of (rational) cubic Bézier pieces.
-    Bezier(Vec<RationalCubic>),
-    /// A log-aesthetic curve.
-    Curve(Box<Lac>),
-}
-
-/// What `lac lcg --format json` prints.
-#[derive(Debug, Serialize)]
-struct LcgReport {
-    points: Vec<PlotRow>,
-    fit: Option<FitRow>,
-}
-
-/// One point of the curvature plot and, where it has one, of the graph.
-#[derive(Debug, Serialize)]
-struct PlotRow {
-    /// Arc length from the start.
-    s: f64,
-    /// Signed curvature, + for a left turn.
-    kappa: f64,
-    /// dκ/ds.
-    dkappa_ds: f64,
-    /// ln ρ; `null` where κ = 0.
-    log_rho: Option<f64>,
-    /// ln(ρ |ds/dρ|); `null` where κ = 0 or dκ/ds = 0.
-    log_lcg: Option<f64>,
-}
-
-impl From<&CurvaturePoint> for PlotRow {
-    fn from(p: &CurvaturePoint) -> Self {
-        let graph = p.lcg();
-        PlotRow {
-            s: p.s,
-            kappa: p.kappa,
-            dkappa_ds: p.dkappa_ds,
-            log_rho: graph.map(|g| g.0),
-            log_lcg: graph.map(|g| g.1),
-        }
-    }
-}
-
-/// The fitted line y = alpha x + intercept over x ∈ log_rho (natural logarithms).
-#[derive(Debug, Serialize)]
-struct FitRow {
-    alpha: f64,
-    intercept: f64,
-    rms_residual: f64,
-    max_residual: f64,
-    log_rho: [f64; 2],
-}
-
-impl From<&LcgFit> for FitRow {
-    fn from(f: &LcgFit) -> Self {
-        FitRow {
-            alpha: f.alpha,
-            intercept: f.intercept,
-            rms_residual: f.rms_residual,
-            max_residual: f.max_residual,
-            log_rho: [f.log_rho.0, f.log_rho.1],
-        }
-    }
+/// The report and its drawing, whatever the input.
+enum Analysis {
+    /// A planar curve or Bézier pieces: the report, the arc lengths of the joints, a title.
+    Plane(LcgReport, Vec<f64>, String),
+    /// A space curve: its two graphs and a title.
+    Space(SpaceLcgReport, String),
 }
 
 /// Run `lac lcg`.
-pub(crate) fn run(args: &LcgArgs) -> Result<(), Failure> {
-    if args.format == LcgFormat::Png && args.file.is_none() && io::stdout().is_terminal() {
-        return Err(Failure::usage(
-            "a PNG is not written to a terminal: give -o FILE, redirect standard output, or use \
-             --format svg",
-        ));
+pub(crate) fn run(args: &LcgArgs, limits: Limits) -> Result<(), ErrorBody> {
+    if args.format == LcgFormat::Png {
+        refuse_binary_on_terminal(args.file.as_deref(), "PNG", "--format svg")?;
     }
-    let text = read_input(args.input.as_deref())?;
+    let text = read_document(args.input.as_deref(), limits.document(), HINT)?;
     let samples = args.samples.map(|n| n as usize);
-    let (plot, joints, title): (_, Vec<f64>, _) = match parse(&text)? {
-        Input::Bezier(pieces) => {
+    let analysis = match LcgInput::parse(&text)? {
+        LcgInput::Pieces(input) => {
+            let pieces = input.to_rational_cubics()?;
             let n = samples.unwrap_or(PER_PIECE);
-            let plot = curvature_plot(&pieces, n)?;
+            limits.samples((n - 1) * pieces.len() + 1, "--samples (per piece, in all)")?;
+            let report = LcgReport::of_pieces(&pieces, n)?;
             // Piece k ends at plot point k·(n − 1): consecutive pieces share that point.
-            let joints = (1..pieces.len()).map(|k| plot[k * (n - 1)].s).collect();
-            (plot, joints, svg::lcg::bezier_title(&pieces))
+            let joints = (1..pieces.len())
+                .map(|k| report.points[k * (n - 1)].s)
+                .collect();
+            Analysis::Plane(report, joints, svg::lcg::bezier_title(&pieces))
         }
-        Input::Curve(curve) => {
-            let plot = curve.curvature_plot(samples.unwrap_or(ALONG_CURVE))?;
-            let joints = curve.joint_s().into_iter().collect();
-            (plot, joints, svg::lcg::lac_title(curve.pieces()))
-        }
-    };
-    let graph = log_curvature_graph(&plot);
-    let document: Vec<u8> = match args.format {
-        LcgFormat::Json => {
-            let report = LcgReport {
-                points: plot.iter().map(PlotRow::from).collect(),
-                fit: graph.fit.as_ref().map(FitRow::from),
+        LcgInput::Curve(input) => {
+            let solved = input.solve()?;
+            let curve = solved.curve();
+            let n = samples.unwrap_or(ALONG_CURVE);
+            let plots = if curve.pieces().len() > 1 {
+                1 + curve.pieces().len()
+            } else {
+                1
             };
-            let line = serde_json::to_string(&report).expect("numbers always serialize");
-            (line + "\n").into_bytes()
+            limits.samples(n * plots, "--samples (each piece's own, in all)")?;
+            let report = LcgReport::of_curve(curve, n)?;
+            let title = svg::lcg::lac_title(curve.pieces());
+            Analysis::Plane(report, curve.joints(), title)
         }
-        LcgFormat::Csv => to_csv(&plot).into_bytes(),
-        LcgFormat::Svg => svg::lcg::render(&plot, &graph, &joints, &title).into_bytes(),
-        LcgFormat::Png => raster::png(&svg::lcg::render(&plot, &graph, &joints, &title))?,
+        LcgInput::Space(input) => {
+            let segment = input.solve()?;
+            let n = limits.samples(samples.unwrap_or(ALONG_CURVE), "--samples")?;
+            let report = SpaceLcgReport::new(&segment, n)?;
+            Analysis::Space(report, svg::lcg::space_title(&segment))
+        }
     };
-    write_to(args.file.as_deref(), |out| out.write_all(&document))
-}
-
-/// The whole input: the file, or standard input for "-" or no file (not a terminal, where
-/// it would wait for typing).
-fn read_input(path: Option<&Path>) -> Result<String, Failure> {
-    let mut text = String::new();
-    match path {
-        Some(path) if path.as_os_str() != "-" => {
-            return std::fs::read_to_string(path).map_err(|e| Failure::io("read", Some(path), &e));
-        }
-        None if io::stdin().is_terminal() => {
-            return Err(Failure::usage(
-                "give a FILE of JSON, or pipe it into standard input (for example lac quasi … | \
-                 lac lcg); '-' reads the terminal",
-            ));
-        }
-        _ => io::stdin()
-            .read_to_string(&mut text)
-            .map_err(|e| Failure::io("read standard input", None, &e))?,
+    let svg = |analysis: &Analysis| match analysis {
+        Analysis::Plane(report, joints, title) => svg::lcg::render(report, joints, title),
+        Analysis::Space(report, title) => svg::lcg::render_space(report, title),
     };
-    Ok(text)
+    let document: Vec<u8> = match (args.format, &analysis) {
+        (LcgFormat::Json, Analysis::Plane(report, ..)) => line(report),
+        (LcgFormat::Json, Analysis::Space(report, _)) => line(report),
+        (LcgFormat::Csv, Analysis::Plane(report, ..)) => report.to_csv().into_bytes(),
+        (LcgFormat::Csv, Analysis::Space(report, _)) => report.to_csv().into_bytes(),
+        (LcgFormat::Svg, analysis) => svg(analysis).into_bytes(),
+        (LcgFormat::Png, analysis) => raster::png(&svg(analysis))?,
+    };
+    write_document(args.file.as_deref(), &document)
 }
 
-/// Tell the three input shapes apart by their keys and build what they describe.
-fn parse(text: &str) -> Result<Input, Failure> {
-    let invalid = |why: String| Failure::invalid_input(format!("{why}; expected {SHAPES}"));
-    let value: Value =
-        serde_json::from_str(text).map_err(|e| invalid(format!("the input is not JSON: {e}")))?;
-    let has = |key: &str| value.get(key).is_some();
-    let read = |what: &str, e: serde_json::Error| invalid(format!("{what}: {e}"));
-    if has("pieces") {
-        let input: PiecesInput =
-            serde_json::from_value(value).map_err(|e| read("Bézier pieces", e))?;
-        let pieces = input
-            .pieces
-            .iter()
-            .map(|p| RationalCubic::new(p.points.map(point), p.weights.unwrap_or([1.0; 4])))
-            .collect::<Result<Vec<_>, _>>()?;
-        return Ok(Input::Bezier(pieces));
-    }
-    if has("alpha0") || has("alpha1") {
-        let input: CompoundInput =
-            serde_json::from_value(value).map_err(|e| read("a lac compound result", e))?;
-        let points: Vec<Point> = input.points.iter().map(|&p| point(p)).collect();
-        let curve = compound::solve(
-            &points,
-            input.alpha0,
-            input.alpha1,
-            input.ratio,
-            "\"ratio\"",
-        )
-        .map_err(|e| match e {
-            Misfit::Form(message) => invalid(message),
-            Misfit::Solver(failure) => failure,
-        })?;
-        return Ok(Input::Curve(Box::new(Lac::Compound(curve))));
-    }
-    if has("alpha") {
-        let input: SegmentInput =
-            serde_json::from_value(value).map_err(|e| read("a lac segment result", e))?;
-        let points: [[f64; 2]; 3] = input
-            .points
-            .try_into()
-            .map_err(|p: Vec<_>| invalid(format!("a segment has 3 points, got {}", p.len())))?;
-        let segment = Segment::from_control_points(points.map(point), input.alpha)?;
-        return Ok(Input::Curve(Box::new(Lac::Segment(segment))));
-    }
-    Err(invalid(
-        "no \"pieces\", \"alpha\" or \"alpha0\" in the input".into(),
-    ))
-}
-
-fn point([x, y]: [f64; 2]) -> Point {
-    Point::new(x, y)
-}
-
-/// The plot as CSV with the header `s,kappa,dkappa_ds,log_rho,log_lcg`; the last two are
-/// empty where there is no graph point. Numbers as in `lac segment --format csv`.
-fn to_csv(plot: &[CurvaturePoint]) -> String {
-    let mut out = String::from("s,kappa,dkappa_ds,log_rho,log_lcg\n");
-    for p in plot {
-        let (x, y) = match p.lcg() {
-            Some((x, y)) => (format!("{x:?}"), format!("{y:?}")),
-            None => (String::new(), String::new()),
-        };
-        out.push_str(&format!(
-            "{:?},{:?},{:?},{x},{y}\n",
-            p.s, p.kappa, p.dkappa_ds
-        ));
-    }
-    out
+/// A report (checked when it was made) as one line of JSON.
+fn line<T: Report>(report: &T) -> Vec<u8> {
+    (to_line(report) + "\n").into_bytes()
 }

@@ -1,42 +1,50 @@
 //! `lac monotone`: is the curvature of a (rational) cubic Bézier curve monotone? The
-//! library's decision with a proof (seed 001 §5, SPEC §5).
+//! library's decision with a proof (seed 001 §5, SPEC §5), for one curve given by
+//! `--points` and `--weights`, for every piece of a JSON document (what `lac quasi` prints,
+//! so `lac quasi … | lac monotone` works), or for each line of a `--batch`.
 
-use kurbo::Point;
-use lac::RationalCubic;
-use serde::Serialize;
+use std::sync::Arc;
 
+use lac_io::json::{to_line, ErrorBody, MonotoneDocument, MonotoneReport, PieceInput};
+
+use crate::batch;
 use crate::cli::MonotoneArgs;
-use crate::failure::Failure;
-use crate::output::write_to;
+use crate::errors;
+use crate::input::read_document;
+use crate::limits::Limits;
+use crate::output::write_document;
 use crate::points::{parse_point_list, parse_weights};
-use crate::quasi::sign_change;
 
-/// What `lac monotone` prints.
-#[derive(Debug, Serialize)]
-struct MonotoneReport {
-    /// increasing, decreasing, constant or not_monotone.
-    verdict: &'static str,
-    /// Whether the verdict is proven for the exact curve the numbers describe.
-    proven: bool,
-    /// Not monotone: a parameter where dκ/ds changes sign.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    t: Option<f64>,
-}
+/// What a line of `--batch` costs, in samples, for sizing the window of lines in flight.
+const LINE_COST: usize = 1_000;
+
+/// What to give when there is nothing to read.
+const HINT: &str = "give --points (and --weights), a FILE of JSON, or pipe lac quasi output \
+                    into standard input (lac quasi … | lac monotone); '-' reads the terminal";
 
 /// Run `lac monotone`.
-pub(crate) fn run(args: &MonotoneArgs) -> Result<(), Failure> {
-    let points = parse_point_list(&args.points, &[4])?;
-    let points: [Point; 4] = [points[0], points[1], points[2], points[3]];
-    let weights = match &args.weights {
-        Some(text) => parse_weights(text)?,
-        None => [1.0; 4],
+pub(crate) fn run(args: &MonotoneArgs, limits: Limits) -> Result<(), ErrorBody> {
+    if let Some(input) = &args.batch {
+        let solve: batch::Solve = Arc::new(|text| MonotoneDocument::parse(text)?.report_line());
+        let window = batch::window(LINE_COST);
+        return batch::run(input, args.file.as_deref(), limits, window, solve);
+    }
+    let line = match &args.points {
+        Some(text) => {
+            let points = parse_point_list(text, &[4])?;
+            let piece = PieceInput {
+                points: [points[0], points[1], points[2], points[3]],
+                weights: args.weights.as_deref().map(parse_weights).transpose()?,
+            };
+            to_line(&MonotoneReport::of(&piece)?)
+        }
+        None => {
+            let text = read_document(args.input.as_deref(), limits.document(), HINT)?;
+            if args.input.is_none() && text.trim().is_empty() {
+                return Err(errors::usage(format!("nothing on standard input: {HINT}")));
+            }
+            MonotoneDocument::parse(&text)?.report_line()?
+        }
     };
-    let report = RationalCubic::new(points, weights)?.curvature_monotonicity()?;
-    let line = serde_json::to_string(&MonotoneReport {
-        verdict: report.verdict.name(),
-        proven: report.proven,
-        t: sign_change(report.verdict),
-    })
-    .expect("a report of numbers always serializes");
-    write_to(None, |out| writeln!(out, "{line}"))
+    write_document(args.file.as_deref(), format!("{line}\n").as_bytes())
 }

@@ -1,41 +1,35 @@
 //! Parsing the `--points` argument: points "x,y" (or "x,y,z" for `lac space`) separated by
 //! spaces and/or semicolons.
 
-use kurbo::Point;
-use lac::Vec3;
-
-use crate::failure::Failure;
+use lac_io::json::{ErrorBody, Xy, Xyz};
 
 /// Parse exactly three points "x0,y0 x1,y1 x2,y2".
 ///
 /// Spaces and semicolons separate points; spaces around a comma are allowed ("1, 2; 3, 4").
 /// Numbers are read by Rust's `f64` parser, so "nan" and "inf" parse and are rejected later
 /// by the library with the name of the coordinate.
-pub(crate) fn parse_points(text: &str) -> Result<[Point; 3], Failure> {
+pub(crate) fn parse_points(text: &str) -> Result<[Xy; 3], ErrorBody> {
     let points = parse_point_list(text, &[3])?;
     Ok([points[0], points[1], points[2]])
 }
 
 /// Parse as many points as one of `counts` (ascending) allows, as [`parse_points`] does.
-pub(crate) fn parse_point_list(text: &str, counts: &[usize]) -> Result<Vec<Point>, Failure> {
-    Ok(parse_coordinates::<2>(text, counts)?
-        .into_iter()
-        .map(|[x, y]| Point::new(x, y))
-        .collect())
+pub(crate) fn parse_point_list(text: &str, counts: &[usize]) -> Result<Vec<Xy>, ErrorBody> {
+    parse_coordinates::<2>(text, counts)
 }
 
 /// Parse exactly four space points "x0,y0,z0 x1,y1,z1 x2,y2,z2 x3,y3,z3", as
 /// [`parse_points`] does.
-pub(crate) fn parse_space_points(text: &str) -> Result<[Vec3; 4], Failure> {
+pub(crate) fn parse_space_points(text: &str) -> Result<[Xyz; 4], ErrorBody> {
     let points = parse_coordinates::<3>(text, &[4])?;
-    Ok([points[0], points[1], points[2], points[3]].map(Vec3::from_array))
+    Ok([points[0], points[1], points[2], points[3]])
 }
 
 /// Parse as many points of `N` coordinates as one of `counts` (ascending) allows.
 fn parse_coordinates<const N: usize>(
     text: &str,
     counts: &[usize],
-) -> Result<Vec<[f64; N]>, Failure> {
+) -> Result<Vec<[f64; N]>, ErrorBody> {
     let tight = tighten_commas(text);
     let tokens: Vec<&str> = tight
         .split(|c: char| c == ';' || c.is_whitespace())
@@ -49,7 +43,7 @@ fn parse_coordinates<const N: usize>(
                 names.join(" or ")
             }
         };
-        return Err(Failure::invalid_input(format!(
+        return Err(ErrorBody::invalid_input(format!(
             "expected {expected} points \"{}\" separated by spaces or semicolons, got {} in \
              {text:?}",
             form(N),
@@ -65,25 +59,33 @@ fn parse_coordinates<const N: usize>(
 
 /// Parse the four weights "w0,w1,w2,w3" of a rational cubic, separated by commas, spaces
 /// and/or semicolons. Whether they are positive and finite is the library's to say.
-pub(crate) fn parse_weights(text: &str) -> Result<[f64; 4], Failure> {
+pub(crate) fn parse_weights(text: &str) -> Result<[f64; 4], ErrorBody> {
     let tokens: Vec<&str> = text
         .split(|c: char| c == ',' || c == ';' || c.is_whitespace())
         .filter(|t| !t.is_empty())
         .collect();
     let [w0, w1, w2, w3] = tokens[..] else {
-        return Err(Failure::invalid_input(format!(
+        return Err(ErrorBody::invalid_input(format!(
             "expected 4 weights \"w0,w1,w2,w3\", got {} in {text:?}",
             tokens.len()
         )));
     };
     let parse = |i: usize, token: &str| {
         token.parse::<f64>().map_err(|_| {
-            Failure::invalid_input(format!(
+            ErrorBody::invalid_input(format!(
                 "weight w{i} {token:?} is not a number; write the weights as \"w0,w1,w2,w3\""
             ))
         })
     };
     Ok([parse(0, w0)?, parse(1, w1)?, parse(2, w2)?, parse(3, w3)?])
+}
+
+/// Points as kurbo points, for drawing.
+pub(crate) fn kurbo_points(points: &[Xy]) -> Vec<kurbo::Point> {
+    points
+        .iter()
+        .map(|&[x, y]| kurbo::Point::new(x, y))
+        .collect()
 }
 
 /// Remove whitespace on either side of each comma, so "1 , 2" reads as one point.
@@ -112,9 +114,9 @@ fn form(n: usize) -> &'static str {
     }
 }
 
-fn parse_point<const N: usize>(token: &str, index: usize) -> Result<[f64; N], Failure> {
+fn parse_point<const N: usize>(token: &str, index: usize) -> Result<[f64; N], ErrorBody> {
     let bad = |why: &str| {
-        Failure::invalid_input(format!(
+        ErrorBody::invalid_input(format!(
             "control point P{index} {token:?}: {why}; write each point as \"{}\"",
             form(N)
         ))
@@ -140,11 +142,7 @@ mod tests {
 
     #[test]
     fn spaces_semicolons_and_negative_numbers_all_separate_points() {
-        let want = [
-            Point::new(-1.0, 0.0),
-            Point::new(0.2, 0.8),
-            Point::new(1.0, -0.5),
-        ];
+        let want = [[-1.0, 0.0], [0.2, 0.8], [1.0, -0.5]];
         for text in [
             "-1,0 0.2,0.8 1,-0.5",
             "-1,0;0.2,0.8;1,-0.5",
@@ -202,10 +200,10 @@ mod tests {
         assert_eq!(
             parse_space_points("0,0,0 1,0,0; 2, 1, 0.5 -2,2,-1e0").unwrap(),
             [
-                Vec3::new(0.0, 0.0, 0.0),
-                Vec3::new(1.0, 0.0, 0.0),
-                Vec3::new(2.0, 1.0, 0.5),
-                Vec3::new(-2.0, 2.0, -1.0)
+                [0.0, 0.0, 0.0],
+                [1.0, 0.0, 0.0],
+                [2.0, 1.0, 0.5],
+                [-2.0, 2.0, -1.0]
             ]
         );
         for text in [
@@ -228,6 +226,6 @@ mod tests {
     #[test]
     fn nan_parses_so_the_library_can_name_the_coordinate() {
         let p = parse_points("nan,0 1,1 2,0").unwrap();
-        assert!(p[0].x.is_nan());
+        assert!(p[0][0].is_nan());
     }
 }

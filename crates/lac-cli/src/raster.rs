@@ -10,10 +10,10 @@ use std::sync::Arc;
 use resvg::tiny_skia::{Color, Pixmap, Transform};
 use resvg::usvg::{fontdb, Options, Tree};
 
-use crate::failure::Failure;
+use lac_io::json::ErrorBody;
 
 /// The PNG of `svg`, with the system's fonts.
-pub(crate) fn png(svg: &str) -> Result<Vec<u8>, Failure> {
+pub(crate) fn png(svg: &str) -> Result<Vec<u8>, ErrorBody> {
     render_png(svg, system_fonts())
 }
 
@@ -66,9 +66,9 @@ fn sans_family<'a>(installed: &[&'a str]) -> Option<&'a str> {
 }
 
 /// The PNG of `svg` with text in `fonts`, on white.
-fn render_png(svg: &str, fonts: Arc<fontdb::Database>) -> Result<Vec<u8>, Failure> {
+fn render_png(svg: &str, fonts: Arc<fontdb::Database>) -> Result<Vec<u8>, ErrorBody> {
     let failed = |what: &str, e: &dyn std::fmt::Display| {
-        Failure::io(what, None, &io::Error::other(e.to_string()))
+        crate::errors::io(what, None, &io::Error::other(e.to_string()))
     };
     let options = Options {
         fontdb: fonts,

@@ -1,51 +1,44 @@
 //! `lac segment`: one segment from `--points` and `--alpha`, or many with `--batch`.
 
-use kurbo::Point;
+use std::sync::Arc;
+
 use lac::Curve;
-use lac::Segment;
-use serde::Deserialize;
+use lac_io::json::{parse, to_line, ErrorBody, Report, SegmentInput, SegmentReport};
 
 use crate::batch;
-use crate::cli::{CurveFormat, SegmentArgs};
-use crate::failure::Failure;
-use crate::output::write_to;
-use crate::points::parse_points;
-use crate::report::SegmentReport;
+use crate::cli::{CurveFormat, CurveOutput, SegmentArgs};
+use crate::errors;
+use crate::limits::Limits;
+use crate::output::write_document;
+use crate::points::{kurbo_points, parse_points};
 use crate::svg::{self, Extras};
-
-/// The shape of a `--batch` line, for error messages.
-const JOB_SHAPE: &str = r#"{"points":[[x,y],[x,y],[x,y]],"alpha":A}"#;
-
-/// One `--batch` line: `{"points":[[x,y],[x,y],[x,y]],"alpha":A}`.
-#[derive(Debug, Deserialize)]
-struct Job {
-    points: [[f64; 2]; 3],
-    alpha: f64,
-}
 
 /// Run `lac segment`.
 ///
 /// With `--points` the whole result is computed before the output file is created, so a
 /// failed run leaves an existing file untouched; `--batch` streams its lines.
-pub(crate) fn run(args: &SegmentArgs) -> Result<(), Failure> {
+pub(crate) fn run(args: &SegmentArgs, limits: Limits) -> Result<(), ErrorBody> {
     let output = &args.output;
-    output.check(args.batch.is_some())?;
-    let samples = output.samples as usize;
+    check_output(output, args.batch.is_some())?;
+    let samples = limits.samples(output.samples as usize, "--samples")?;
     if let Some(input) = &args.batch {
-        let reader = batch::open(input)?;
-        return write_to(output.file.as_deref(), |out| {
-            batch::run(reader, input, out, |text| solve_job(text, samples))
-        });
+        let solve: batch::Solve = Arc::new(move |text| solve_line(text, samples));
+        let window = batch::window(samples);
+        return batch::run(input, output.file.as_deref(), limits, window, solve);
     }
     let (Some(text), Some(alpha)) = (&args.points, args.alpha) else {
-        return Err(Failure::usage("give --points and --alpha, or --batch FILE"));
+        return Err(errors::usage("give --points and --alpha, or --batch FILE"));
     };
-    let points = parse_points(text)?;
+    let input = SegmentInput {
+        points: parse_points(text)?,
+        alpha,
+    };
+    let segment = input.solve()?;
+    let report = || SegmentReport::new(&segment, samples).map(|r| r.with_points(input.points));
     let document = match output.format {
-        CurveFormat::Json => SegmentReport::solve(points, alpha, samples)?.to_json_line() + "\n",
-        CurveFormat::Csv => SegmentReport::solve(points, alpha, samples)?.to_csv(),
+        CurveFormat::Json => to_line(&report()?) + "\n",
+        CurveFormat::Csv => report()?.to_csv(),
         CurveFormat::Svg => {
-            let segment = Segment::from_control_points(points, alpha)?;
             let extras = Extras {
                 comb: output
                     .comb
@@ -53,17 +46,33 @@ pub(crate) fn run(args: &SegmentArgs) -> Result<(), Failure> {
                     .transpose()?,
                 evolute: output.evolute,
             };
-            svg::render(std::slice::from_ref(&segment), &points, extras)?
+            svg::render(
+                std::slice::from_ref(&segment),
+                &kurbo_points(&input.points),
+                extras,
+            )?
         }
     };
-    write_to(output.file.as_deref(), |out| {
-        out.write_all(document.as_bytes())
-    })
+    write_document(output.file.as_deref(), document.as_bytes())
 }
 
 /// The output line for one `--batch` line: the report, or why there is none.
-pub(crate) fn solve_job(text: &str, samples: usize) -> Result<String, Failure> {
-    let job: Job = batch::parse_job(text, JOB_SHAPE)?;
-    let points = job.points.map(|[x, y]| Point::new(x, y));
-    Ok(SegmentReport::solve(points, job.alpha, samples)?.to_json_line())
+fn solve_line(text: &str, samples: usize) -> Result<String, ErrorBody> {
+    let input: SegmentInput = parse(text, SegmentInput::SHAPE)?;
+    let report = SegmentReport::new(&input.solve()?, samples)?.with_points(input.points);
+    Ok(to_line(&report.checked()?))
+}
+
+/// Reject combinations of output flags that would be silently ignored; `batch`: is
+/// `--batch` given?
+pub(crate) fn check_output(output: &CurveOutput, batch: bool) -> Result<(), ErrorBody> {
+    if batch && output.format != CurveFormat::Json {
+        return Err(errors::usage(
+            "--batch writes JSON lines; --format csv and svg need --points",
+        ));
+    }
+    if (output.comb || output.evolute) && output.format != CurveFormat::Svg {
+        return Err(errors::usage("--comb and --evolute draw; add --format svg"));
+    }
+    Ok(())
 }

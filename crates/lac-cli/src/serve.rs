@@ -4,11 +4,11 @@ use std::net::SocketAddr;
 use std::process::{Command, Stdio};
 
 use crate::cli::ServeArgs;
-use crate::failure::Failure;
+use lac_io::json::ErrorBody;
 
 /// Run `lac serve`: bind, print the URL (and open it with `--open`), serve until
 /// interrupted.
-pub(crate) fn run(args: &ServeArgs) -> Result<(), Failure> {
+pub(crate) fn run(args: &ServeArgs) -> Result<(), ErrorBody> {
     let addr = SocketAddr::new(args.host, args.port);
     lac_serve::run(
         addr,
@@ -24,7 +24,6 @@ pub(crate) fn run(args: &ServeArgs) -> Result<(), Failure> {
             }
         },
     )
-    .map_err(|e| Failure::new(e.kind, e.message))
 }
 
 /// Ask the desktop to open `url`, without waiting for the browser.

@@ -1,50 +1,75 @@
 //! `lac space`: a log-aesthetic space curve segment (seed 003, SPEC §6) from four 3-D control
-//! points, α, β, Ω and the torsion type, as JSON, SVG, OBJ or PLY.
+//! points, α, β, Ω and the torsion type, as JSON, CSV, SVG, OBJ or PLY; or many with
+//! `--batch`.
 
-use lac::{SpaceSegment, SpaceShape, TorsionType, Vec3};
-use lac_io::json::{to_line, SpaceReport, PLANAR_NOTE};
+use std::sync::Arc;
 
+use lac::{SpaceSegment, Vec3};
+use lac_io::json::{parse, to_line, ErrorBody, SpaceInput, SpaceReport, PLANAR_NOTE};
+
+use crate::batch;
 use crate::cli::{SpaceArgs, SpaceFormat};
-use crate::failure::Failure;
+use crate::errors;
+use crate::limits::Limits;
 use crate::mesh;
-use crate::output::write_to;
+use crate::output::write_document;
 use crate::points::parse_space_points;
 use crate::svg;
 
 /// Run `lac space`.
 ///
-/// The whole result is computed before the output file is created, so a failed run leaves
-/// an existing file untouched.
-pub(crate) fn run(args: &SpaceArgs) -> Result<(), Failure> {
-    if args.frames && args.format != SpaceFormat::Json {
-        return Err(Failure::usage(
-            "--frames adds the Frenet frames to the JSON samples; use it with --format json",
+/// With `--points` the whole result is computed before the output file is created, so a
+/// failed run leaves an existing file untouched; `--batch` streams its lines.
+pub(crate) fn run(args: &SpaceArgs, limits: Limits) -> Result<(), ErrorBody> {
+    if args.frames && !matches!(args.format, SpaceFormat::Json | SpaceFormat::Csv) {
+        return Err(errors::usage(
+            "--frames adds the Frenet frames to the samples; use it with --format json or csv",
         ));
     }
-    let points = parse_space_points(&args.points)?;
-    let shape = SpaceShape {
-        alpha: args.alpha,
-        beta: args.beta,
-        omega: args.omega,
-        torsion: TorsionType::from_number(args.torsion_type)?,
+    let samples = limits.samples(args.samples as usize, "--samples")?;
+    let frames = args.frames;
+    if let Some(input) = &args.batch {
+        if args.format != SpaceFormat::Json {
+            return Err(errors::usage(
+                "--batch writes JSON lines; --format csv, svg, obj and ply need --points",
+            ));
+        }
+        let solve: batch::Solve = Arc::new(move |text| solve_line(text, samples, frames));
+        // A sample with its frame holds about three times the numbers.
+        let window = batch::window(samples * if frames { 3 } else { 1 });
+        return batch::run(input, args.file.as_deref(), limits, window, solve);
+    }
+    let (Some(text), Some(alpha), Some(beta)) = (&args.points, args.alpha, args.beta) else {
+        return Err(errors::usage(
+            "give --points, --alpha and --beta, or --batch FILE",
+        ));
     };
-    let segment = SpaceSegment::from_control_points(points, shape)?;
-    let samples = args.samples as usize;
+    let input = SpaceInput {
+        points: parse_space_points(text)?,
+        alpha,
+        beta,
+        omega: args.omega,
+        torsion_type: args.torsion_type,
+    };
+    let segment = input.solve()?;
     let document = match args.format {
-        SpaceFormat::Json => to_json_line(&segment, samples, args.frames)? + "\n",
+        SpaceFormat::Json => to_line(&SpaceReport::new(&segment, samples, frames)?) + "\n",
+        SpaceFormat::Csv => SpaceReport::new(&segment, samples, frames)?.to_csv(),
         SpaceFormat::Svg => svg::space::render(&segment)?,
         SpaceFormat::Obj => mesh::obj(&segment.sample(samples)?, &header(&segment, samples)),
         SpaceFormat::Ply => mesh::ply(&segment.sample(samples)?, &header(&segment, samples)),
     };
-    write_to(args.file.as_deref(), |out| {
-        out.write_all(document.as_bytes())
-    })
+    write_document(args.file.as_deref(), document.as_bytes())
 }
 
-fn to_json_line(segment: &SpaceSegment, samples: usize, frames: bool) -> Result<String, Failure> {
-    let report =
-        SpaceReport::new(segment, samples, frames).map_err(|e| Failure::new(e.kind, e.message))?;
-    Ok(to_line(&report))
+/// The output line for one `--batch` line: the report, or why there is none.
+fn solve_line(text: &str, samples: usize, frames: bool) -> Result<String, ErrorBody> {
+    let input: SpaceInput = parse(text, SpaceInput::SHAPE)?;
+    Ok(to_line(&SpaceReport::new(
+        &input.solve()?,
+        samples,
+        frames,
+    )?))
 }
 
 /// The comment lines of OBJ and PLY files: what was solved and how to read the numbers.

@@ -574,6 +574,59 @@ fn lcg_drawings_are_clean() {
 }
 
 #[test]
+fn lcg_drawings_of_space_curves_and_of_curvature_that_is_not_monotone_are_clean() {
+    let space = |points: &'static str, rest: &[&'static str]| -> Vec<&'static str> {
+        let mut args = vec!["space", "--points", points];
+        args.extend_from_slice(rest);
+        args
+    };
+    let cases = [
+        space(
+            "0,0,0 3,0,0 3,3,1.5 0,3,3",
+            &["--alpha", "0.5", "--beta", "0", "--omega", "0.3"],
+        ),
+        space(
+            "0,0,0 3e-6,0,0 3e-6,3e-6,1.5e-6 0,3e-6,3e-6",
+            &[
+                "--alpha",
+                "-0.123456789",
+                "--beta",
+                "0.987654321",
+                "--omega",
+                "0.0123456789",
+                "--type",
+                "2",
+            ],
+        ),
+        // No torsion graph (Ω = 0), and a planar segment with neither a torsion graph nor
+        // (a circular arc) a curvature graph.
+        space(
+            "0,0,0 3,0,0 3,3,1.5 0,3,3",
+            &["--alpha", "0.5", "--beta", "0"],
+        ),
+        space(
+            "0,0,0 1,0,0 2,1,0 2,2,0",
+            &["--alpha", "0.5", "--beta", "0", "--omega", "0.3"],
+        ),
+    ];
+    check_all(&cases.iter().map(Vec::as_slice).collect::<Vec<_>>(), true);
+    let fonts = dejavu();
+    for document in [
+        r#"{"pieces":[{"points":[[0,0],[1.2,0],[2,0.4],[2.4,1]]},{"points":[[0,0],[1.2,0],[2,-0.4],[2.4,-1]]}]}"#,
+        r#"{"pieces":[{"points":[[0,0],[1,1],[2,-1],[3,0]]}]}"#,
+    ] {
+        let run = lac_with_input(&["lcg", "--format", "svg"], document.as_bytes());
+        assert_eq!(run.code, 0, "{}", run.stderr);
+        let found = problems(&run.stdout, &fonts);
+        assert!(
+            found.is_empty(),
+            "lac lcg of {document}:\n  {}",
+            found.join("\n  ")
+        );
+    }
+}
+
+#[test]
 fn space_drawings_are_clean() {
     let space = |points: &'static str, rest: &[&'static str]| -> Vec<&'static str> {
         let mut args = vec!["space", "--points", points, "--format", "svg"];

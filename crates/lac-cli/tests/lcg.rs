@@ -257,7 +257,7 @@ fn bad_input_is_a_one_line_json_error() {
             2,
             "invalid_input",
         ),
-        (r#"{"pieces":[]}"#, &[], 2, "out_of_range"),
+        (r#"{"pieces":[]}"#, &[], 2, "invalid_input"),
         (
             r#"{"pieces":[{"points":[[0,0],[1,0],[1,1],[2,1]],"weights":[1,0,1,1]}]}"#,
             &[],
@@ -290,4 +290,160 @@ fn bad_input_is_a_one_line_json_error() {
     assert_failure(&lac(&["lcg", "--samples", "1"]), 2, "usage");
     let missing = lac(&["lcg", "/nonexistent/lcg.json"]);
     assert_failure(&missing, 1, "io");
+}
+
+#[test]
+fn a_compound_curve_gets_each_pieces_own_line_as_well_as_the_whole() {
+    let compound = stdout(&[
+        "compound",
+        "--points",
+        "0,0 2,0 2.5,2 0,1.5",
+        "--alpha0",
+        "-1",
+        "--alpha1",
+        "2",
+    ]);
+    let c: Value = serde_json::from_str(&compound).unwrap();
+    let v = lcg_json(&compound, &[]);
+    let pieces = v["pieces"].as_array().expect("pieces");
+    assert_eq!(pieces.len(), 2);
+    for (piece, alpha) in pieces.iter().zip([-1.0, 2.0]) {
+        let fit = &piece["fit"];
+        assert!((f(&fit["alpha"]) - alpha).abs() < 1e-9, "{piece}");
+        assert!(f(&fit["rms_residual"]) < 1e-9, "{piece}");
+    }
+    let joint = f(&c["joint_s"]);
+    assert_eq!(f(&pieces[0]["s"][0]), 0.0);
+    assert!((f(&pieces[0]["s"][1]) - joint).abs() < 1e-13 * joint);
+    assert_eq!(pieces[0]["s"][1], pieces[1]["s"][0]);
+    assert!((f(&pieces[1]["s"][1]) - f(&c["arc_length"])).abs() < 1e-13);
+    // The whole curve's line is still there, and a segment has no "pieces".
+    assert!(v["fit"]["alpha"].is_f64());
+    let segment = stdout(&["segment", "--points", POINTS, "--alpha", "0.5"]);
+    assert!(lcg_json(&segment, &[]).get("pieces").is_none());
+    // The drawing shows both pieces' lines and their slopes.
+    let svg = lcg(&compound, &["--format", "svg"]).stdout;
+    assert_eq!(svg.matches(r#"class="piece-fit""#).count(), 2);
+    assert_eq!(svg.matches(r#"class="fit""#).count(), 1);
+    assert!(svg.contains("piece\u{a0}1 α\u{a0}=\u{a0}-1") && svg.contains("α\u{a0}=\u{a0}2"));
+}
+
+/// Two proven-monotone cubics whose curvature runs in opposite directions (the second is the
+/// mirror image of the first), and an S-shaped cubic.
+const OPPOSITE: &str = r#"{"pieces":[{"points":[[0,0],[1.2,0],[2,0.4],[2.4,1]]},{"points":[[0,0],[1.2,0],[2,-0.4],[2.4,-1]]}]}"#;
+const S_CURVE: &str = r#"{"pieces":[{"points":[[0,0],[1,1],[2,-1],[3,0]]}]}"#;
+
+#[test]
+fn a_curvature_that_is_not_monotone_gets_no_slope_and_says_so() {
+    for (input, why) in [(OPPOSITE, "piece 1 of 2"), (S_CURVE, "piece 1 of 1")] {
+        let run = lcg(input, &[]);
+        assert_eq!(run.code, 0, "{}", run.stderr);
+        let v = json(&run);
+        assert_eq!(v["fit"], Value::Null, "{input}");
+        assert_eq!(v["monotone"], false);
+        let note = v["note"].as_str().unwrap();
+        assert!(
+            note.contains("not monotone") && note.contains(why),
+            "{note}"
+        );
+        // The graph's points are still there.
+        assert!(points(&v).iter().any(|p| p["log_rho"].is_f64()));
+        let csv = lcg(input, &["--format", "csv"]).stdout;
+        assert_eq!(csv.lines().next(), Some(format!("# {note}").as_str()));
+        assert_eq!(
+            csv.lines().nth(1),
+            Some("s,kappa,dkappa_ds,log_rho,log_lcg")
+        );
+        let svg = lcg(input, &["--format", "svg"]).stdout;
+        assert!(svg.contains("no line: the curvature is not monotone"));
+        assert!(!svg.contains(r#"class="fit""#) && !svg.contains("α = "));
+    }
+    // A monotone curve says nothing of the kind.
+    let segment = stdout(&["segment", "--points", POINTS, "--alpha", "0.5"]);
+    let v = lcg_json(&segment, &[]);
+    assert!(v.get("monotone").is_none() && v.get("note").is_none());
+    let csv = lcg(&segment, &["--format", "csv"]).stdout;
+    assert!(csv.starts_with("s,kappa"));
+}
+
+/// `lac space` output for these points, slopes and Ω.
+fn space(points: &str, alpha: &str, beta: &str, omega: &str) -> String {
+    stdout(&[
+        "space", "--points", points, "--alpha", alpha, "--beta", beta, "--omega", omega,
+    ])
+}
+
+const SPACE_POINTS: &str = "0,0,0 3,0,0 3,3,1.5 0,3,3";
+
+#[test]
+fn a_space_curve_gives_its_curvature_and_torsion_graphs_with_slopes_alpha_and_beta() {
+    for (alpha, beta) in [("0.5", "-0.5"), ("-1", "1"), ("2", "0")] {
+        let input = space(SPACE_POINTS, alpha, beta, "0.3");
+        let run = lcg(&input, &["--samples", "65"]);
+        assert_eq!(run.code, 0, "{}", run.stderr);
+        let v = json(&run);
+        common::assert_keys(&run.stdout, &v, &["curvature", "torsion"]);
+        for (graph, want) in [("curvature", alpha), ("torsion", beta)] {
+            let g = &v[graph];
+            assert_eq!(g["points"].as_array().unwrap().len(), 65);
+            let fit = &g["fit"];
+            let want: f64 = want.parse().unwrap();
+            assert!((f(&fit["slope"]) - want).abs() < 1e-9, "{graph}: {fit}");
+            assert!(f(&fit["rms_residual"]) < 1e-9);
+        }
+        let csv = lcg(&input, &["--samples", "9", "--format", "csv"]).stdout;
+        let lines: Vec<&str> = csv.lines().collect();
+        assert_eq!(lines[0], "s,log_rho,log_lcg,log_mu,log_ltg");
+        assert_eq!(lines.len(), 10);
+        assert!(lines[1..]
+            .iter()
+            .all(|l| l.split(',').all(|c| c.parse::<f64>().is_ok())));
+        let svg = lcg(&input, &["--format", "svg"]).stdout;
+        assert!(svg.contains("Logarithmic curvature graph"));
+        assert!(svg.contains("Logarithmic torsion graph"));
+        assert!(svg.contains(&format!("α = {alpha} (rms")), "{alpha}");
+        assert!(svg.contains(&format!("β = {beta} (rms")), "{beta}");
+        assert_eq!(svg.matches(r#"class="fit""#).count(), 2);
+    }
+    // Ω = 0: the radius of torsion is constant, so there is no torsion graph; coplanar
+    // points: the planar segment, no torsion at all.
+    for (input, why) in [
+        (space(SPACE_POINTS, "0.5", "0", "0"), "Ω = 0"),
+        (
+            space("0,0,0 1,0,0 2,0.5,0 2.5,2,0", "0.5", "0", "0.3"),
+            "coplanar",
+        ),
+    ] {
+        let v = lcg_json(&input, &[]);
+        assert!(v["torsion"]["points"].as_array().unwrap().is_empty());
+        assert_eq!(v["torsion"]["fit"], Value::Null);
+        assert!((f(&v["curvature"]["fit"]["slope"]) - 0.5).abs() < 1e-9);
+        assert!(v["note"].as_str().unwrap().contains(why), "{v}");
+        let svg = lcg(&input, &["--format", "svg"]).stdout;
+        assert!(svg.contains("no graph: the radius of torsion is constant"));
+    }
+}
+
+#[test]
+fn the_number_of_curvature_points_is_limited() {
+    let segment = stdout(&["segment", "--points", POINTS, "--alpha", "0.5"]);
+    let message = assert_failure(&lcg(&segment, &["--samples", "1000001"]), 2, "limit");
+    assert!(message.contains("--allow-large"), "{message}");
+    // For Bézier pieces the limit is on the points of all pieces together.
+    let quasi = stdout(&[
+        "quasi",
+        "--points",
+        POINTS,
+        "--alpha",
+        "-1",
+        "--tolerance",
+        "1e-9",
+    ]);
+    let pieces = serde_json::from_str::<Value>(&quasi).unwrap()["pieces"]
+        .as_array()
+        .unwrap()
+        .len();
+    assert!(pieces >= 2);
+    let per_piece = (1_000_000 / pieces + 2).to_string();
+    assert_failure(&lcg(&quasi, &["--samples", &per_piece]), 2, "limit");
 }

@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{assert_failure, json, lac};
+use common::{assert_failure, json, lac, lac_with_input};
 use kurbo::Point;
 use lac::RationalCubic;
 use serde_json::Value;
@@ -110,4 +110,86 @@ fn bad_input_is_a_one_line_json_error_with_exit_code_2() {
     for (args, kind) in cases {
         assert_failure(&lac(args), 2, kind);
     }
+}
+
+#[test]
+fn lac_monotone_reads_what_lac_quasi_prints_and_judges_every_piece() {
+    let quasi = lac(&[
+        "quasi",
+        "--points",
+        "0,0 3,0 4.2,1.9",
+        "--alpha",
+        "0.5",
+        "--tolerance",
+        "1e-7",
+    ]);
+    assert_eq!(quasi.code, 0, "{}", quasi.stderr);
+    let q: Value = serde_json::from_str(&quasi.stdout).unwrap();
+    let pieces = q["pieces"].as_array().unwrap();
+    assert!(pieces.len() >= 2);
+    let run = lac_with_input(&["monotone"], quasi.stdout.as_bytes());
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert_eq!(run.stdout.lines().count(), 1);
+    let v = json(&run);
+    common::assert_keys(&run.stdout, &v, &["pieces"]);
+    let verdicts = v["pieces"].as_array().unwrap();
+    assert_eq!(verdicts.len(), pieces.len());
+    for (verdict, piece) in verdicts.iter().zip(pieces) {
+        // The same verdict as lac quasi's, and as --points/--weights give for the piece.
+        assert_eq!(verdict["verdict"], piece["monotone"]);
+        assert_eq!(verdict["proven"], piece["proven"]);
+        let points: Vec<String> = piece["points"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| format!("{},{}", p[0], p[1]))
+            .collect();
+        let weights: Vec<String> = piece["weights"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(Value::to_string)
+            .collect();
+        let single = monotone(&[
+            "--points",
+            &points.join(" "),
+            "--weights",
+            &weights.join(","),
+        ]);
+        assert_eq!(&single, verdict);
+    }
+    // From a file, "-" for standard input, and one piece as a document.
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("quasi.json");
+    std::fs::write(&path, &quasi.stdout).unwrap();
+    assert_eq!(
+        lac(&["monotone", path.to_str().unwrap()]).stdout,
+        run.stdout
+    );
+    assert_eq!(
+        lac_with_input(&["monotone", "-"], quasi.stdout.as_bytes()).stdout,
+        run.stdout
+    );
+    let piece = r#"{"points":[[0,0],[1,1],[2,-1],[3,0]]}"#;
+    let one = lac_with_input(&["monotone"], piece.as_bytes());
+    assert_eq!(one.stdout, lac(&["monotone", "--points", S_CURVE]).stdout);
+}
+
+#[test]
+fn a_monotone_document_that_cannot_be_read_is_a_json_error() {
+    assert_failure(&lac_with_input(&["monotone"], b"{"), 2, "invalid_input");
+    assert_failure(
+        &lac_with_input(&["monotone"], br#"{"pieces":[]}"#),
+        2,
+        "invalid_input",
+    );
+    assert_failure(&lac(&["monotone", "/nonexistent/quasi.json"]), 1, "io");
+    let message = assert_failure(&lac_with_input(&["monotone"], b"  \n"), 2, "usage");
+    assert!(message.contains("lac quasi"), "{message}");
+    // A FILE and --points are two inputs.
+    assert_failure(
+        &lac(&["monotone", "x.json", "--points", SPIRAL]),
+        2,
+        "usage",
+    );
 }

@@ -95,10 +95,27 @@ fn size_and_alpha_are_checked() {
         2,
         "usage",
     );
-    assert_failure(
-        &lac(&["region", "--alpha", "0.5", "--size", "8193"]),
+    // The work limit: 2048 pixels a side (about 10 s), 8192 with --allow-large.
+    let message = assert_failure(
+        &lac(&["region", "--alpha", "0.5", "--size", "2049"]),
         2,
-        "usage",
+        "limit",
+    );
+    assert!(
+        message.contains("2,048") && message.contains("--allow-large"),
+        "{message}"
+    );
+    assert_failure(
+        &lac(&[
+            "region",
+            "--alpha",
+            "0.5",
+            "--size",
+            "8193",
+            "--allow-large",
+        ]),
+        2,
+        "limit",
     );
     assert_failure(
         &lac(&["region", "--alpha", "nan", "--format", "json"]),
@@ -106,13 +123,22 @@ fn size_and_alpha_are_checked() {
         "non_finite",
     );
     assert_failure(&lac(&["region"]), 2, "usage");
+    // A slope no curve takes is said so, not drawn as an empty map.
+    for args in [
+        &["region", "--alpha", "1e308", "--size", "4"][..],
+        &[
+            "region", "--alpha0", "1", "--alpha1", "-2e6", "--ratio", "0.5", "--size", "4",
+        ],
+    ] {
+        assert_failure(&lac(args), 2, "out_of_range");
+    }
 }
 
 #[test]
 fn compound_regions_are_16_by_16_and_a_mountain_mirrors_the_valley() {
     let grid = |alpha0: &str, alpha1: &str, ratio: &str| {
         let run = lac(&[
-            "region", "--alpha", alpha0, "--alpha1", alpha1, "--ratio", ratio, "--size", "16",
+            "region", "--alpha0", alpha0, "--alpha1", alpha1, "--ratio", ratio, "--size", "16",
             "--format", "json",
         ]);
         assert_eq!(run.code, 0, "{}", run.stderr);
@@ -148,22 +174,47 @@ fn compound_regions_are_16_by_16_and_a_mountain_mirrors_the_valley() {
 
 #[test]
 fn compound_region_flags_come_together_and_are_checked() {
-    let base = ["region", "--alpha", "-1", "--size", "4", "--format", "json"];
+    let base = ["region", "--size", "4", "--format", "json"];
     let with = |extra: &[&str]| lac(&[&base[..], extra].concat());
-    assert_failure(&with(&["--alpha1", "2"]), 2, "usage");
-    assert_failure(&with(&["--ratio", "0.5"]), 2, "usage");
+    assert_failure(&with(&["--alpha0", "-1", "--alpha1", "2"]), 2, "usage");
+    assert_failure(&with(&["--alpha0", "-1", "--ratio", "0.5"]), 2, "usage");
+    assert_failure(&with(&["--alpha", "-1", "--ratio", "0.5"]), 2, "usage");
     for ratio in ["0", "1", "1.5"] {
         assert_failure(
-            &with(&["--alpha1", "2", "--ratio", ratio]),
+            &with(&["--alpha0", "-1", "--alpha1", "2", "--ratio", ratio]),
             2,
             "out_of_range",
         );
     }
     assert_failure(
-        &with(&["--alpha1", "nan", "--ratio", "0.5"]),
+        &with(&["--alpha0", "-1", "--alpha1", "nan", "--ratio", "0.5"]),
         2,
         "non_finite",
     );
-    let v = json(&with(&[]));
+    let v = json(&with(&["--alpha", "-1"]));
     assert!(v.get("alpha1").is_none() && v.get("ratio").is_none());
+}
+
+#[test]
+fn the_old_spelling_of_compound_slopes_is_a_usage_error_that_names_the_new_one() {
+    // `lac region` once took --alpha A --alpha1 B; every subcommand now says --alpha0.
+    let run = lac(&[
+        "region", "--alpha", "-1", "--alpha1", "2", "--ratio", "0.5", "--size", "4", "--format",
+        "json",
+    ]);
+    let message = assert_failure(&run, 2, "usage");
+    assert!(
+        message.contains("--alpha0 A --alpha1 B --ratio R"),
+        "{message}"
+    );
+    let help = lac(&["region", "--help"]).stdout;
+    for flag in [
+        "--alpha ",
+        "--alpha0",
+        "--alpha1",
+        "--ratio",
+        "-o, --output",
+    ] {
+        assert!(help.contains(flag), "{flag} in region --help");
+    }
 }

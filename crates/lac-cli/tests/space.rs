@@ -35,6 +35,17 @@ fn solved(points: &str, extra: &[&str]) -> (Value, String) {
     (json(&run), run.stdout)
 }
 
+/// The report without the input it repeats at its end (`points`, `alpha`, `beta`, `omega`,
+/// `type`), and the text of that input.
+fn without_input<'a>(v: &Value, text: &'a str) -> (Value, &'a str) {
+    let mut head = v.clone();
+    for key in ["points", "alpha", "beta", "omega", "type"] {
+        assert!(head.as_object_mut().unwrap().remove(key).is_some(), "{key}");
+    }
+    let input = &text[text.rfind(r#""points":"#).unwrap()..];
+    (head, input.trim_end())
+}
+
 fn f(v: &Value) -> f64 {
     v.as_f64().unwrap_or_else(|| panic!("{v} is not a number"))
 }
@@ -134,9 +145,15 @@ fn assert_samples_span_the_points(v: &Value, points: [Vec3; 4], n: usize) {
 #[test]
 fn json_has_the_documented_keys_in_order() {
     let (v, text) = solved(PLAIN, &["--alpha", "0", "--beta", "0"]);
+    let (head, input) = without_input(&v, &text);
+    assert_eq!(
+        input,
+        r#""points":[[0.0,0.0,0.0],[1.0,0.0,0.0],[2.0,1.0,0.3],[2.0,2.0,1.0]],"alpha":0.0,"beta":0.0,"omega":0.0,"type":1}"#,
+        "the input as given, last, so that the report reads back as its input"
+    );
     assert_keys(
         &text,
-        &v,
+        &head,
         &[
             "standard_form",
             "transform",
@@ -329,9 +346,11 @@ fn frames_adds_orthonormal_frenet_frames() {
 #[test]
 fn coplanar_points_give_the_planar_segment_with_a_note() {
     let (v, text) = solved("0,0,0 1,0,0 2,1,0 2,2,0", &["--alpha", "0", "--beta", "0"]);
+    let (head, input) = without_input(&v, &text);
+    assert!(input.starts_with(r#""points":[[0.0,0.0,0.0],"#), "{input}");
     assert_keys(
         &text,
-        &v,
+        &head,
         &[
             "standard_form",
             "transform",

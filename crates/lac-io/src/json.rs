@@ -761,6 +761,17 @@ pub struct LcgReport {
     /// The line fitted to the whole graph; `null` for a circle (no graph) or when the
     /// curvature is not monotone (then `note` says so).
     pub fit: Option<FitRow>,
+    /// A curve of several log-aesthetic pieces (a compound curve): each piece's graph with
+    /// its own fitted line, in order; absent for one piece and for Bézier pieces.
+    #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    pub pieces: Vec<PieceFitRow>,
+    /// `false` when the curvature is not monotone (its graph is not one line, so `fit` is
+    /// `null` and `note` says where); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub monotone: Option<bool>,
+    /// Why there is no fitted line although the graph has points.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub note: Option<String>,
 }
 
 /// Where the middle control point may go: `lac region --format json`.
@@ -794,14 +805,14 @@ pub struct RegionReport {
 impl LcgReport {
     /// The plot of `plot` (a log-aesthetic curve's [`Curve::curvature_plot`] or a Bézier
     /// chain's [`lac::curvature_plot`]) with the line fitted to its logarithmic curvature
-    /// graph ([`lac::log_curvature_graph`]).
+    /// graph ([`lac::log_curvature_graph`]); no line when the plot shows that the curvature
+    /// is not monotone ([`LcgReport::of_pieces`] decides that for Bézier pieces with a
+    /// proof).
     pub fn new(plot: &[CurvaturePoint]) -> Self {
-        LcgReport {
-            points: plot.iter().map(PlotRow::from).collect(),
-            fit: lac::log_curvature_graph(plot)
-                .fit
-                .as_ref()
-                .map(FitRow::from),
+        let report = LcgReport::fitted(plot);
+        match plot_not_monotone(plot) {
+            Some(why) => report.not_monotone(why),
+            None => report,
         }
     }
 }
@@ -812,10 +823,15 @@ impl Report for LcgReport {
             all_finite([p.s, p.kappa, p.dkappa_ds])
                 && p.log_rho.is_none_or(f64::is_finite)
                 && p.log_lcg.is_none_or(f64::is_finite)
-        }) && self.fit.as_ref().is_none_or(|f| {
-            all_finite([f.alpha, f.intercept, f.rms_residual, f.max_residual])
-                && all_finite(f.log_rho)
-        })
+        }) && self
+            .fit
+            .iter()
+            .chain(self.pieces.iter().filter_map(|p| p.fit.as_ref()))
+            .all(|f| {
+                all_finite([f.alpha, f.intercept, f.rms_residual, f.max_residual])
+                    && all_finite(f.log_rho)
+            })
+            && self.pieces.iter().all(|p| all_finite(p.s))
     }
 }
 
@@ -1197,6 +1213,10 @@ pub struct SpaceReport {
     /// Why the result is planar.
     #[serde(skip_serializing_if = "Option::is_none", default)]
     pub note: Option<String>,
+    /// What was solved, as given: `"points"`, `"alpha"`, `"beta"`, `"omega"`, `"type"`, so
+    /// that a report reads back as its input (`lac lcg` reads `lac space` output).
+    #[serde(flatten)]
+    pub input: SpaceInput,
 }
 
 impl SpaceReport {
@@ -1237,6 +1257,7 @@ impl SpaceReport {
                 },
             ),
             note: segment.is_planar().then(|| PLANAR_NOTE.to_string()),
+            input: SpaceInput::of(segment),
         }
         .checked()
     }
@@ -1258,6 +1279,8 @@ impl Report for SpaceReport {
                 all_finite([p.alpha, p.lambda])
                     && all_finite(p.control_points.iter().flatten().copied())
             })
+            && all_finite(self.input.points.iter().flatten().copied())
+            && all_finite([self.input.alpha, self.input.beta, self.input.omega])
     }
 }
 
@@ -1333,6 +1356,469 @@ impl Report for SpaceGraphsReport {
             .iter()
             .chain(&self.torsion)
             .all(|p| all_finite([p.s, p.x, p.y]))
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// The command line's shapes (wt-cli): what `lac lcg` and `lac monotone` read, the graphs of
+// a compound curve's pieces and of a space curve, and the verdicts of a chain of pieces
+
+impl SpaceInput {
+    /// The input `segment` was solved from, as given.
+    pub fn of(segment: &SpaceSegment) -> SpaceInput {
+        let shape = segment.shape();
+        SpaceInput {
+            points: segment.control_points().map(Vec3::to_array),
+            alpha: shape.alpha,
+            beta: shape.beta,
+            omega: shape.omega,
+            torsion_type: shape.torsion.number(),
+        }
+    }
+}
+
+/// One log-aesthetic piece's logarithmic curvature graph with its own fitted line, for a
+/// curve of several pieces (`lac lcg` of a compound curve).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PieceFitRow {
+    /// The piece's arc lengths, [from, to], along the whole curve.
+    pub s: [f64; 2],
+    /// The line fitted to the piece's graph (its α); `null` for a circular arc.
+    pub fit: Option<FitRow>,
+}
+
+impl LcgReport {
+    /// The plot of a planar log-aesthetic curve at `n` points equally spaced in arc length,
+    /// with the line fitted to the whole graph and, for a curve of several pieces, each
+    /// piece's line (fitted to `n` points of its own, so that a short piece is measured as
+    /// well as a long one).
+    pub fn of_curve(curve: &dyn Curve, n: usize) -> Result<Self, ErrorBody> {
+        let mut report = LcgReport::new(&curve.curvature_plot(n)?);
+        let pieces = curve.pieces();
+        if pieces.len() > 1 {
+            let ends: Vec<f64> = curve
+                .joints()
+                .into_iter()
+                .chain([curve.arc_length()])
+                .collect();
+            let mut start = 0.0;
+            for (piece, &end) in pieces.iter().zip(&ends) {
+                let graph = lac::log_curvature_graph(&piece.curvature_plot(n)?);
+                report.pieces.push(PieceFitRow {
+                    s: [start, end],
+                    fit: graph.fit.as_ref().map(FitRow::from),
+                });
+                start = end;
+            }
+        }
+        report.checked()
+    }
+
+    /// The plot of a chain of (rational) cubic Bézier pieces, `per_piece` points a piece
+    /// equally spaced in t, with the line fitted to its graph; no line when the curvature
+    /// is not monotone, which is decided with each piece's proven verdict
+    /// ([`RationalCubic::curvature_monotonicity`]), the directions of consecutive pieces and
+    /// the jumps at their joints, and the sign of the curvature (an inflection).
+    pub fn of_pieces(pieces: &[RationalCubic], per_piece: usize) -> Result<Self, ErrorBody> {
+        let plot = lac::curvature_plot(pieces, per_piece)?;
+        let verdicts = pieces
+            .iter()
+            .map(RationalCubic::curvature_monotonicity)
+            .collect::<lac::Result<Vec<_>>>()?;
+        let report = LcgReport::fitted(&plot);
+        let why = chain_not_monotone(pieces, &verdicts).or_else(|| inflection(&plot));
+        match why {
+            Some(why) => report.not_monotone(why),
+            None => report,
+        }
+        .checked()
+    }
+
+    /// The plot and the line fitted to its graph, unchecked.
+    fn fitted(plot: &[CurvaturePoint]) -> Self {
+        LcgReport {
+            points: plot.iter().map(PlotRow::from).collect(),
+            fit: lac::log_curvature_graph(plot)
+                .fit
+                .as_ref()
+                .map(FitRow::from),
+            pieces: Vec::new(),
+            monotone: None,
+            note: None,
+        }
+    }
+
+    /// The report without its line, saying `why` the curvature is not monotone.
+    fn not_monotone(self, why: String) -> Self {
+        LcgReport {
+            fit: None,
+            monotone: Some(false),
+            note: Some(format!(
+                "the curvature is not monotone ({why}), so its logarithmic curvature graph \
+                 is not one line and no slope alpha is fitted"
+            )),
+            ..self
+        }
+    }
+}
+
+/// The plot's dκ/ds (or κ) counts as zero where it is below this share of its scale: the
+/// rounding of a circular arc's exact zero is far below it, a real change of sign far above.
+const PLOT_ZERO: f64 = 1e-9;
+
+/// Why the curvature of a sampled plot is not monotone, if it shows that: dκ/ds, made
+/// dimensionless by the plot's length and largest curvature, takes both signs beyond
+/// [`PLOT_ZERO`], or the curvature itself does.
+fn plot_not_monotone(plot: &[CurvaturePoint]) -> Option<String> {
+    let (first, last) = (plot.first()?, plot.last()?);
+    let length = (last.s - first.s).abs();
+    let kmax = plot.iter().fold(0.0f64, |m, p| m.max(p.kappa.abs()));
+    if !(length > 0.0 && length.is_finite() && kmax > 0.0 && kmax.is_finite()) {
+        return None;
+    }
+    let scale = length / kmax;
+    let mut sign = None;
+    for p in plot {
+        let d = p.dkappa_ds * scale;
+        // NaN counts as zero: it shows no direction.
+        if d.is_nan() || d.abs() <= PLOT_ZERO {
+            continue;
+        }
+        match sign {
+            None => sign = Some(d > 0.0),
+            Some(up) if up != (d > 0.0) => {
+                return Some(format!("dκ/ds changes sign near s = {}", short(p.s)))
+            }
+            _ => {}
+        }
+    }
+    inflection(plot)
+}
+
+/// Where the curvature of a plot changes sign (beyond [`PLOT_ZERO`] of its largest value).
+fn inflection(plot: &[CurvaturePoint]) -> Option<String> {
+    let kmax = plot.iter().fold(0.0f64, |m, p| m.max(p.kappa.abs()));
+    let mut sign = None;
+    for p in plot {
+        if p.kappa.is_nan() || p.kappa.abs() <= PLOT_ZERO * kmax {
+            continue;
+        }
+        match sign {
+            None => sign = Some(p.kappa > 0.0),
+            Some(left) if left != (p.kappa > 0.0) => {
+                return Some(format!(
+                    "the curvature changes sign near s = {}, an inflection",
+                    short(p.s)
+                ))
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+/// Why the curvature of a chain of pieces with these verdicts is not monotone: a piece's is
+/// proven not to be, two pieces' are proven to run in opposite directions, or it jumps the
+/// wrong way at a joint.
+fn chain_not_monotone(pieces: &[RationalCubic], verdicts: &[MonotonicityReport]) -> Option<String> {
+    let n = pieces.len();
+    let way = |up: bool| if up { "increases" } else { "decreases" };
+    // The direction so far, and the piece that set it.
+    let mut direction: Option<(bool, usize)> = None;
+    let mut follow = |up: bool, k: usize, what: &str| match direction {
+        None => {
+            direction = Some((up, k));
+            None
+        }
+        Some((was, j)) if was != up => Some(format!(
+            "it {} along piece {} of {n} and {} {what}",
+            way(was),
+            j + 1,
+            way(up)
+        )),
+        _ => None,
+    };
+    for (k, v) in verdicts.iter().enumerate() {
+        if k > 0 {
+            let (before, after) = (
+                pieces[k - 1].signed_curvature(1.0),
+                pieces[k].signed_curvature(0.0),
+            );
+            let jump = after - before;
+            if jump.abs() > PLOT_ZERO * before.abs().max(after.abs()) {
+                let at = format!("at the joint of pieces {k} and {}", k + 1);
+                if let Some(why) = follow(jump > 0.0, k, &at) {
+                    return Some(why);
+                }
+            }
+        }
+        // An unproven verdict is dκ/ds zero within rounding (a circular arc): no direction.
+        if !v.proven {
+            continue;
+        }
+        match v.verdict {
+            Monotonicity::NotMonotone { t } => {
+                return Some(format!(
+                    "dκ/ds changes sign inside piece {} of {n}, at t = {}",
+                    k + 1,
+                    short(t)
+                ))
+            }
+            Monotonicity::Constant => {}
+            Monotonicity::Increasing | Monotonicity::Decreasing => {
+                let up = v.verdict == Monotonicity::Increasing;
+                let along = format!("along piece {}", k + 1);
+                if let Some(why) = follow(up, k, &along) {
+                    return Some(why);
+                }
+            }
+        }
+    }
+    None
+}
+
+/// A number with six significant digits at most, for messages.
+pub fn short(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format!("{x}");
+    }
+    let magnitude = x.abs().log10().floor();
+    if !(-4.0..6.0).contains(&magnitude) {
+        let text = format!("{x:.5e}");
+        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+        return format!("{mantissa}e{exponent}");
+    }
+    let decimals = (5.0 - magnitude) as usize;
+    let text = format!("{x:.decimals$}");
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    }
+}
+
+/// A line fitted to a logarithmic graph, `y = slope x + intercept` over x ∈ `x` (natural
+/// logarithms): α for the curvature graph, β for the torsion graph.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LineFitRow {
+    /// The slope: α (curvature graph) or β (torsion graph).
+    pub slope: f64,
+    /// The value at x = 0.
+    pub intercept: f64,
+    /// Root mean square residual, weighted along x.
+    pub rms_residual: f64,
+    /// Largest residual.
+    pub max_residual: f64,
+    /// The range of x covered, [from, to] in the order of travel.
+    pub x: [f64; 2],
+}
+
+impl From<&LcgFit> for LineFitRow {
+    fn from(f: &LcgFit) -> Self {
+        LineFitRow {
+            slope: f.alpha,
+            intercept: f.intercept,
+            rms_residual: f.rms_residual,
+            max_residual: f.max_residual,
+            x: [f.log_rho.0, f.log_rho.1],
+        }
+    }
+}
+
+/// One logarithmic graph of a space curve, its points and its fitted line.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct GraphFitRow {
+    /// The graph's points in the order of travel (empty when the radius is constant).
+    pub points: Vec<GraphRow>,
+    /// The line fitted to them; `null` when there are none.
+    pub fit: Option<LineFitRow>,
+}
+
+impl GraphFitRow {
+    fn new(points: &[GraphPoint]) -> Self {
+        let graph =
+            lac::LogCurvatureGraph::from_points(points.iter().map(|p| (p.x, p.y)).collect());
+        GraphFitRow {
+            points: points.iter().map(GraphRow::from).collect(),
+            fit: graph.fit.as_ref().map(LineFitRow::from),
+        }
+    }
+
+    fn is_finite(&self) -> bool {
+        self.points.iter().all(|p| all_finite([p.s, p.x, p.y]))
+            && self.fit.as_ref().is_none_or(|f| {
+                all_finite([f.slope, f.intercept, f.rms_residual, f.max_residual])
+                    && all_finite(f.x)
+            })
+    }
+}
+
+/// `lac lcg` of a space curve (seed 003): its logarithmic curvature graph
+/// `(ln ρ, ln(ρ |ds/dρ|))` and torsion graph `(ln μ, ln(μ |ds/dμ|))`, μ = 1/|τ|, each with
+/// its fitted line, whose slopes are α and β:
+/// `{"curvature":{"points":[{s,x,y}…],"fit":{"slope":α,…}},"torsion":{…"slope":β…}}`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SpaceLcgReport {
+    /// The logarithmic curvature graph; its slope is α.
+    pub curvature: GraphFitRow,
+    /// The logarithmic torsion graph; its slope is β.
+    pub torsion: GraphFitRow,
+    /// Why a graph is empty: a planar segment, a constant radius of torsion (Ω = 0) or of
+    /// curvature (a circle or helix).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub note: Option<String>,
+}
+
+impl SpaceLcgReport {
+    /// Both graphs of `segment` at `n` points equally spaced in arc length.
+    pub fn new(segment: &SpaceSegment, n: usize) -> Result<Self, ErrorBody> {
+        let curvature = GraphFitRow::new(&segment.log_curvature_graph(n)?);
+        let torsion = GraphFitRow::new(&segment.log_torsion_graph(n)?);
+        let mut notes = Vec::new();
+        if curvature.points.is_empty() {
+            notes.push("the radius of curvature is constant (Λ = 0): no curvature graph");
+        }
+        if segment.is_planar() {
+            notes.push("the control points are coplanar, so the planar segment is drawn (torsion 0): no torsion graph");
+        } else if torsion.points.is_empty() {
+            notes.push("the radius of torsion is constant (Ω = 0): no torsion graph");
+        }
+        SpaceLcgReport {
+            curvature,
+            torsion,
+            note: (!notes.is_empty()).then(|| notes.join("; ")),
+        }
+        .checked()
+    }
+}
+
+impl Report for SpaceLcgReport {
+    fn is_finite(&self) -> bool {
+        self.curvature.is_finite() && self.torsion.is_finite()
+    }
+}
+
+/// What `lac lcg` reads: Bézier pieces (`lac quasi` output, [`PiecesInput`]), a planar
+/// curve (`lac segment` or `lac compound` output, [`CurveInput`]) or a space curve (`lac
+/// space` output, [`SpaceInput`]), told apart by their keys: `"pieces"`, `"beta"`,
+/// `"alpha0"`/`"alpha1"`, `"alpha"`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum LcgInput {
+    /// A chain of (rational) cubic Bézier pieces.
+    Pieces(PiecesInput),
+    /// A planar log-aesthetic curve, solved again from its points and slopes.
+    Curve(CurveInput),
+    /// A space curve, solved again from its points and parameters.
+    Space(SpaceInput),
+}
+
+impl LcgInput {
+    /// The shapes, for error messages.
+    pub const SHAPE: &'static str = r#"{"pieces":[{"points":[[x,y],[x,y],[x,y],[x,y]],"weights":[w0,w1,w2,w3]},…]} (weights optional; lac quasi output), a lac segment result {"points":[[x,y]×3],"alpha":A,…}, a lac compound result {"points":[…3 or 4…],"alpha0":A,"alpha1":B,"ratio":R,…} or a lac space result {"points":[[x,y,z]×4],"alpha":A,"beta":B,"omega":W,"type":1,…}"#;
+
+    /// Read one document.
+    pub fn parse(text: &str) -> Result<LcgInput, ErrorBody> {
+        let value: serde_json::Value = parse(text, Self::SHAPE)?;
+        let has = |key: &str| value.get(key).is_some();
+        let read = |what: &str, e: serde_json::Error| {
+            ErrorBody::invalid_input(format!("{what}: {e}; expected {}", Self::SHAPE))
+        };
+        if has("pieces") {
+            let input = serde_json::from_value(value).map_err(|e| read("Bézier pieces", e))?;
+            Ok(LcgInput::Pieces(input))
+        } else if has("beta") {
+            let input = serde_json::from_value(value).map_err(|e| read("a space curve", e))?;
+            Ok(LcgInput::Space(input))
+        } else if has("alpha0") || has("alpha1") {
+            let input = serde_json::from_value(value).map_err(|e| read("a compound curve", e))?;
+            Ok(LcgInput::Curve(CurveInput::Compound(input)))
+        } else if has("alpha") {
+            let input = serde_json::from_value(value).map_err(|e| read("a segment", e))?;
+            Ok(LcgInput::Curve(CurveInput::Segment(input)))
+        } else {
+            Err(ErrorBody::invalid_input(format!(
+                "no \"pieces\", \"alpha\", \"alpha0\" or \"beta\" in the input; expected {}",
+                Self::SHAPE
+            )))
+        }
+    }
+}
+
+/// What `lac monotone` reads as one document (or one `--batch` line): one piece
+/// ([`PieceInput`]) or a chain of them ([`PiecesInput`], what `lac quasi` prints).
+#[derive(Clone, Debug, PartialEq)]
+pub enum MonotoneDocument {
+    /// One (rational) cubic.
+    Piece(PieceInput),
+    /// A chain: a verdict for each piece.
+    Pieces(PiecesInput),
+}
+
+impl MonotoneDocument {
+    /// The shapes, for error messages.
+    pub const SHAPE: &'static str = r#"{"points":[[x,y],[x,y],[x,y],[x,y]],"weights":[w0,w1,w2,w3]} (weights optional) or {"pieces":[…such pieces…]} (lac quasi output)"#;
+
+    /// Read one document.
+    pub fn parse(text: &str) -> Result<MonotoneDocument, ErrorBody> {
+        let value: serde_json::Value = parse(text, Self::SHAPE)?;
+        let pieces = value.get("pieces").is_some();
+        let document = if pieces {
+            serde_json::from_value(value).map(MonotoneDocument::Pieces)
+        } else {
+            serde_json::from_value(value).map(MonotoneDocument::Piece)
+        };
+        document.map_err(|e| ErrorBody::invalid_input(format!("{e}; expected {}", Self::SHAPE)))
+    }
+
+    /// Its verdicts as one line of JSON: a [`MonotoneReport`] or a [`MonotonePiecesReport`].
+    pub fn report_line(&self) -> Result<String, ErrorBody> {
+        match self {
+            MonotoneDocument::Piece(piece) => Ok(to_line(&MonotoneReport::of(piece)?)),
+            MonotoneDocument::Pieces(pieces) => Ok(to_line(&MonotonePiecesReport::new(pieces)?)),
+        }
+    }
+}
+
+impl MonotoneReport {
+    /// The verdict on one piece.
+    pub fn of(piece: &PieceInput) -> Result<Self, ErrorBody> {
+        let verdict = piece.to_rational_cubic()?.curvature_monotonicity()?;
+        MonotoneReport::from(&verdict).checked()
+    }
+}
+
+impl Report for MonotoneReport {
+    fn is_finite(&self) -> bool {
+        self.t.is_none_or(f64::is_finite)
+    }
+}
+
+/// The verdict on each piece of a chain: `{"pieces":[{"verdict":…,"proven":…},…]}`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct MonotonePiecesReport {
+    /// One verdict a piece, in order.
+    pub pieces: Vec<MonotoneReport>,
+}
+
+impl MonotonePiecesReport {
+    /// The verdict on each piece of `input`.
+    pub fn new(input: &PiecesInput) -> Result<Self, ErrorBody> {
+        if input.pieces.is_empty() {
+            return Err(ErrorBody::invalid_input("no pieces given"));
+        }
+        let pieces = input
+            .pieces
+            .iter()
+            .map(MonotoneReport::of)
+            .collect::<Result<Vec<_>, _>>()?;
+        MonotonePiecesReport { pieces }.checked()
+    }
+}
+
+impl Report for MonotonePiecesReport {
+    fn is_finite(&self) -> bool {
+        self.pieces.iter().all(MonotoneReport::is_finite)
     }
 }
 
@@ -1456,5 +1942,92 @@ mod tests {
         assert_eq!(bad.check().unwrap_err().kind, "out_of_range");
         let far = PointRegionInput { index: 3, ..moved };
         assert!(far.check().unwrap_err().message.contains("index 3"));
+    }
+
+    #[test]
+    fn lcg_reports_fit_each_piece_and_refuse_a_line_when_the_curvature_is_not_monotone() {
+        let compound = CompoundInput {
+            points: vec![[0.0, 0.0], [2.0, 0.0], [2.5, 2.0], [0.0, 1.5]],
+            alpha0: -1.0,
+            alpha1: 2.0,
+            ratio: None,
+        };
+        let curve = compound.solve().unwrap();
+        let report = LcgReport::of_curve(&curve, 65).unwrap();
+        let slopes: Vec<f64> = report
+            .pieces
+            .iter()
+            .map(|p| p.fit.as_ref().unwrap().alpha)
+            .collect();
+        assert!((slopes[0] + 1.0).abs() < 1e-9 && (slopes[1] - 2.0).abs() < 1e-9);
+        assert_eq!(report.pieces[1].s[1], curve.arc_length());
+        assert!(report.fit.is_some() && report.monotone.is_none());
+        // An S-shaped cubic: dκ/ds changes sign, so there is no line.
+        let s_curve = PieceInput {
+            points: [[0.0, 0.0], [1.0, 1.0], [2.0, -1.0], [3.0, 0.0]],
+            weights: None,
+        };
+        let cubic = s_curve.to_rational_cubic().unwrap();
+        let report = LcgReport::of_pieces(&[cubic], 64).unwrap();
+        assert_eq!((report.fit.is_none(), report.monotone), (true, Some(false)));
+        assert!(report.note.unwrap().contains("piece 1 of 1"));
+        assert!(
+            to_line(&LcgReport::of_pieces(&[cubic], 8).unwrap()).contains(r#""monotone":false"#)
+        );
+    }
+
+    #[test]
+    fn lcg_inputs_are_told_apart_by_their_keys() {
+        let kinds: Vec<&str> = [
+            r#"{"pieces":[{"points":[[0,0],[1,0],[2,1],[3,3]]}]}"#,
+            r#"{"points":[[0,0],[1,0],[2,1]],"alpha":0.5}"#,
+            r#"{"points":[[0,0],[1,0],[2,1]],"alpha0":0.5,"alpha1":1,"ratio":0.5}"#,
+            r#"{"points":[[0,0,0],[1,0,0],[2,1,0],[2,2,1]],"alpha":0.5,"beta":0}"#,
+        ]
+        .iter()
+        .map(|text| match LcgInput::parse(text).unwrap() {
+            LcgInput::Pieces(_) => "pieces",
+            LcgInput::Curve(CurveInput::Segment(_)) => "segment",
+            LcgInput::Curve(CurveInput::Compound(_)) => "compound",
+            LcgInput::Space(_) => "space",
+        })
+        .collect();
+        assert_eq!(kinds, ["pieces", "segment", "compound", "space"]);
+        let err = LcgInput::parse(r#"{"curve":1}"#).unwrap_err();
+        assert_eq!(err.kind, "invalid_input");
+    }
+
+    #[test]
+    fn a_space_report_reads_back_as_its_input_and_its_graphs_give_alpha_and_beta() {
+        let input = SpaceInput {
+            points: [
+                [0.0, 0.0, 0.0],
+                [3.0, 0.0, 0.0],
+                [3.0, 3.0, 1.5],
+                [0.0, 3.0, 3.0],
+            ],
+            alpha: 0.5,
+            beta: -0.5,
+            omega: 0.3,
+            torsion_type: 1,
+        };
+        let segment = input.solve().unwrap();
+        let line = to_line(&SpaceReport::new(&segment, 3, false).unwrap());
+        let back: SpaceInput = parse(&line, SpaceInput::SHAPE).unwrap();
+        assert_eq!(back, input);
+        let graphs = SpaceLcgReport::new(&segment, 33).unwrap();
+        let slope = |g: &GraphFitRow| g.fit.as_ref().unwrap().slope;
+        assert!((slope(&graphs.curvature) - 0.5).abs() < 1e-9);
+        assert!((slope(&graphs.torsion) + 0.5).abs() < 1e-9);
+        assert_eq!(graphs.note, None);
+    }
+
+    #[test]
+    fn short_numbers_keep_six_significant_digits() {
+        assert_eq!(short(0.30000000000000004), "0.3");
+        assert_eq!(short(-2.345678901), "-2.34568");
+        assert_eq!(short(1.7e308), "1.7e308");
+        assert_eq!(short(1.5e-7), "1.5e-7");
+        assert_eq!(short(0.0), "0");
     }
 }

@@ -3,6 +3,7 @@
 //! The core crate `lac` does no I/O and knows no format vocabulary. This crate holds what
 //! the front ends share: the JSON that the `lac` command prints and reads (one curve, or one
 //! line of a `--batch`), which the editor's server speaks and the Python bindings mirror, in
-//! [`json`].
+//! [`json`], and the CSV forms of the reports in [`csv`].
 
+pub mod csv;
 pub mod json;

@@ -143,8 +143,20 @@ fn arc_length_gauss8(c: &RationalCubic, t0: f64, t1: f64) -> f64 {
 /// Fit the logarithmic curvature graph of a curvature plot.
 pub fn log_curvature_graph(plot: &[CurvaturePoint]) -> LogCurvatureGraph {
     let points: Vec<(f64, f64)> = plot.iter().filter_map(CurvaturePoint::lcg).collect();
-    let fit = fit_line(&points);
-    LogCurvatureGraph { points, fit }
+    LogCurvatureGraph::from_points(points)
+}
+
+impl LogCurvatureGraph {
+    /// Any logarithmic graph given by its points `(x, y)` in the order of travel, with the
+    /// line fitted as for [`log_curvature_graph`]: the curvature graph `(ln ρ, ln(ρ |ds/dρ|))`
+    /// of a space curve ([`SpaceSegment::log_curvature_graph`]) or its torsion graph
+    /// `(ln μ, ln(μ |ds/dμ|))`, whose slope is β.
+    ///
+    /// [`SpaceSegment::log_curvature_graph`]: crate::SpaceSegment::log_curvature_graph
+    pub fn from_points(points: Vec<(f64, f64)>) -> LogCurvatureGraph {
+        let fit = fit_line(&points);
+        LogCurvatureGraph { points, fit }
+    }
 }
 
 /// Least squares with trapezoid weights in x.
@@ -231,6 +243,21 @@ impl Segment {
 mod tests {
     use super::*;
     use crate::Curve;
+
+    #[test]
+    fn any_straight_graph_gives_its_slope_back_and_a_constant_x_gives_none() {
+        let line: Vec<(f64, f64)> = (0..9)
+            .map(|i| {
+                let x = -1.0 + 0.3 * f64::from(i);
+                (x, 1.5 * x - 0.25)
+            })
+            .collect();
+        let fit = LogCurvatureGraph::from_points(line).fit.unwrap();
+        assert!((fit.alpha - 1.5).abs() < 1e-14 && (fit.intercept + 0.25).abs() < 1e-14);
+        assert!(fit.rms_residual < 1e-14);
+        let flat = LogCurvatureGraph::from_points(vec![(0.5, 1.0), (0.5, 2.0)]);
+        assert!(flat.fit.is_none());
+    }
 
     #[test]
     fn a_log_aesthetic_segment_has_its_own_alpha() {

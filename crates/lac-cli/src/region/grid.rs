@@ -36,10 +36,3 @@ fn progress_bar(rows: usize) -> ProgressBar {
     }
     bar
 }
-
-/// The share of `true` pixels.
-pub(crate) fn fraction(rows: &[Vec<bool>]) -> f64 {
-    let total: usize = rows.iter().map(Vec::len).sum();
-    let drawable: usize = rows.iter().flatten().filter(|&&d| d).count();
-    drawable as f64 / total.max(1) as f64
-}

@@ -1,5 +1,5 @@
 //! `lac region`: the drawable region of seed 000 Fig. 9 as a PNG or a JSON grid, for
-//! segments or (with `--alpha1` and `--ratio`) for compound-rhythm curves.
+//! segments (`--alpha`) or compound-rhythm curves (`--alpha0`, `--alpha1`, `--ratio`).
 //!
 //! The first control point is (−1, 0), the last (1, 0), and the middle one is the centre of
 //! each pixel of [−1, 1]² ([`lac::region::pixel_center`]); row 0 is the top (y = +1).
@@ -7,100 +7,82 @@
 mod grid;
 mod png;
 
-use std::io::{IsTerminal, Write};
-
-use serde::Serialize;
+use lac_io::json::{ErrorBody, RegionInput};
 
 use crate::cli::{RegionArgs, RegionFormat};
-use crate::failure::Failure;
-use crate::output::write_to;
-
-/// What `lac region --format json` prints.
-#[derive(Serialize)]
-struct RegionReport<'a> {
-    /// α, or α0 for compound curves.
-    alpha: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    alpha1: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    ratio: Option<f64>,
-    size: usize,
-    /// [x_min, x_max, y_min, y_max] of the map.
-    extent: [f64; 4],
-    first: [f64; 2],
-    last: [f64; 2],
-    drawable_fraction: f64,
-    /// Rows top (y = +1) to bottom, columns left (x = −1) to right.
-    drawable: &'a [Vec<bool>],
-}
+use crate::errors;
+use crate::limits::Limits;
+use crate::output::{refuse_binary_on_terminal, write_to};
 
 /// Run `lac region`.
-pub(crate) fn run(args: &RegionArgs) -> Result<(), Failure> {
-    let compound = args.alpha1.zip(args.ratio);
-    check(args.alpha, compound)?;
-    let to_terminal = args.output.is_none() && std::io::stdout().is_terminal();
-    if args.format == RegionFormat::Png && to_terminal {
-        return Err(Failure::usage(
-            "a PNG is not written to a terminal: give -o FILE, redirect standard output, or use \
-             --format json",
-        ));
+pub(crate) fn run(args: &RegionArgs, limits: Limits) -> Result<(), ErrorBody> {
+    let input = input(args)?;
+    input.check()?;
+    check_slopes(&input)?;
+    let size = limits.size(args.size as usize)?;
+    if args.format == RegionFormat::Png {
+        refuse_binary_on_terminal(args.file.as_deref(), "PNG", "--format json")?;
     }
-    let size = args.size as usize;
-    let alpha = args.alpha;
-    let rows = match compound {
-        None => grid::drawable_rows(size, |row| lac::region::row(alpha, size, row)),
-        Some((alpha1, ratio)) => grid::drawable_rows(size, |row| {
-            lac::region::compound_row(alpha, alpha1, ratio, size, row)
-        }),
-    };
-    write_to(args.output.as_deref(), |out| match args.format {
+    let rows = grid::drawable_rows(size, |row| input.row(size, row));
+    write_to(args.file.as_deref(), |out| match args.format {
         RegionFormat::Png => png::write_png(&rows, out),
-        RegionFormat::Json => write_json(args, &rows, out),
+        RegionFormat::Json => {
+            serde_json::to_writer(&mut *out, &input.report(size, rows))?;
+            writeln!(out)
+        }
     })
 }
 
-/// Reject parameters for which every pixel would be "not drawable" for the wrong reason.
-///
-/// The library checks them per curve and the region functions only say "no"; an explicit
-/// error here says which one is wrong.
-fn check(alpha: f64, compound: Option<(f64, f64)>) -> Result<(), Failure> {
-    let finite = |what: &'static str, value: f64| {
-        if value.is_finite() {
-            Ok(())
-        } else {
-            Err(lac::Error::NonFinite { what, value })
-        }
+/// The map asked for: `--alpha` alone for segments, `--alpha0`, `--alpha1` and `--ratio`
+/// for compound curves (as in `lac compound`).
+fn input(args: &RegionArgs) -> Result<RegionInput, ErrorBody> {
+    let segment = |alpha| RegionInput {
+        alpha,
+        alpha1: None,
+        ratio: None,
+        size: Some(args.size as usize),
     };
-    let Some((alpha1, ratio)) = compound else {
-        return Ok(finite("alpha", alpha)?);
-    };
-    finite("alpha0", alpha)?;
-    finite("alpha1", alpha1)?;
-    finite("ratio", ratio)?;
-    if !(ratio > 0.0 && ratio < 1.0) {
-        return Err(lac::Error::OutOfRange {
-            name: "ratio",
-            value: ratio,
-            expected: "a share of the turning strictly between 0 and 1",
-        }
-        .into());
+    match (args.alpha, args.alpha0, args.alpha1, args.ratio) {
+        (Some(alpha), None, None, None) => Ok(segment(alpha)),
+        (None, Some(alpha0), Some(alpha1), Some(ratio)) => Ok(RegionInput {
+            alpha1: Some(alpha1),
+            ratio: Some(ratio),
+            ..segment(alpha0)
+        }),
+        (Some(_), None, Some(_), _) => Err(errors::usage(
+            "a compound curve's slopes are --alpha0 and --alpha1, as in lac compound: write \
+             lac region --alpha0 A --alpha1 B --ratio R (--alpha is a segment's slope)",
+        )),
+        (Some(_), _, _, _) => Err(errors::usage(
+            "--alpha maps segments and takes no --alpha0, --alpha1 or --ratio; for compound \
+             curves give --alpha0, --alpha1 and --ratio",
+        )),
+        (None, None, None, None) => Err(errors::usage(
+            "give --alpha A for segments, or --alpha0 A --alpha1 B --ratio R for compound \
+             curves",
+        )),
+        _ => Err(errors::usage(
+            "a compound curve's map needs all of --alpha0, --alpha1 and --ratio",
+        )),
     }
-    Ok(())
 }
 
-fn write_json(args: &RegionArgs, rows: &[Vec<bool>], out: &mut dyn Write) -> std::io::Result<()> {
-    let (first, last) = (lac::region::FIRST, lac::region::LAST);
-    let report = RegionReport {
-        alpha: args.alpha,
-        alpha1: args.alpha1,
-        ratio: args.ratio,
-        size: rows.len(),
-        extent: [-1.0, 1.0, -1.0, 1.0],
-        first: [first.x, first.y],
-        last: [last.x, last.y],
-        drawable_fraction: grid::fraction(rows),
-        drawable: rows,
+/// Slopes the library takes (|α| ≤ [`lac::MAX_ABS_ALPHA`]): beyond them every pixel would
+/// be "not drawable" for a reason the map does not show.
+fn check_slopes(input: &RegionInput) -> Result<(), ErrorBody> {
+    let named = match input.alpha1 {
+        None => vec![("alpha", input.alpha)],
+        Some(alpha1) => vec![("alpha0", input.alpha), ("alpha1", alpha1)],
     };
-    serde_json::to_writer(&mut *out, &report)?;
-    writeln!(out)
+    for (name, value) in named {
+        if value.abs() > lac::MAX_ABS_ALPHA {
+            return Err(lac::Error::OutOfRange {
+                name,
+                value,
+                expected: "a slope with |alpha| <= 1e6, as every curve takes",
+            }
+            .into());
+        }
+    }
+    Ok(())
 }

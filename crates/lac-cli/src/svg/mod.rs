@@ -23,8 +23,8 @@ use kurbo::{Point, Rect};
 use lac::Curve;
 use lac::{Sample, Segment};
 
-use crate::failure::Failure;
 use comb::Comb;
+use lac_io::json::ErrorBody;
 use text::{Block, Entry, Key, Labels};
 use view::View;
 
@@ -79,7 +79,7 @@ pub(crate) fn render(
     pieces: &[Segment],
     points: &[Point],
     extras: Extras,
-) -> Result<String, Failure> {
+) -> Result<String, ErrorBody> {
     let layers = Layers::new(pieces, points, &extras)?;
     let caption = caption(pieces, &layers, extras.evolute);
     let view = View::fit(layers.bounds(), &caption);
@@ -92,7 +92,7 @@ pub(crate) fn render(
 }
 
 impl Layers {
-    fn new(pieces: &[Segment], points: &[Point], extras: &Extras) -> Result<Layers, Failure> {
+    fn new(pieces: &[Segment], points: &[Point], extras: &Extras) -> Result<Layers, ErrorBody> {
         let tolerance = TOLERANCE * drawing_size(&bounding_box(points));
         let mut curve: Vec<Point> = Vec::new();
         let mut joints = Vec::new();
@@ -175,7 +175,7 @@ fn evolute_layer(
     window: Rect,
     runs: &mut Vec<Vec<Point>>,
     centres: &mut Vec<Point>,
-) -> Result<(), Failure> {
+) -> Result<(), ErrorBody> {
     if piece.is_circle() {
         let centre = piece.evolute(2)?[0];
         centres.extend(window.contains(centre).then_some(centre));

@@ -16,7 +16,7 @@ use super::{
     bounding_box, control_points, dot, drawing_size, polyline, segments, short, CAPTION_SIZE, COMB,
     COMB_LENGTH, CURVE, JOINT, LABEL_SIZE, POLYGON, TOLERANCE,
 };
-use crate::failure::Failure;
+use lac_io::json::ErrorBody;
 
 /// Comb teeth along the whole curve, for both combs.
 const TEETH: usize = 64;
@@ -61,7 +61,7 @@ pub(crate) fn render(
     lac_samples: &[Sample],
     quasi: &QuasiCurve,
     cubic: bool,
-) -> Result<String, Failure> {
+) -> Result<String, ErrorBody> {
     let layers = Layers::new(pieces, points, lac_samples, quasi)?;
     let caption = caption(pieces, quasi, cubic);
     let view = View::fit(layers.bounds(), &caption);
@@ -79,7 +79,7 @@ impl Layers {
         points: &[Point],
         lac_samples: &[Sample],
         quasi: &QuasiCurve,
-    ) -> Result<Layers, Failure> {
+    ) -> Result<Layers, ErrorBody> {
         let tolerance = TOLERANCE * drawing_size(&bounding_box(points));
         let mut curve: Vec<Point> = Vec::new();
         for (i, piece) in pieces.iter().enumerate() {

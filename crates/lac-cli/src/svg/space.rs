@@ -12,7 +12,7 @@ use super::measure::{self, Anchor, ASCENT, DESCENT, FAMILY};
 use super::plot::{self, panel_title, Axis, Panel, ABOVE, BELOW};
 use super::text::{Block, Entry, Labels, EDGE};
 use super::{as_given, control_points, document, polyline, short, CURVE, LABEL_SIZE, POLYGON};
-use crate::failure::Failure;
+use lac_io::json::ErrorBody;
 
 /// The smallest canvas width, pixels.
 const MIN_WIDTH: f64 = 1000.0;
@@ -204,7 +204,7 @@ struct Scene {
 }
 
 /// The SVG document for `segment`.
-pub(crate) fn render(segment: &SpaceSegment) -> Result<String, Failure> {
+pub(crate) fn render(segment: &SpaceSegment) -> Result<String, ErrorBody> {
     let curve: Vec<Vec3> = segment
         .sample(CURVE_POINTS)?
         .iter()

@@ -15,8 +15,14 @@ pub(crate) struct Run {
 
 /// Run `lac` with `args` and standard input `stdin`.
 pub(crate) fn lac_with_input(args: &[&str], stdin: &[u8]) -> Run {
+    lac_with_env(args, stdin, &[])
+}
+
+/// Run `lac` with `args`, standard input `stdin` and the environment variables `env`.
+pub(crate) fn lac_with_env(args: &[&str], stdin: &[u8], env: &[(&str, &str)]) -> Run {
     let mut child = Command::new(env!("CARGO_BIN_EXE_lac"))
         .args(args)
+        .envs(env.iter().copied())
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())

@@ -11,7 +11,7 @@ PY := $(VENV)/bin/python
 CARGO_TEST := cargo test --locked --workspace
 LAC_BIN := $(or $(CARGO_TARGET_DIR),$(CURDIR)/target)/debug/lac
 
-.PHONY: test rust python e2e docs fixtures bench example fuzz
+.PHONY: test rust python e2e docs fixtures bench example fuzz afl
 
 test: rust python e2e
 
@@ -50,6 +50,21 @@ FUZZ_COUNT ?= 1000000
 FUZZ_SEED ?= 1
 fuzz:
 	cargo run --locked --release -p lac-fuzz -- --count $(FUZZ_COUNT) --seed $(FUZZ_SEED)
+
+# Coverage-guided fuzzing with AFL++ (afl.rs, stable Rust) for AFL_MINUTES (default 10): the
+# same entry points and invariants as `make fuzz`, steered by coverage. Crashes land in
+# target/afl/out/default/crashes; `lac-fuzz --decode FILE` prints each as a JSON input for
+# crates/lac-fuzz/regressions/inputs.jsonl. Installs cargo-afl (and builds AFL++) when missing.
+AFL_MINUTES ?= 10
+AFL_TARGET := $(CURDIR)/target/afl
+afl:
+	command -v cargo-afl >/dev/null || cargo install --locked cargo-afl
+	cargo afl config --build 2>/dev/null || true # (refuses when the AFL++ runtime is built already)
+	cd crates/lac-fuzz/afl && CARGO_TARGET_DIR=$(AFL_TARGET) cargo afl build --release
+	mkdir -p $(AFL_TARGET)/in && for i in 0 1 2 3 4 5 6; do printf "\\00$$i\\01\\02\\03" > $(AFL_TARGET)/in/entry$$i; done
+	AFL_SKIP_CPUFREQ=1 AFL_I_DONT_CARE_ABOUT_MISSING_CRASHES=1 AFL_NO_UI=1 \
+		cargo afl fuzz -V $$(( $(AFL_MINUTES) * 60 )) -i $(AFL_TARGET)/in -o $(AFL_TARGET)/out \
+		$(AFL_TARGET)/release/lac-afl
 
 # Regenerate the 40-digit reference fixtures (about 15 minutes; the output is committed).
 fixtures: $(VENV)/.installed

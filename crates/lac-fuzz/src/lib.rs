@@ -160,14 +160,28 @@ impl EntryPoint {
             seed ^ (self as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15),
             index,
         );
+        self.generate(&mut rng)
+    }
+
+    /// The input a coverage-guided fuzzer's byte string stands for: its first byte picks
+    /// the entry point, the rest steer that entry point's generator (see
+    /// [`Rng::from_bytes`]).
+    pub fn input_from_bytes(bytes: &[u8]) -> Input {
+        let (first, rest) = bytes.split_first().unwrap_or((&0, &[]));
+        let entry = EntryPoint::ALL[usize::from(*first) % EntryPoint::ALL.len()];
+        entry.generate(&mut Rng::from_bytes(rest))
+    }
+
+    /// An input of this entry point, drawn from `rng`.
+    pub fn generate(self, rng: &mut Rng) -> Input {
         match self {
-            EntryPoint::Segment => generate::segment(&mut rng),
-            EntryPoint::Compound3 => generate::compound3(&mut rng),
-            EntryPoint::Compound4 => generate::compound4(&mut rng),
-            EntryPoint::Monotone => generate::monotone(&mut rng),
-            EntryPoint::Analysis => generate::analysis(&mut rng),
-            EntryPoint::Quasi => generate::quasi(&mut rng),
-            EntryPoint::Space => generate::space(&mut rng),
+            EntryPoint::Segment => generate::segment(rng),
+            EntryPoint::Compound3 => generate::compound3(rng),
+            EntryPoint::Compound4 => generate::compound4(rng),
+            EntryPoint::Monotone => generate::monotone(rng),
+            EntryPoint::Analysis => generate::analysis(rng),
+            EntryPoint::Quasi => generate::quasi(rng),
+            EntryPoint::Space => generate::space(rng),
         }
     }
 }

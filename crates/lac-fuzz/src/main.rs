@@ -2,7 +2,9 @@
 //! points (all by default) and print each one's figures; exit code 1 if any input panicked,
 //! broke an invariant or took over a second. `make fuzz` runs it with a million inputs per
 //! entry point. `lac-fuzz --replay FILE` runs the inputs of a file (one JSON input a line,
-//! as printed) and prints each outcome and time.
+//! as printed) and prints each outcome and time. `lac-fuzz --decode FILE…` prints, as a JSON
+//! line, the input each byte file of the coverage-guided fuzzer stands for (`make afl`), to
+//! keep in `regressions/inputs.jsonl`.
 
 use std::io::Write;
 use std::process::ExitCode;
@@ -26,6 +28,23 @@ fn main() -> ExitCode {
         match arg.as_str() {
             "--count" => count = value(&mut args),
             "--seed" => seed = value(&mut args),
+            "--decode" => {
+                // The inputs a coverage-guided fuzzer's byte files stand for.
+                for path in args.by_ref() {
+                    match std::fs::read(&path) {
+                        Ok(bytes) => println!(
+                            "{}",
+                            serde_json::to_string(&EntryPoint::input_from_bytes(&bytes))
+                                .unwrap_or_default()
+                        ),
+                        Err(e) => {
+                            eprintln!("cannot read {path}: {e}");
+                            return ExitCode::from(2);
+                        }
+                    }
+                }
+                return ExitCode::SUCCESS;
+            }
             "--replay" => {
                 // Each kept input of a file, with its outcome and time.
                 let path = args.next().unwrap_or_default();

@@ -59,3 +59,29 @@ fn every_input_that_ever_failed_passes() {
         .collect();
     assert!(bad.is_empty(), "\n{}", bad.join("\n"));
 }
+
+#[test]
+fn byte_strings_steer_the_generators_for_the_coverage_guided_fuzzer() {
+    // The first byte picks the entry point; the same bytes give the same input; the empty
+    // string and long strings are inputs too.
+    for (i, entry) in EntryPoint::ALL.into_iter().enumerate() {
+        let bytes: Vec<u8> = std::iter::once(i as u8)
+            .chain((0..64u8).map(|b| b.wrapping_mul(37)))
+            .collect();
+        let input = EntryPoint::input_from_bytes(&bytes);
+        assert_eq!(input, EntryPoint::input_from_bytes(&bytes));
+        let name = serde_json::to_value(&input).unwrap()["entry"].clone();
+        assert_eq!(name, entry.name(), "{input:?}");
+        assert!(!matches!(
+            lac_fuzz::run(&input).0,
+            Outcome::Violation(_) | Outcome::Panic(_)
+        ));
+    }
+    for bytes in [&[][..], &[255; 4096][..]] {
+        let input = EntryPoint::input_from_bytes(bytes);
+        assert!(!matches!(
+            lac_fuzz::run(&input).0,
+            Outcome::Violation(_) | Outcome::Panic(_)
+        ));
+    }
+}

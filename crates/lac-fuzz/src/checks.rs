@@ -360,8 +360,8 @@ fn check_joints(curve: &CompoundCurve) -> Result<(), String> {
     };
     let (pa, pb) = (a.end_point(), b.start_point());
     let scale = curve.arc_length();
-    if (pa - pb).hypot() > 1e-12 * scale + rounding(&[pa]) {
-        return Err(format!("pieces {:e} apart at the joint", (pa - pb).hypot()));
+    if dist(pa, pb) > 1e-12 * scale + rounding(&[pa]) {
+        return Err(format!("pieces {:e} apart at the joint", dist(pa, pb)));
     }
     let ka = a.curvature_end();
     let kb = b.curvature_start();
@@ -443,11 +443,11 @@ fn check_quasi(
     }
     let first = quasi.pieces[0].curve.points()[0];
     let last = quasi.pieces[quasi.pieces.len() - 1].curve.points()[3];
-    if (first - pts[0]).hypot() > tol || (last - pts[2]).hypot() > 64.0 * tol {
+    if dist(first, pts[0]) > tol || dist(last, pts[2]) > 64.0 * tol {
         return Err(format!(
             "chain ends off the segment's: {:e}, {:e}",
-            (first - pts[0]).hypot(),
-            (last - pts[2]).hypot()
+            dist(first, pts[0]),
+            dist(last, pts[2])
         ));
     }
     // Curvature at a join is computed from control points rounded in absolute coordinates:
@@ -457,8 +457,8 @@ fn check_quasi(
     for w in quasi.pieces.windows(2) {
         let (a, b) = (w[0].curve, w[1].curve);
         let (pa, pb) = (a.points()[3], b.points()[0]);
-        if (pa - pb).hypot() > 64.0 * tol {
-            return Err(format!("pieces {:e} apart", (pa - pb).hypot()));
+        if dist(pa, pb) > 64.0 * tol {
+            return Err(format!("pieces {:e} apart", dist(pa, pb)));
         }
         let size = dist(a.points()[0], a.points()[3]).min(dist(b.points()[0], b.points()[3]));
         let (ka, kb) = (a.signed_curvature(1.0), b.signed_curvature(0.0));

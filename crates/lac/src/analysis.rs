@@ -14,6 +14,7 @@ use kurbo::{ParamCurve, Point};
 use crate::bezier::RationalCubic;
 use crate::error::{Error, Result};
 use crate::gauss::GAUSS_8;
+use crate::numeric::length;
 use crate::segment::sampling::{check_count, Sample};
 use crate::segment::Segment;
 
@@ -135,7 +136,7 @@ fn arc_length_gauss8(c: &RationalCubic, t0: f64, t1: f64) -> f64 {
     half * GAUSS_8
         .iter()
         .map(|&(x, w)| {
-            w * (c.derivative(mid - half * x).hypot() + c.derivative(mid + half * x).hypot())
+            w * (length(c.derivative(mid - half * x)) + length(c.derivative(mid + half * x)))
         })
         .sum::<f64>()
 }

@@ -34,7 +34,7 @@ use kurbo::{
 
 use crate::error::{finite, Error, Result};
 use crate::gauss::GAUSS_16;
-use crate::numeric::{find_root, RootFailure};
+use crate::numeric::{find_root, length, RootFailure};
 
 /// A rational cubic Bézier curve with positive weights:
 ///
@@ -215,7 +215,7 @@ impl RationalCubic {
             let mid = t0 + (k as f64 + 0.5) * h;
             for &(x, w) in GAUSS_16.iter() {
                 let dx = 0.5 * h * x;
-                sum += w * (self.derivative(mid - dx).hypot() + self.derivative(mid + dx).hypot());
+                sum += w * (length(self.derivative(mid - dx)) + length(self.derivative(mid + dx)));
             }
         }
         0.5 * h * sum
@@ -250,7 +250,7 @@ impl RationalCubic {
 
     /// The speed |x′(t)|.
     fn speed(&self, t: f64) -> f64 {
-        self.derivative(t).hypot()
+        length(self.derivative(t))
     }
 
     /// A bound on the speed over [0, 1]: from x′ = V/w² and
@@ -262,7 +262,7 @@ impl RationalCubic {
         let mut diameter = 0.0f64;
         for i in 0..4 {
             for j in i + 1..4 {
-                diameter = diameter.max((b[j] - b[i]).hypot());
+                diameter = diameter.max(length(b[j] - b[i]));
             }
         }
         let w = self.weights;

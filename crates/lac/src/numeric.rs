@@ -10,6 +10,20 @@ pub(crate) fn clamp(x: f64, lo: f64, hi: f64) -> f64 {
     x.max(lo).min(hi)
 }
 
+/// The Euclidean length |v|: kurbo's `Vec2::hypot` squares its components (it overflows to ∞
+/// beyond about 1e154 and underflows to 0 below about 1e-154); this takes that fast formula
+/// where the square is a normal number and `f64::hypot` elsewhere, so that lengths of curves
+/// at any finite scale are finite and accurate.
+#[inline]
+pub(crate) fn length(v: kurbo::Vec2) -> f64 {
+    let squared = v.hypot2();
+    if (f64::MIN_POSITIVE..f64::INFINITY).contains(&squared) {
+        squared.sqrt()
+    } else {
+        v.x.hypot(v.y)
+    }
+}
+
 /// `expm1(y) / y`, continued by 1 at y = 0.
 ///
 /// Every removable singularity of SPEC §2 (α = 0, α = 1, Λ = 0) is a quotient of this form;

@@ -101,7 +101,26 @@ pub(crate) fn replace(
     let tolerance = tolerance
         .map(|t| t.relative_to(chain.arc_length()))
         .transpose()?;
-    approximate(&chain, tolerance, kind)
+    let quasi = approximate(&chain, tolerance, kind)?;
+    // Every number of the answer finite, or no answer: a near-straight curve with a hook
+    // at an end asks the single rational cubic for weights ~1e152 and an infinite deviation.
+    let finite = quasi.rms.is_finite()
+        && quasi.max.is_finite()
+        && quasi.pieces.iter().all(|p| {
+            let b = p.curve.points();
+            b.iter().all(|q| q.is_finite())
+                && p.curve.weights().iter().all(|w| w.is_finite())
+                && p.turning.0.is_finite()
+                && p.turning.1.is_finite()
+                && p.max_deviation.is_finite()
+        });
+    if finite {
+        Ok(quasi)
+    } else {
+        Err(Error::Unrepresentable {
+            what: "the Bézier replacement of this curve (its weights or deviation overflow)",
+        })
+    }
 }
 
 /// A curve with monotone curvature of one sign, evaluated by its turning φ ∈ [0, Θ] from

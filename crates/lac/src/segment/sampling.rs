@@ -120,7 +120,8 @@ impl Segment {
             let chord = end_z - start_z;
             let split = self.deviation_point(&start, &end, chord);
             match split {
-                Some((st, z, dev)) if dev > scaled => {
+                // A deviation that is not a number splits too: never taken as flat.
+                Some((st, z, dev)) if dev.is_nan() || dev > scaled => {
                     if out.len() + stack.len() >= 2 * MAX_ADAPTIVE_SAMPLES {
                         // The estimate in `Curve::sample_adaptive` keeps this from happening;
                         // a polyline short of the accuracy asked is never returned.
@@ -173,7 +174,9 @@ impl Segment {
         let target = crate::numeric::clamp(target, lo, hi);
         let st = self.form.advance_theta(a, target - a.theta)?;
         let z = span(self, a, &st);
-        let dev = (chord.conj() * z).im.abs() / chord.norm();
+        // Across the unit chord: the product of two standard-form lengths would overflow
+        // for curves whose standard form is ~1e216 long (a hook of radius 1e-216).
+        let dev = (chord.scale(1.0 / chord.norm()).conj() * z).im.abs();
         (hi - lo > 0.0).then_some((st, z, dev))
     }
 

@@ -140,7 +140,7 @@ def test_region_equals_the_command_line(cli, args):
         ref = cli("region", "--alpha", repr(args[0]), "--size", "48", "--format", "json")
         mine = lac.drawable_region(args[0], 48)
     else:
-        ref = cli("region", "--alpha", repr(args[0]), "--alpha1", repr(args[1]), "--ratio",
+        ref = cli("region", "--alpha0", repr(args[0]), "--alpha1", repr(args[1]), "--ratio",
                   repr(args[2]), "--size", "48", "--format", "json")
         mine = lac.drawable_region_compound(*args, size=48)
     assert mine.dtype == np.bool_ and mine.shape == (48, 48)

@@ -9,12 +9,17 @@ G1 clothoid has no inflection). Timed, per curve, from Python:
 * `clothoids_loop`: a Python loop of `ClothoidCurve.build_G1(x0, y0, th0, x1, y1, th1, tol)`
   (SWIG binding, one C++ object reused, end angles precomputed);
 * `lac_loop`: a Python loop of `lac.Segment(((x0, y0), (x1, y1), (x2, y2)), -1.0)`;
-* `lac_vectorised`: one `lac.solve_segments(points, -1.0)` call over all of them (and over
-  the same set repeated 100 times, where the threads' start-up is amortised).
+* `lac_vectorised`: one `lac.solve_segments(points, -1.0)` call over all of them, on all
+  cores; `lac_vectorised_1_thread` the same with `threads=1` (on the calling thread);
+* `lac_vectorised_100x`: the set repeated 100 times in one call (all cores).
 
-Each figure is the median of `ROUNDS` rounds; every round runs the three one after the
-other, so a load change on the machine affects them alike, and the ratios are taken within
-each round (median of the per-round ratios). Prints one line of JSON.
+Each is timed twice: wall time (`time.perf_counter`) and the process's CPU time over all
+its threads (`time.process_time`). Each figure is the median of `ROUNDS` rounds; every
+round runs them one after the other, so a load change on the machine affects them alike,
+and the ratios are taken within each round (median of the per-round ratios). On a machine
+whose cores are busy with other work, a call longer than a scheduler time slice is
+descheduled and its wall time says more about the load than about lac: compare the CPU
+times there. Prints one line of JSON.
 """
 
 import json
@@ -41,9 +46,11 @@ REPEAT = 100  # the large vectorised call: the set repeated
 
 
 def per_curve_us(fn, count):
-    start = time.perf_counter_ns()
+    """(wall, cpu) microseconds per curve of one call of `fn`."""
+    wall, cpu = time.perf_counter_ns(), time.process_time_ns()
     fn()
-    return (time.perf_counter_ns() - start) / count / 1000
+    return ((time.perf_counter_ns() - wall) / count / 1000,
+            (time.process_time_ns() - cpu) / count / 1000)
 
 
 def main():
@@ -74,6 +81,9 @@ def main():
     def lac_vectorised():
         lac.solve_segments(points, -1.0)
 
+    def lac_vectorised_1_thread():
+        lac.solve_segments(points, -1.0, threads=1)
+
     def lac_vectorised_big():
         lac.solve_segments(big, -1.0)
 
@@ -81,26 +91,29 @@ def main():
     check = lac.solve_segments(points, -1.0)
     assert bool(check.ok.all()), "a drawable configuration failed"
 
+    runs = {
+        "clothoids_loop": (clothoids_loop, n),
+        "lac_loop": (lac_loop, n),
+        "lac_vectorised": (lac_vectorised, n),
+        "lac_vectorised_1_thread": (lac_vectorised_1_thread, n),
+        "lac_vectorised_100x": (lac_vectorised_big, n * REPEAT),
+    }
     rounds = []
     for _ in range(ROUNDS):
-        rounds.append({
-            "clothoids_loop": per_curve_us(clothoids_loop, n),
-            "lac_loop": per_curve_us(lac_loop, n),
-            "lac_vectorised": per_curve_us(lac_vectorised, n),
-            "lac_vectorised_100x": per_curve_us(lac_vectorised_big, n * REPEAT),
-        })
-    med = {k: statistics.median(r[k] for r in rounds) for k in rounds[0]}
-    ratio = {
-        f"clothoids_over_{k}": statistics.median(r["clothoids_loop"] / r[k] for r in rounds)
-        for k in ("lac_loop", "lac_vectorised", "lac_vectorised_100x")
-    }
+        rounds.append({k: per_curve_us(fn, count) for k, (fn, count) in runs.items()})
+    out = {}
+    for clock, i in (("wall", 0), ("cpu", 1)):
+        out[f"median_us_per_curve_{clock}"] = {
+            k: round(statistics.median(r[k][i] for r in rounds), 3) for k in runs}
+        out[f"clothoids_over_lac_{clock}"] = {
+            k: round(statistics.median(r["clothoids_loop"][i] / r[k][i] for r in rounds), 2)
+            for k in runs if k != "clothoids_loop"}
     print(json.dumps({
         "benchmark": "alpha = -1 segments from three control points, per curve, from Python",
         "configurations": n,
         "rounds": ROUNDS,
-        "median_us_per_curve": {k: round(v, 3) for k, v in med.items()},
-        "speedup_median": {k: round(v, 2) for k, v in ratio.items()},
-        "threads": os.cpu_count(),
+        **out,
+        "cores": os.cpu_count(),
         "load_average": os.getloadavg()[0],
         "versions": {"Clothoids": version("Clothoids"), "lac": version("lac"),
                      "numpy": np.__version__, "python": platform.python_version()},

@@ -5,6 +5,7 @@ use kurbo::Point;
 use lac::{Curve as _, Sample, Segment};
 use lac_io::json::ErrorBody;
 use numpy::{PyArray1, PyArray2, PyArray3};
+use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use rayon::prelude::*;
 
@@ -107,14 +108,17 @@ impl SegmentBatch {
 /// `alpha` a number or shape (n,). With `samples = m ≥ 2`, each curve is also sampled at
 /// m points equally spaced in arc length. The work runs on all cores with the GIL
 /// released; a curve that cannot be solved gives NaNs and its error in the result instead
-/// of an exception.
+/// of an exception. `threads`: None for all cores (rayon's pool), 1 for the calling thread
+/// alone (no hand-off to the pool: best for small batches or a busy machine), k for a pool
+/// of k threads made for the call.
 #[pyfunction]
-#[pyo3(signature = (points, alpha, *, samples = 0))]
+#[pyo3(signature = (points, alpha, *, samples = 0, threads = None))]
 pub(crate) fn solve_segments(
     py: Python<'_>,
     points: &Bound<'_, PyAny>,
     alpha: &Bound<'_, PyAny>,
     samples: usize,
+    threads: Option<usize>,
 ) -> PyResult<SegmentBatch> {
     let real = real_array(points, "points")?;
     let n = match real.shape.as_slice() {
@@ -144,18 +148,41 @@ pub(crate) fn solve_segments(
         ));
     }
     let data = real.data;
+    let solve = |(c, &a): (&[f64], &f64)| {
+        let p = [
+            Point::new(c[0], c[1]),
+            Point::new(c[2], c[3]),
+            Point::new(c[4], c[5]),
+        ];
+        solve_one(p, a, samples)
+    };
+    let pool = match threads {
+        None | Some(1) => None,
+        Some(0) => {
+            return Err(invalid(
+                py,
+                "threads must be at least 1, or None for all cores",
+            ))
+        }
+        Some(k) => Some(
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(k)
+                .build()
+                .map_err(|e| PyRuntimeError::new_err(format!("cannot start {k} threads: {e}")))?,
+        ),
+    };
     let results: Vec<Result<Solved, ErrorBody>> = py.detach(|| {
-        data.par_chunks_exact(6)
-            .zip(alpha.par_iter())
-            .map(|(c, &a)| {
-                let p = [
-                    Point::new(c[0], c[1]),
-                    Point::new(c[2], c[3]),
-                    Point::new(c[4], c[5]),
-                ];
-                solve_one(p, a, samples)
-            })
-            .collect()
+        let parallel = || {
+            data.par_chunks_exact(6)
+                .zip(alpha.par_iter())
+                .map(solve)
+                .collect()
+        };
+        match (threads, &pool) {
+            (Some(1), _) => data.chunks_exact(6).zip(alpha.iter()).map(solve).collect(),
+            (_, Some(pool)) => pool.install(parallel),
+            _ => parallel(),
+        }
     });
 
     let column = |f: &dyn Fn(&Solved) -> f64| -> Vec<f64> {

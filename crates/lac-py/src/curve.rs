@@ -222,7 +222,7 @@ impl PyCurve {
 /// `points` is a 3×2 array or a sequence of three (x, y) pairs.
 #[pyclass(module = "lac", name = "Segment", extends = PyCurve, frozen)]
 pub(crate) struct PySegment {
-    pub(crate) inner: lac::Segment,
+    inner: Arc<lac::Segment>,
 }
 
 impl PySegment {
@@ -231,11 +231,13 @@ impl PySegment {
         Py::new(py, Self::init(segment))
     }
 
+    /// The base class and the subclass share the one solved segment.
     fn init(segment: lac::Segment) -> PyClassInitializer<PySegment> {
+        let inner = Arc::new(segment);
         PyClassInitializer::from(PyCurve {
-            inner: Arc::new(segment.clone()),
+            inner: inner.clone(),
         })
-        .add_subclass(PySegment { inner: segment })
+        .add_subclass(PySegment { inner })
     }
 }
 
@@ -356,15 +358,17 @@ impl PySegment {
 /// its joint's tangent is parallel to P2 − P1 (seed 002).
 #[pyclass(module = "lac", name = "CompoundCurve", extends = PyCurve, frozen)]
 pub(crate) struct PyCompoundCurve {
-    inner: lac::CompoundCurve,
+    inner: Arc<lac::CompoundCurve>,
 }
 
 impl PyCompoundCurve {
+    /// The base class and the subclass share the one solved curve.
     fn init(curve: lac::CompoundCurve) -> PyClassInitializer<PyCompoundCurve> {
+        let inner = Arc::new(curve);
         PyClassInitializer::from(PyCurve {
-            inner: Arc::new(curve.clone()),
+            inner: inner.clone(),
         })
-        .add_subclass(PyCompoundCurve { inner: curve })
+        .add_subclass(PyCompoundCurve { inner })
     }
 }
 

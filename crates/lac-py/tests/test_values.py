@@ -214,3 +214,15 @@ def test_clothoid_case_agrees_with_clothoids_to_1e_12():
     kappa0 = np.array([cases.end_curvatures(curves[i])[0] for i in keep])
     assert np.max(np.abs(batch.arc_length / length - 1)) < 1e-12
     assert np.max(np.abs(batch.curvature_start * length - kappa0 * length)) < 1e-9
+
+
+def test_thread_counts_agree():
+    points = np.array([p for p, _ in SEGMENTS if len(p) == 3] * 50)
+    alpha = np.tile([a for _, a in SEGMENTS], 50)
+    runs = [lac.solve_segments(points, alpha, samples=5, threads=t) for t in (None, 1, 3)]
+    for other in runs[1:]:
+        assert np.array_equal(other.arc_length, runs[0].arc_length)
+        assert other.points is not None and runs[0].points is not None
+        assert np.array_equal(other.points, runs[0].points)
+    with pytest.raises(lac.InvalidInput, match="threads"):
+        lac.solve_segments(points, alpha, threads=0)

@@ -331,7 +331,9 @@ class SegmentBatch:
     kappa: Optional[FloatArray]
     def __len__(self) -> int: ...
 
-def solve_segments(points: ArrayLike, alpha: ArrayLike, *, samples: int = 0) -> SegmentBatch:
+def solve_segments(
+    points: ArrayLike, alpha: ArrayLike, *, samples: int = 0, threads: Optional[int] = None
+) -> SegmentBatch:
     """Solve n segments (points of shape (n, 3, 2)) on all cores without the GIL."""
 
 def curvature_plot(pieces: Sequence[RationalCubic], per_piece: int) -> CurvaturePlot:

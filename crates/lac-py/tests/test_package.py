@@ -59,3 +59,16 @@ def test_example_writes_its_png(tmp_path, example):
     data = png.read_bytes()
     assert data[:8] == b"\x89PNG\r\n\x1a\n"
     assert len(data) > 20_000  # a drawing, not an empty canvas
+
+
+def test_the_readme_example_runs():
+    readme = open(os.path.join(HERE, "..", "..", "..", "README.md")).read()
+    section = readme[readme.index("## Python"):]
+    start = section.index("```python\n") + len("```python\n")
+    code = section[start:section.index("```", start)]
+    assert len(code.strip().splitlines()) == 5
+    namespace: dict = {}
+    exec(compile(code, "README.md", "exec"), namespace)
+    batch = namespace["batch"]
+    assert len(batch) == 1000 and not batch.ok.all()  # random points: some fail, no raise
+    assert namespace["s"].points.shape == (65, 2)

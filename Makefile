@@ -5,15 +5,17 @@
 # The dependency tree is compiled once with code generation: `cargo test` builds the `lac`
 # binary for the integration tests in the test profile (opt-level 2) as target/debug/lac, and
 # the Python cross-checks run that binary. Clippy checks the tree once more without code
-# generation (build scripts and proc macros are shared).
+# generation (build scripts and proc macros are shared). The Python bindings are compiled
+# once more by `pip install ./crates/lac-py` (maturin), optimised, in target/python: lac and
+# the few crates it needs (kurbo, serde, PyO3, rust-numpy, rayon), about 70 s of CPU cold.
 VENV := .venv
 PY := $(VENV)/bin/python
 CARGO_TEST := cargo test --locked --workspace
 LAC_BIN := $(or $(CARGO_TARGET_DIR),$(CURDIR)/target)/debug/lac
 
-.PHONY: test rust python e2e docs fixtures bench example fuzz afl
+.PHONY: test rust python py py-bench e2e docs fixtures bench example fuzz afl
 
-test: rust python e2e
+test: rust python py e2e
 
 rust:
 	cargo fmt --all -- --check
@@ -33,9 +35,24 @@ e2e:
 	$(CARGO_TEST) --no-run
 	cd crates/lac-serve/e2e && LAC_BIN=$(LAC_BIN) node --test --test-concurrency=1
 
-$(VENV)/.installed: tools/reference/requirements.txt
+# The Python bindings (crates/lac-py): `pip install` as a user would (maturin, the
+# workspace's `python` profile in target/python), then their tests against the same `lac`
+# binary, and mypy --strict on the examples (which the tests run, writing PNGs).
+py: $(VENV)/.installed
+	PATH="$(CURDIR)/$(VENV)/bin:$$PATH" $(PY) -m pip install --quiet --disable-pip-version-check \
+		--no-build-isolation --no-deps --force-reinstall ./crates/lac-py
+	$(CARGO_TEST) --no-run --quiet
+	LAC_BIN=$(LAC_BIN) $(PY) -m pytest -q crates/lac-py/tests
+	$(VENV)/bin/mypy --strict crates/lac-py/examples
+
+# lac from Python against Clothoids' build_G1 on the same alpha = -1 inputs (one JSON line).
+py-bench: py
+	$(PY) crates/lac-py/bench/bench_clothoids.py
+
+$(VENV)/.installed: tools/reference/requirements.txt crates/lac-py/requirements.txt
 	python3 -m venv $(VENV)
-	$(VENV)/bin/pip install --quiet --disable-pip-version-check -r tools/reference/requirements.txt
+	$(VENV)/bin/pip install --quiet --disable-pip-version-check -r tools/reference/requirements.txt \
+		-r crates/lac-py/requirements.txt
 	touch $@
 
 # Redraw the README's figures (docs/*.svg) from its *Made by* lines with the freshly built

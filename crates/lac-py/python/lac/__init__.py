@@ -1,0 +1,83 @@
+"""Log-aesthetic curves (LACs) from Python, NumPy in and out.
+
+A log-aesthetic curve has a straight logarithmic curvature graph,
+log(rho ds/drho) = alpha log rho + c: the clothoid (alpha = -1), the Nielsen spiral (0),
+the logarithmic spiral (1) and the circle involute (2) are members. This package wraps the
+Rust library `lac`:
+
+* `Segment`: a segment from three control points and alpha (seed 000);
+* `CompoundCurve`: two pieces joined G3, from three points and a turning ratio (seed 004)
+  or from four points (seed 002);
+* `Curve`: what both offer (sampling, curvature plot, evolute, quasi-aesthetic cubics);
+* `RationalCubic` and `QuasiCurve`: rational cubic Beziers with a proven curvature
+  monotonicity verdict (seed 001);
+* `SpaceSegment`: log-aesthetic space curves (seed 003);
+* `drawable_region`, `drawable_region_compound`: drawable-region maps (seed 000 Fig. 9);
+* `solve_segments`: many segments in one call, on all cores, with per-curve errors.
+
+Errors: `LacError`, with `InvalidInput` (also a `ValueError`) and `NotDrawable`.
+"""
+
+from ._lac import (
+    MAX_ABS_ALPHA,
+    CompoundCurve,
+    Curve,
+    CurvaturePlot,
+    Frames,
+    Graph,
+    InvalidInput,
+    LacError,
+    LcgFit,
+    LcgLine,
+    LogCurvatureGraph,
+    MonotonicityReport,
+    NotDrawable,
+    QuasiCurve,
+    QuasiPiece,
+    RationalCubic,
+    Samples,
+    Segment,
+    SegmentBatch,
+    SpaceSegment,
+    StandardForm,
+    classify,
+    curvature_plot,
+    drawable_region,
+    drawable_region_compound,
+    is_drawable,
+    log_curvature_graph,
+    pixel_center,
+    solve_segments,
+)
+
+__all__ = [
+    "MAX_ABS_ALPHA",
+    "CompoundCurve",
+    "Curve",
+    "CurvaturePlot",
+    "Frames",
+    "Graph",
+    "InvalidInput",
+    "LacError",
+    "LcgFit",
+    "LcgLine",
+    "LogCurvatureGraph",
+    "MonotonicityReport",
+    "NotDrawable",
+    "QuasiCurve",
+    "QuasiPiece",
+    "RationalCubic",
+    "Samples",
+    "Segment",
+    "SegmentBatch",
+    "SpaceSegment",
+    "StandardForm",
+    "classify",
+    "curvature_plot",
+    "drawable_region",
+    "drawable_region_compound",
+    "is_drawable",
+    "log_curvature_graph",
+    "pixel_center",
+    "solve_segments",
+]

@@ -4,8 +4,10 @@
 use std::fmt;
 
 use super::{banded, segment, Continuity, ControlPolygon, Path};
+use kurbo::Point;
+
 use crate::error::{Error, Result};
-use crate::segment::Segment;
+use crate::segment::{end_curvatures_of, Segment};
 
 /// The solver stops once every joint's |ln(κ⁻/κ⁺)| is below this (about the rounding of
 /// the segments' end curvatures); a result must in any case meet
@@ -69,9 +71,13 @@ pub struct G2Outcome {
     pub failure: Option<Error>,
 }
 
-/// One segment and the scale-free derivatives of ln|κ| at its ends in ln r.
+/// One segment's end curvatures and the scale-free derivatives of ln|κ| at its ends in
+/// ln r.
 struct Eval {
-    segment: Segment,
+    /// The control points.
+    points: [Point; 3],
+    /// Signed curvature at the first and last point.
+    kappa: (f64, f64),
     /// d(ln|κ0| + ln a)/d ln r and d(ln|κ1| + ln b)/d ln r.
     slope: Option<[f64; 2]>,
 }
@@ -117,10 +123,17 @@ fn evaluate(polygon: &ControlPolygon, alphas: &[f64], x: Vec<f64>) -> Result<Sta
     let t = polygon.leg_fractions(&fractions);
     let evals = (0..polygon.segment_count())
         .map(|k| {
-            segment(polygon, alphas, &t, k).map(|segment| Eval {
-                segment,
-                slope: None,
-            })
+            let points = polygon.control_points(&t, k);
+            end_curvatures_of(points, alphas[k])
+                .map(|kappa| Eval {
+                    points,
+                    kappa,
+                    slope: None,
+                })
+                .map_err(|e| Error::PathSegment {
+                    vertex: polygon.vertex_of_segment(k),
+                    source: Box::new(e),
+                })
         })
         .collect::<Result<Vec<_>>>()?;
     let residual = polygon
@@ -128,8 +141,8 @@ fn evaluate(polygon: &ControlPolygon, alphas: &[f64], x: Vec<f64>) -> Result<Sta
         .into_iter()
         .map(|leg| {
             let (before, after) = polygon.segments_at_leg(leg);
-            let k1 = evals[before].segment.end_curvatures().1;
-            let k0 = evals[after].segment.end_curvatures().0;
+            let k1 = evals[before].kappa.1;
+            let k0 = evals[after].kappa.0;
             (k1.abs() / k0.abs()).ln()
         })
         .collect();
@@ -143,23 +156,21 @@ fn evaluate(polygon: &ControlPolygon, alphas: &[f64], x: Vec<f64>) -> Result<Sta
 
 /// dG0/d ln r and dG1/d ln r of segment `k` by a forward difference: its end point moved
 /// toward its vertex by the factor e^{−h} (backwards when that is not drawable).
-fn slopes(polygon: &ControlPolygon, alphas: &[f64], state: &State, k: usize) -> Option<[f64; 2]> {
-    let seg = &state.evals[k].segment;
-    let [q0, p, q1] = seg.control_points();
-    let (k0, k1) = seg.end_curvatures();
+fn slopes(alphas: &[f64], state: &State, k: usize) -> Option<[f64; 2]> {
+    let eval = &state.evals[k];
+    let [q0, p, q1] = eval.points;
+    let (k0, k1) = eval.kappa;
     for h in [H, -H] {
         let moved = p + (q1 - p) * (-h).exp();
-        let Ok(other) = Segment::from_control_points([q0, p, moved], alphas[k]) else {
+        let Ok((m0, m1)) = end_curvatures_of([q0, p, moved], alphas[k]) else {
             continue;
         };
-        let (m0, m1) = other.end_curvatures();
         let g0 = (m0.abs() / k0.abs()).ln() / h;
         let g1 = (m1.abs() / k1.abs()).ln() / h - 1.0;
         if g0.is_finite() && g1.is_finite() {
             return Some([g0, g1]);
         }
     }
-    let _ = polygon;
     None
 }
 
@@ -252,13 +263,24 @@ pub(super) fn solve(
         return Err(first_error.expect("at least one start was tried"));
     };
     let cyclic = polygon.is_closed();
+    let mut refresh = true;
+    let mut slopes_now: Vec<Option<[f64; 2]>> = Vec::new();
     for _ in 0..MAX_STEPS {
         if state.max() <= G2_TOLERANCE {
             break;
         }
-        // The tridiagonal Jacobian of the residuals in the logit fractions.
-        for k in 0..state.evals.len() {
-            state.evals[k].slope = slopes(polygon, alphas, &state, k);
+        // The tridiagonal Jacobian of the residuals in the logit fractions: dG/d ln r of
+        // each segment is measured again only when the last step converged slowly (a chord
+        // method otherwise; the chain-rule factors are always current).
+        if refresh {
+            for k in 0..state.evals.len() {
+                state.evals[k].slope = slopes(alphas, &state, k);
+            }
+            slopes_now = state.evals.iter().map(|e| e.slope).collect();
+        } else {
+            for (e, s) in state.evals.iter_mut().zip(&slopes_now) {
+                e.slope = *s;
+            }
         }
         let (mut sub, mut diag, mut sup) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
         let mut ok = true;
@@ -315,12 +337,20 @@ pub(super) fn solve(
             lambda *= 0.5;
         }
         match next {
-            Some(s) => state = s,
+            Some(s) => {
+                // Fresh derivatives unless this step (taken whole) reduced the residual by
+                // a factor of 10 or more.
+                refresh = !(lambda == 1.0 && s.max() <= 0.1 * state.max());
+                state = s;
+            }
+            None if !refresh => refresh = true,
             None => break,
         }
     }
     let fractions: Vec<f64> = legs.iter().map(|&leg| state.t[leg]).collect();
-    let segments: Vec<Segment> = state.evals.into_iter().map(|e| e.segment).collect();
+    let segments = (0..polygon.segment_count())
+        .map(|k| segment(polygon, alphas, &state.t, k))
+        .collect::<Result<Vec<Segment>>>()?;
     let jump_ok = state
         .residual
         .iter()

@@ -196,6 +196,13 @@ impl ControlPolygon {
         }
     }
 
+    /// The control triangle of segment `k` for leg fractions `t`.
+    fn control_points(&self, t: &[f64], k: usize) -> [Point; 3] {
+        let (sl, el) = self.legs_of_segment(k);
+        let v = self.vertex_of_segment(k);
+        [self.at(sl, t[sl]), self.points[v], self.at(el, t[el])]
+    }
+
     /// The turning direction at vertex `v` (`None` when the legs are collinear).
     fn turn_at(&self, v: usize) -> Option<Turn> {
         let n = self.points.len();

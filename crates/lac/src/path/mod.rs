@@ -490,9 +490,30 @@ impl Path {
         &self.fractions
     }
 
+    /// The control triangle of each segment as the solver placed it: (start joint, vertex,
+    /// end joint), the joints exactly shared by consecutive segments.
+    pub fn control_triangles(&self) -> Vec<[Point; 3]> {
+        (0..self.segments.len())
+            .map(|k| self.polygon.control_points(&self.fractions, k))
+            .collect()
+    }
+
     /// The joints, with what the solver's check measured there.
     pub fn joints(&self) -> &[Joint] {
         &self.joints
+    }
+
+    /// The arc length of each joint from the path's start (the order of [`Path::joints`];
+    /// a closed path's last joint is at its full length).
+    pub fn joints_s(&self) -> Vec<f64> {
+        let mut s = 0.0;
+        self.segments[..self.joints.len()]
+            .iter()
+            .map(|seg| {
+                s += seg.arc_length();
+                s
+            })
+            .collect()
     }
 
     /// G1 or G2.

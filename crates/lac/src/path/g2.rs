@@ -206,62 +206,10 @@ fn balanced_start(polygon: &ControlPolygon) -> Vec<f64> {
         .collect()
 }
 
-/// Solve the G2 joint equations (see the module documentation of [`crate::path`]).
-pub(super) fn solve(
-    polygon: &ControlPolygon,
-    alphas: &[f64],
-    warm: Option<&[f64]>,
-) -> Result<G2Outcome> {
-    let legs = polygon.joint_legs();
+/// Newton's method (damped; chord steps while they converge fast) on the joint equations
+/// from `state`, returning the last iterate.
+fn newton(polygon: &ControlPolygon, alphas: &[f64], legs: &[usize], mut state: State) -> State {
     let n = legs.len();
-    // An inflection leg: the curvature would have to change sign at the joint.
-    for &leg in &legs {
-        let (before, after) = polygon.segments_at_leg(leg);
-        let (vb, va) = (
-            polygon.vertex_of_segment(before),
-            polygon.vertex_of_segment(after),
-        );
-        if polygon.turn_at(vb) != polygon.turn_at(va) {
-            let failure = Error::NoG2Path {
-                leg,
-                reason: G2Failure::Inflection {
-                    alphas: [alphas[before], alphas[after]],
-                },
-            };
-            let path = Path::g1(polygon, &super::Alphas::PerSegment(alphas.to_vec()), None)?;
-            return Ok(G2Outcome {
-                path,
-                failure: Some(failure),
-            });
-        }
-    }
-    let warm: Option<Vec<f64>> = match warm {
-        Some(w) if w.len() == n && w.iter().all(|t| *t > 0.0 && *t < 1.0) => {
-            Some(w.iter().map(|t| (t / (1.0 - t)).ln()).collect())
-        }
-        _ => None,
-    };
-    // Starts in order: the warm start, fractions that make each segment's legs alike (the
-    // isosceles triangle is a circular arc, drawable for every α), the midpoints.
-    let starts = warm
-        .into_iter()
-        .chain([balanced_start(polygon), vec![0.0; n]]);
-    let mut first_error = None;
-    let mut found = None;
-    for start in starts {
-        match evaluate(polygon, alphas, start) {
-            Ok(s) => {
-                found = Some(s);
-                break;
-            }
-            Err(e) => {
-                first_error.get_or_insert(e);
-            }
-        }
-    }
-    let Some(mut state) = found else {
-        return Err(first_error.expect("at least one start was tried"));
-    };
     let cyclic = polygon.is_closed();
     let mut refresh = true;
     let mut slopes_now: Vec<Option<[f64; 2]>> = Vec::new();
@@ -347,6 +295,72 @@ pub(super) fn solve(
             None => break,
         }
     }
+    state
+}
+
+/// Solve the G2 joint equations (see the module documentation of [`crate::path`]).
+pub(super) fn solve(
+    polygon: &ControlPolygon,
+    alphas: &[f64],
+    warm: Option<&[f64]>,
+) -> Result<G2Outcome> {
+    let legs = polygon.joint_legs();
+    let n = legs.len();
+    // An inflection leg: the curvature would have to change sign at the joint.
+    for &leg in &legs {
+        let (before, after) = polygon.segments_at_leg(leg);
+        let (vb, va) = (
+            polygon.vertex_of_segment(before),
+            polygon.vertex_of_segment(after),
+        );
+        if polygon.turn_at(vb) != polygon.turn_at(va) {
+            let failure = Error::NoG2Path {
+                leg,
+                reason: G2Failure::Inflection {
+                    alphas: [alphas[before], alphas[after]],
+                },
+            };
+            let path = Path::g1(polygon, &super::Alphas::PerSegment(alphas.to_vec()), None)?;
+            return Ok(G2Outcome {
+                path,
+                failure: Some(failure),
+            });
+        }
+    }
+    let warm: Option<Vec<f64>> = match warm {
+        Some(w) if w.len() == n && w.iter().all(|t| *t > 0.0 && *t < 1.0) => {
+            Some(w.iter().map(|t| (t / (1.0 - t)).ln()).collect())
+        }
+        _ => None,
+    };
+    // Starts in order: the warm start, fractions that make each segment's legs alike (the
+    // isosceles triangle is a circular arc, drawable for every α), the midpoints.
+    let starts = warm
+        .into_iter()
+        .chain([balanced_start(polygon), vec![0.0; n]]);
+    // Newton from each start that can be evaluated, until one converges; otherwise the
+    // best iterate reached (smallest residual) is the nearest G1 path.
+    let mut first_error = None;
+    let mut best: Option<State> = None;
+    for start in starts {
+        let state = match evaluate(polygon, alphas, start) {
+            Ok(s) => newton(polygon, alphas, &legs, s),
+            Err(e) => {
+                first_error.get_or_insert(e);
+                continue;
+            }
+        };
+        let converged = state.max() <= 0.5 * super::G2_JUMP_LIMIT;
+        if best.as_ref().is_none_or(|b| state.norm() < b.norm()) {
+            best = Some(state);
+        }
+        if converged {
+            break;
+        }
+    }
+    let Some(state) = best else {
+        return Err(first_error.expect("at least one start was tried"));
+    };
     let fractions: Vec<f64> = legs.iter().map(|&leg| state.t[leg]).collect();
     let segments = (0..polygon.segment_count())
         .map(|k| segment(polygon, alphas, &state.t, k))

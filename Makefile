@@ -96,6 +96,7 @@ bench: $(VENV)/.installed
 	cargo bench -p lac --bench compound
 	cargo bench -p lac --bench quasi
 	cargo bench -p lac --bench space
+	cargo bench -p lac --bench path
 	$(PY) tools/reference/bench_clothoids.py
 
 # The main job: a clothoid-to-spiral segment drawn as SVG with its curvature comb.

@@ -132,6 +132,25 @@ pub(crate) enum Command {
                                 lac space --batch FILE|- [--samples N] [--frames] [-o FILE|-]"
     )]
     Space(SpaceArgs),
+    /// Draw a log-aesthetic path from a control polygon: one segment per interior vertex,
+    /// joined on the legs with continuous tangent (G1), and with --g2 continuous curvature
+    ///
+    /// Each interior vertex Pj carries the segment with control points (Qj, Pj, Qj+1), whose
+    /// joints Q lie on the legs (the ends are the first and last point). Without --g2 the
+    /// joints are at the leg midpoints (or --fractions); with --g2 they are solved so that
+    /// the curvature is continuous at every joint (relative jump at most 1e-9). The JSON has
+    /// "continuity", "closed", "arc_length", "max_curvature_jump", "points", "segments"
+    /// [{vertex, alpha, lambda, control_points, arc_length, curvature:[start,end]}], "joints"
+    /// [{leg, fraction, point, s, curvature:[before,after], curvature_jump, gap,
+    /// tangent_jump}] and "samples" [{s,x,y,theta,kappa}]. When no G2 path is found the
+    /// error (kind no_g2_path, exit code 3) names the joint's leg, says why, and gives the
+    /// fractions of the nearest G1 path (pass them as --fractions without --g2).
+    #[command(
+        override_usage = "lac path --polygon \"x0,y0 x1,y1 x2,y2 …\" (--alpha A | --alphas \"a1,a2,…\") \
+                                [--closed] [--g2 | --fractions \"t1,t2,…\"]\n                \
+                                [--samples N] [--format json|csv|svg] [-o FILE|-] [--comb] [--evolute]"
+    )]
+    Path(PathArgs),
     /// Start the interactive editor: a local web server with the editor's page (embedded,
     /// works offline) and its JSON API; prints the URL and serves until interrupted
     #[command(override_usage = "lac serve [--port P] [--open] [--host ADDR --allow-remote]")]
@@ -168,6 +187,45 @@ pub(crate) struct SegmentArgs {
     /// curve, 70 internal), with a one-line summary on standard error
     #[arg(long, value_name = "FILE|-", conflicts_with_all = ["points", "alpha"])]
     pub(crate) batch: Option<PathBuf>,
+
+    /// What to print and where.
+    #[command(flatten)]
+    pub(crate) output: CurveOutput,
+}
+
+/// Arguments of `lac path`.
+#[derive(Debug, Args)]
+pub(crate) struct PathArgs {
+    /// The control polygon "x0,y0 x1,y1 …" (at least three points), separated by spaces
+    /// and/or semicolons
+    #[arg(long, value_name = "POINTS", allow_hyphen_values = true)]
+    pub(crate) polygon: String,
+
+    /// The slope of every segment
+    #[arg(
+        long,
+        value_name = "A",
+        allow_hyphen_values = true,
+        conflicts_with = "alphas"
+    )]
+    pub(crate) alpha: Option<f64>,
+
+    /// One slope per segment "a1,a2,…" (per interior vertex; per vertex when closed)
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub(crate) alphas: Option<String>,
+
+    /// Close the polygon (the last point joins the first): a closed path
+    #[arg(long)]
+    pub(crate) closed: bool,
+
+    /// Solve the joints for continuous curvature (G2)
+    #[arg(long, conflicts_with = "fractions")]
+    pub(crate) g2: bool,
+
+    /// G1: the fraction of each joint leg (every leg but the first and last; every leg when
+    /// closed) at which its joint lies, "t1,t2,…" in (0, 1); default the midpoints
+    #[arg(long, value_name = "LIST")]
+    pub(crate) fractions: Option<String>,
 
     /// What to print and where.
     #[command(flatten)]

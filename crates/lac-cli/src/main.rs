@@ -8,7 +8,7 @@
 //! plain cubic Bézier pieces (seed 001), `lac monotone` decides whether the curvature of a
 //! rational cubic is monotone, and `lac lcg` plots the curvature and the logarithmic
 //! curvature graph of Bézier pieces or of a curve and fits its slope (both graphs of a space
-//! curve). `lac space` solves a log-aesthetic space curve segment from four 3-D control points
+//! curve). `lac path` draws a path of segments from a control polygon, G1 or G2. `lac space` solves a log-aesthetic space curve segment from four 3-D control points
 //! (seed 003).
 //!
 //! Every subcommand that prints curves offers `--format json|csv|svg` (and more) and
@@ -28,6 +28,7 @@ mod limits;
 mod mesh;
 mod monotone;
 mod output;
+mod path;
 mod points;
 mod quasi;
 mod raster;
@@ -72,6 +73,7 @@ fn main() -> ExitCode {
         Command::Monotone(args) => monotone::run(args, limits),
         Command::Lcg(args) => lcg::run(args, limits),
         Command::Space(args) => space::run(args, limits),
+        Command::Path(args) => path::run(args, limits),
         Command::Serve(args) => serve::run(args),
     };
     match result {

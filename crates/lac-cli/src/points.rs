@@ -18,6 +18,22 @@ pub(crate) fn parse_point_list(text: &str, counts: &[usize]) -> Result<Vec<Xy>, 
     parse_coordinates::<2>(text, counts)
 }
 
+/// Parse between `min` and `max` points (a control polygon), as [`parse_points`] does.
+pub(crate) fn parse_polygon(text: &str, min: usize, max: usize) -> Result<Vec<Xy>, ErrorBody> {
+    let tight = tighten_commas(text);
+    let count = tight
+        .split(|c: char| c == ';' || c.is_whitespace())
+        .filter(|t| !t.is_empty())
+        .count();
+    if !(min..=max).contains(&count) {
+        return Err(ErrorBody::invalid_input(format!(
+            "expected {min} to {max} points \"x,y\" separated by spaces or semicolons, got \
+             {count}"
+        )));
+    }
+    parse_coordinates::<2>(text, &[count])
+}
+
 /// Parse exactly four space points "x0,y0,z0 x1,y1,z1 x2,y2,z2 x3,y3,z3", as
 /// [`parse_points`] does.
 pub(crate) fn parse_space_points(text: &str) -> Result<[Xyz; 4], ErrorBody> {

@@ -127,6 +127,23 @@ pub enum Error {
         /// The most pieces a chain may have.
         max_pieces: usize,
     },
+    /// The segment of a path at polygon vertex `vertex` cannot be drawn.
+    #[error("the segment at polygon vertex P{vertex} cannot be drawn: {source}")]
+    PathSegment {
+        /// The vertex (0-based) that carries the segment.
+        vertex: usize,
+        /// Why its control triangle has no segment.
+        source: Box<Error>,
+    },
+    /// No path with continuous curvature (G2) was found: the joint on polygon leg `leg`
+    /// (from P_leg to the next vertex) is where it fails.
+    #[error("no G2 path: at the joint on leg P{leg}-P{}, {reason}", leg + 1)]
+    NoG2Path {
+        /// The leg, from 0 (leg i runs from P_i to P_{i+1}).
+        leg: usize,
+        /// Why.
+        reason: crate::path::G2Failure,
+    },
     /// A computation that should succeed for a solved curve did not (an overflow, or a
     /// bound of the family reached through rounding). This is a defect: please report the
     /// input that caused it.
@@ -171,6 +188,8 @@ pub enum ErrorKind {
     Unrepresentable,
     /// [`Error::NumericalFailure`].
     NumericalFailure,
+    /// [`Error::NoG2Path`].
+    NoG2Path,
 }
 
 /// A number for a message: plain where that is short, in exponent form otherwise (a plain
@@ -212,6 +231,8 @@ impl Error {
             Error::CurvatureUndefined { .. } => ErrorKind::CurvatureUndefined,
             Error::Unrepresentable { .. } => ErrorKind::Unrepresentable,
             Error::NumericalFailure { .. } => ErrorKind::NumericalFailure,
+            Error::PathSegment { source, .. } => source.kind(),
+            Error::NoG2Path { .. } => ErrorKind::NoG2Path,
         }
     }
 }

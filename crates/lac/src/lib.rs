@@ -71,6 +71,7 @@ mod gauss;
 mod lcg;
 mod monotone;
 mod numeric;
+mod path;
 mod quasi;
 pub mod region;
 mod segment;
@@ -90,6 +91,10 @@ pub use curve::{Curve, HIDDEN_SHARE, HIDDEN_TURNING};
 pub use error::{Error, ErrorKind, NotDrawable, Result};
 pub use lcg::LcgLine;
 pub use monotone::{Monotonicity, MonotonicityReport};
+pub use path::{
+    Alphas, Continuity, ControlPolygon, G2Failure, G2Outcome, Joint, Path, G2_JUMP_LIMIT,
+    G2_TOLERANCE, MAX_POLYGON_POINTS,
+};
 pub use quasi::{QuasiCurve, QuasiPiece, MAX_PIECES};
 pub use segment::{Sample, Segment, SegmentDerivative, MAX_ABS_ALPHA, MAX_ADAPTIVE_SAMPLES};
 pub use space::{

@@ -104,6 +104,37 @@ pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
     })
 }
 
+/// The signed end curvatures of the segment on `points` with slope `alpha`, without
+/// building or checking it: for solvers that iterate on them (a path's G2 joints), whose
+/// final answer is built by [`Segment::from_control_points`] and checked there.
+pub(crate) fn end_curvatures_of(points: [Point; 3], alpha: f64) -> Result<(f64, f64)> {
+    let tri = control_triangle(points)?;
+    let (u, v) = (points[1] - points[0], points[2] - points[1]);
+    let reversed = u.x.hypot(u.y) > v.x.hypot(v.y);
+    let theta_e = if reversed {
+        tri.turning - tri.theta_e
+    } else {
+        tri.theta_e
+    };
+    let piece = solve(alpha, tri.turning, theta_e.max(0.5 * tri.turning))?;
+    let (first, last) = if reversed {
+        (piece.end, piece.start)
+    } else {
+        (piece.start, piece.end)
+    };
+    let c = points[2] - points[0];
+    let scale = c.x.hypot(c.y) / piece.chord.norm();
+    let k = |st: &Station| tri.turn.sign() * st.kappa() / scale;
+    let out = (k(&first), k(&last));
+    if out.0.is_finite() && out.1.is_finite() && out.0 != 0.0 && out.1 != 0.0 {
+        Ok(out)
+    } else {
+        Err(Error::Unrepresentable {
+            what: "curvature (it scales as 1/length)",
+        })
+    }
+}
+
 /// A planar log-aesthetic curve segment defined like a quadratic Bézier curve: it starts
 /// at `P0` tangent to `P1 − P0` and ends at `P2` tangent to `P2 − P1` (seed 000 §4.1).
 ///

@@ -1,0 +1,406 @@
+//! Newton's method on the joint fractions for curvature continuity (see the module
+//! documentation of [`crate::path`] for the equations).
+
+use std::fmt;
+
+use super::{banded, segment, Continuity, ControlPolygon, Path};
+use kurbo::Point;
+
+use crate::error::{Error, Result};
+use crate::segment::{end_curvatures_of, Segment};
+
+/// The solver stops once every joint's |ln(κ⁻/κ⁺)| is below this (about the rounding of
+/// the segments' end curvatures); a result must in any case meet
+/// [`G2_JUMP_LIMIT`](super::G2_JUMP_LIMIT).
+pub const G2_TOLERANCE: f64 = 1e-12;
+
+/// Most Newton steps.
+const MAX_STEPS: usize = 60;
+/// Step in ln r of the forward difference for dG/d ln r.
+const H: f64 = 1e-6;
+/// Largest change of any joint's logit fraction in one step.
+const MAX_STEP: f64 = 2.0;
+
+/// Why no G2 path was found at a joint.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum G2Failure {
+    /// Newton's method did not bring the curvature jump at this joint to zero: the best
+    /// relative jump reached is `jump` (no G2 path nearby, e.g. the legs are too unequal for
+    /// the segments' curvature ratios).
+    NoConvergence {
+        /// The smallest |ln(κ⁻/κ⁺)| reached at this joint.
+        jump: f64,
+    },
+    /// The polygon turns one way before this leg and the other way after it: the curvature
+    /// must pass through zero, which a log-aesthetic segment does only for α < 0.
+    Inflection {
+        /// The slopes of the segments before and after the leg.
+        alphas: [f64; 2],
+    },
+}
+
+impl fmt::Display for G2Failure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            G2Failure::NoConvergence { jump } => write!(
+                f,
+                "the curvature could not be made continuous there (smallest jump reached \
+                 ln(k-/k+) = {jump:.3e}); make the neighbouring legs more alike in length or \
+                 the turning angles at their vertices more alike"
+            ),
+            G2Failure::Inflection { alphas } => write!(
+                f,
+                "the polygon's turning changes direction on this leg, so the curvature must \
+                 pass through zero; the segments there have alpha = {} and {}, and a \
+                 log-aesthetic segment reaches zero curvature only for alpha < 0 (and that \
+                 is not supported yet): add a vertex or use the G1 path",
+                alphas[0], alphas[1]
+            ),
+        }
+    }
+}
+
+/// A G2 path, or the nearest G1 path and why G2 failed.
+#[derive(Clone, Debug)]
+pub struct G2Outcome {
+    /// The path: G2 when `failure` is `None`, else the G1 path with the smallest curvature
+    /// jumps the search reached.
+    pub path: Path,
+    /// Why there is no G2 path ([`Error::NoG2Path`]), if there is none.
+    pub failure: Option<Error>,
+}
+
+/// One segment's end curvatures and the scale-free derivatives of ln|κ| at its ends in
+/// ln r.
+struct Eval {
+    /// The control points.
+    points: [Point; 3],
+    /// Signed curvature at the first and last point.
+    kappa: (f64, f64),
+    /// d(ln|κ0| + ln a)/d ln r and d(ln|κ1| + ln b)/d ln r.
+    slope: Option<[f64; 2]>,
+}
+
+/// The state at one set of fractions.
+struct State {
+    /// Logit of each joint's fraction.
+    x: Vec<f64>,
+    /// Fraction of every leg.
+    t: Vec<f64>,
+    evals: Vec<Eval>,
+    /// ln|κ⁻| − ln|κ⁺| at each joint.
+    residual: Vec<f64>,
+}
+
+impl State {
+    fn norm(&self) -> f64 {
+        self.residual.iter().map(|r| r * r).sum::<f64>().sqrt()
+    }
+
+    fn max(&self) -> f64 {
+        self.residual.iter().fold(0.0, |m, r| m.max(r.abs()))
+    }
+}
+
+fn logistic(x: f64) -> f64 {
+    if x >= 0.0 {
+        1.0 / (1.0 + (-x).exp())
+    } else {
+        let e = x.exp();
+        e / (1.0 + e)
+    }
+}
+
+/// The segments and joint residuals at logit fractions `x`, or the segment that fails.
+fn evaluate(polygon: &ControlPolygon, alphas: &[f64], x: Vec<f64>) -> Result<State> {
+    let fractions: Vec<f64> = x.iter().map(|&x| logistic(x)).collect();
+    if fractions.iter().any(|&t| !(t > 0.0 && t < 1.0)) {
+        return Err(Error::NumericalFailure {
+            what: "a joint fraction (it reached an end of its leg)",
+        });
+    }
+    let t = polygon.leg_fractions(&fractions);
+    let evals = (0..polygon.segment_count())
+        .map(|k| {
+            let points = polygon.control_points(&t, k);
+            end_curvatures_of(points, alphas[k])
+                .map(|kappa| Eval {
+                    points,
+                    kappa,
+                    slope: None,
+                })
+                .map_err(|e| Error::PathSegment {
+                    vertex: polygon.vertex_of_segment(k),
+                    source: Box::new(e),
+                })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let residual = polygon
+        .joint_legs()
+        .into_iter()
+        .map(|leg| {
+            let (before, after) = polygon.segments_at_leg(leg);
+            let k1 = evals[before].kappa.1;
+            let k0 = evals[after].kappa.0;
+            (k1.abs() / k0.abs()).ln()
+        })
+        .collect();
+    Ok(State {
+        x,
+        t,
+        evals,
+        residual,
+    })
+}
+
+/// dG0/d ln r and dG1/d ln r of segment `k` by a forward difference: its end point moved
+/// toward its vertex by the factor e^{−h} (backwards when that is not drawable).
+fn slopes(alphas: &[f64], state: &State, k: usize) -> Option<[f64; 2]> {
+    let eval = &state.evals[k];
+    let [q0, p, q1] = eval.points;
+    let (k0, k1) = eval.kappa;
+    for h in [H, -H] {
+        let moved = p + (q1 - p) * (-h).exp();
+        let Ok((m0, m1)) = end_curvatures_of([q0, p, moved], alphas[k]) else {
+            continue;
+        };
+        let g0 = (m0.abs() / k0.abs()).ln() / h;
+        let g1 = (m1.abs() / k1.abs()).ln() / h - 1.0;
+        if g0.is_finite() && g1.is_finite() {
+            return Some([g0, g1]);
+        }
+    }
+    None
+}
+
+/// Logit fractions that give each segment legs of similar length: a vertex may use at
+/// most half of a leg it shares with another vertex (all of an open polygon's end leg), and
+/// each joint splits its leg in proportion to what its two vertices can use on their other
+/// sides.
+fn balanced_start(polygon: &ControlPolygon) -> Vec<f64> {
+    let n = polygon.points.len();
+    let length = |i: usize| {
+        let (a, b) = polygon.leg(i);
+        (b - a).hypot()
+    };
+    let joints = polygon.joint_legs();
+    let is_joint = |i: usize| polygon.closed || (i > 0 && i + 2 < n);
+    let usable = |i: usize| {
+        if is_joint(i) {
+            0.5 * length(i)
+        } else {
+            length(i)
+        }
+    };
+    joints
+        .iter()
+        .map(|&leg| {
+            let (before, after) = polygon.segments_at_leg(leg);
+            let (sl, _) = polygon.legs_of_segment(before);
+            let (_, el) = polygon.legs_of_segment(after);
+            let (wb, wa) = (usable(sl), usable(el));
+            let t = (wb / (wb + wa)).clamp(0.05, 0.95);
+            (t / (1.0 - t)).ln()
+        })
+        .collect()
+}
+
+/// Newton's method (damped; chord steps while they converge fast) on the joint equations
+/// from `state`, returning the last iterate.
+fn newton(polygon: &ControlPolygon, alphas: &[f64], legs: &[usize], mut state: State) -> State {
+    let n = legs.len();
+    let cyclic = polygon.is_closed();
+    let mut refresh = true;
+    let mut slopes_now: Vec<Option<[f64; 2]>> = Vec::new();
+    for _ in 0..MAX_STEPS {
+        if state.max() <= G2_TOLERANCE {
+            break;
+        }
+        // The tridiagonal Jacobian of the residuals in the logit fractions: dG/d ln r of
+        // each segment is measured again only when the last step converged slowly (a chord
+        // method otherwise; the chain-rule factors are always current).
+        if refresh {
+            for k in 0..state.evals.len() {
+                state.evals[k].slope = slopes(alphas, &state, k);
+            }
+            slopes_now = state.evals.iter().map(|e| e.slope).collect();
+        } else {
+            for (e, s) in state.evals.iter_mut().zip(&slopes_now) {
+                e.slope = *s;
+            }
+        }
+        let (mut sub, mut diag, mut sup) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        let mut ok = true;
+        for (u, &leg) in legs.iter().enumerate() {
+            let (before, after) = polygon.segments_at_leg(leg);
+            let (Some(gb), Some(ga)) = (state.evals[before].slope, state.evals[after].slope) else {
+                ok = false;
+                break;
+            };
+            let t = state.t[leg];
+            let (sl, _) = polygon.legs_of_segment(before);
+            let (_, el) = polygon.legs_of_segment(after);
+            // R = G1(before) − G0(after) − x, ln r(before) = ln(1 − t_sl) − ln t_leg + …,
+            // ln r(after) = ln(1 − t_leg) − ln t_el + ….
+            diag[u] = gb[1] * -(1.0 - t) - ga[0] * -t - 1.0;
+            sub[u] = gb[1] * -state.t[sl];
+            sup[u] = -ga[0] * -(1.0 - state.t[el]);
+            // A neighbour that is an end leg of an open polygon is not an unknown.
+            if !cyclic && u == 0 {
+                sub[u] = 0.0;
+            }
+            if !cyclic && u + 1 == n {
+                sup[u] = 0.0;
+            }
+        }
+        if !ok {
+            break;
+        }
+        let rhs: Vec<f64> = state.residual.iter().map(|r| -r).collect();
+        let Some(dx) = banded::solve(&sub, &diag, &sup, &rhs, cyclic) else {
+            break;
+        };
+        let biggest = dx.iter().fold(0.0f64, |m, d| m.max(d.abs()));
+        let mut lambda = if biggest > MAX_STEP {
+            MAX_STEP / biggest
+        } else {
+            1.0
+        };
+        let norm = state.norm();
+        let mut next = None;
+        for _ in 0..30 {
+            let x: Vec<f64> = state
+                .x
+                .iter()
+                .zip(&dx)
+                .map(|(x, d)| x + lambda * d)
+                .collect();
+            if let Ok(s) = evaluate(polygon, alphas, x) {
+                if s.norm() < norm * (1.0 - 1e-4 * lambda) {
+                    next = Some(s);
+                    break;
+                }
+            }
+            lambda *= 0.5;
+        }
+        match next {
+            Some(s) => {
+                // Fresh derivatives unless this step (taken whole) reduced the residual by
+                // a factor of 10 or more.
+                refresh = !(lambda == 1.0 && s.max() <= 0.1 * state.max());
+                state = s;
+            }
+            None if !refresh => refresh = true,
+            None => break,
+        }
+    }
+    state
+}
+
+/// Solve the G2 joint equations (see the module documentation of [`crate::path`]).
+pub(super) fn solve(
+    polygon: &ControlPolygon,
+    alphas: &[f64],
+    warm: Option<&[f64]>,
+) -> Result<G2Outcome> {
+    let legs = polygon.joint_legs();
+    let n = legs.len();
+    // An inflection leg: the curvature would have to change sign at the joint.
+    for &leg in &legs {
+        let (before, after) = polygon.segments_at_leg(leg);
+        let (vb, va) = (
+            polygon.vertex_of_segment(before),
+            polygon.vertex_of_segment(after),
+        );
+        if polygon.turn_at(vb) != polygon.turn_at(va) {
+            let failure = Error::NoG2Path {
+                leg,
+                reason: G2Failure::Inflection {
+                    alphas: [alphas[before], alphas[after]],
+                },
+            };
+            let path = Path::g1(polygon, &super::Alphas::PerSegment(alphas.to_vec()), None)?;
+            return Ok(G2Outcome {
+                path,
+                failure: Some(failure),
+            });
+        }
+    }
+    let warm: Option<Vec<f64>> = match warm {
+        Some(w) if w.len() == n && w.iter().all(|t| *t > 0.0 && *t < 1.0) => {
+            Some(w.iter().map(|t| (t / (1.0 - t)).ln()).collect())
+        }
+        _ => None,
+    };
+    // Starts in order: the warm start, fractions that make each segment's legs alike (the
+    // isosceles triangle is a circular arc, drawable for every α), the midpoints.
+    let starts = warm
+        .into_iter()
+        .chain([balanced_start(polygon), vec![0.0; n]]);
+    // Newton from each start that can be evaluated, until one converges; otherwise the
+    // best iterate reached (smallest residual) is the nearest G1 path.
+    let mut first_error = None;
+    let mut best: Option<State> = None;
+    for start in starts {
+        let state = match evaluate(polygon, alphas, start) {
+            Ok(s) => newton(polygon, alphas, &legs, s),
+            Err(e) => {
+                first_error.get_or_insert(e);
+                continue;
+            }
+        };
+        let converged = state.max() <= 0.5 * super::G2_JUMP_LIMIT;
+        if best.as_ref().is_none_or(|b| state.norm() < b.norm()) {
+            best = Some(state);
+        }
+        if converged {
+            break;
+        }
+    }
+    let Some(state) = best else {
+        return Err(first_error.expect("at least one start was tried"));
+    };
+    let fractions: Vec<f64> = legs.iter().map(|&leg| state.t[leg]).collect();
+    let segments = (0..polygon.segment_count())
+        .map(|k| segment(polygon, alphas, &state.t, k))
+        .collect::<Result<Vec<Segment>>>()?;
+    let jump_ok = state
+        .residual
+        .iter()
+        .all(|r| r.abs() <= 0.5 * super::G2_JUMP_LIMIT);
+    if jump_ok {
+        let path = Path::assemble(
+            polygon.clone(),
+            alphas.to_vec(),
+            state.t,
+            segments,
+            Continuity::G2,
+        )?;
+        return Ok(G2Outcome {
+            path,
+            failure: None,
+        });
+    }
+    let (worst, jump) = state
+        .residual
+        .iter()
+        .enumerate()
+        .fold(
+            (0, 0.0f64),
+            |(i, m), (j, r)| if r.abs() > m { (j, r.abs()) } else { (i, m) },
+        );
+    let failure = Error::NoG2Path {
+        leg: legs[worst],
+        reason: G2Failure::NoConvergence { jump },
+    };
+    let path = Path::g1(
+        polygon,
+        &super::Alphas::PerSegment(alphas.to_vec()),
+        Some(&fractions),
+    )?;
+    Ok(G2Outcome {
+        path,
+        failure: Some(failure),
+    })
+}

@@ -1,0 +1,552 @@
+//! Log-aesthetic paths from a control polygon (seed 000 §5, "G1 continuity can be easily
+//! achieved by placing the three consecutive control points such that they are collinear").
+//!
+//! A control polygon P0 … Pn is read like a quadratic B-spline's: every interior vertex Pj
+//! carries one log-aesthetic [`Segment`] whose control triangle is (Qj, Pj, Qj+1), where the
+//! joints Q lie on the legs — Qj = Pj−1 + tj (Pj − Pj−1) with the *leg fraction* tj ∈ (0, 1) —
+//! and the ends of an open path are P0 and Pn. Consecutive segments share a joint and its
+//! tangent (the leg's direction), so the path is G1 by construction. A closed polygon has a
+//! joint on every leg.
+//!
+//! * [`Path::g1`]: the joints at given fractions (the leg midpoints by default).
+//! * [`Path::g2`]: the fractions solved so that the curvature is continuous at every joint.
+//!   The curvature jump at a joint depends on its own fraction and on those of the two
+//!   neighbouring joints only (each segment is fixed by the fractions of its two legs), so
+//!   the system is tridiagonal (cyclic for closed paths) and Newton's method solves it in
+//!   O(n) per step, from the leg midpoints or from a previous solution (warm start: after a
+//!   drag only the joints near the moved vertex change much).
+//!
+//! Unknowns and equations. A segment's shape depends only on its turning angle (fixed by
+//! the polygon) and the ratio r = a/b of its legs a = |Pj − Qj|, b = |Qj+1 − Pj|; so its end
+//! curvatures are κ0 = e^{G0(ln r)}/a and κ1 = e^{G1(ln r)}/b with G0, G1 scale-free. With
+//! x = ln(t/(1 − t)) on each free leg, the joint equation between the segment ending and the
+//! one starting on that leg is `G1(before) − G0(after) − x = 0` (ln of the curvature ratio),
+//! whose derivatives follow from dG/d ln r (one extra segment solve per segment, by a
+//! forward difference) and d ln r / dx = −t (start leg), −(1 − t) (end leg).
+//!
+//! Every result is checked before it is returned: position, tangent and (in G2) curvature
+//! continuity at every joint ([`Joint`]).
+
+mod banded;
+mod g2;
+
+use kurbo::Point;
+
+use crate::curve::Curve;
+use crate::error::{finite, Error, Result};
+use crate::segment::{check_alpha, Segment};
+use crate::turn::Turn;
+
+pub use g2::{G2Failure, G2Outcome, G2_TOLERANCE};
+
+/// The largest relative curvature jump a G2 path may have at a joint,
+/// |κ⁻ − κ⁺| / max(|κ⁻|, |κ⁺|).
+pub const G2_JUMP_LIMIT: f64 = 1e-9;
+
+/// Largest gap between the ends of two segments at a joint, relative to the polygon's size,
+/// and largest tangent jump (radians), for any path.
+const G1_LIMIT: f64 = 1e-10;
+
+/// The most vertices a control polygon may have (the work is linear in it; this bounds a
+/// request's memory and time).
+pub const MAX_POLYGON_POINTS: usize = 100_000;
+
+/// A validated control polygon: at least three points, finite, consecutive points distinct;
+/// open (the path runs from the first point to the last) or closed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ControlPolygon {
+    points: Vec<Point>,
+    closed: bool,
+}
+
+impl ControlPolygon {
+    /// An open polygon P0 … Pn (n ≥ 2): the path starts at P0 tangent to P1 − P0 and ends at
+    /// Pn tangent to Pn − Pn−1, with one segment per interior vertex.
+    pub fn open(points: &[Point]) -> Result<ControlPolygon> {
+        ControlPolygon::new(points, false)
+    }
+
+    /// A closed polygon (at least three vertices; a last point equal to the first is
+    /// dropped): one segment per vertex and a joint on every leg.
+    pub fn closed(points: &[Point]) -> Result<ControlPolygon> {
+        let mut points = points.to_vec();
+        if points.len() > 3 && points.first() == points.last() {
+            points.pop();
+        }
+        ControlPolygon::new(&points, true)
+    }
+
+    fn new(points: &[Point], closed: bool) -> Result<ControlPolygon> {
+        if points.len() < 3 || points.len() > MAX_POLYGON_POINTS {
+            return Err(Error::OutOfRange {
+                name: "number of polygon points",
+                value: points.len() as f64,
+                expected: "at least 3 points (one interior vertex) and at most 100000",
+            });
+        }
+        for p in points {
+            finite("polygon point x", p.x)?;
+            finite("polygon point y", p.y)?;
+        }
+        let n = points.len();
+        let legs = if closed { n } else { n - 1 };
+        for i in 0..legs {
+            let j = (i + 1) % n;
+            let d = points[j] - points[i];
+            if points[i] == points[j] {
+                return Err(Error::CoincidentPoints {
+                    first: i,
+                    second: j,
+                });
+            }
+            if !d.x.hypot(d.y).is_finite() {
+                return Err(Error::OutOfRange {
+                    name: "polygon points",
+                    value: f64::INFINITY,
+                    expected: "coordinates whose differences do not overflow",
+                });
+            }
+        }
+        Ok(ControlPolygon {
+            points: points.to_vec(),
+            closed,
+        })
+    }
+
+    /// The vertices.
+    pub fn points(&self) -> &[Point] {
+        &self.points
+    }
+
+    /// Whether the polygon is closed.
+    pub fn is_closed(&self) -> bool {
+        self.closed
+    }
+
+    /// Number of legs: n for an open polygon of n + 1 points, n for a closed one of n.
+    pub fn leg_count(&self) -> usize {
+        if self.closed {
+            self.points.len()
+        } else {
+            self.points.len() - 1
+        }
+    }
+
+    /// Number of segments: one per interior vertex (every vertex when closed).
+    pub fn segment_count(&self) -> usize {
+        if self.closed {
+            self.points.len()
+        } else {
+            self.points.len() - 2
+        }
+    }
+
+    /// The vertex that carries segment `k`.
+    pub fn vertex_of_segment(&self, k: usize) -> usize {
+        if self.closed {
+            k
+        } else {
+            k + 1
+        }
+    }
+
+    /// The legs on which segment `k` starts and ends.
+    fn legs_of_segment(&self, k: usize) -> (usize, usize) {
+        let n = self.points.len();
+        if self.closed {
+            ((k + n - 1) % n, k)
+        } else {
+            (k, k + 1)
+        }
+    }
+
+    /// The legs that carry a joint between two segments (all but the end legs when open).
+    pub fn joint_legs(&self) -> Vec<usize> {
+        if self.closed {
+            (0..self.points.len()).collect()
+        } else {
+            (1..self.points.len() - 2).collect()
+        }
+    }
+
+    /// The segments that end and start on joint leg `leg`.
+    fn segments_at_leg(&self, leg: usize) -> (usize, usize) {
+        if self.closed {
+            (leg, (leg + 1) % self.points.len())
+        } else {
+            (leg - 1, leg)
+        }
+    }
+
+    /// Leg `i` from `P_i` to `P_{i+1}` (cyclically).
+    fn leg(&self, i: usize) -> (Point, Point) {
+        let n = self.points.len();
+        (self.points[i], self.points[(i + 1) % n])
+    }
+
+    /// The point at fraction `t` along leg `i` (exactly the vertex at t = 0 and t = 1).
+    fn at(&self, i: usize, t: f64) -> Point {
+        let (a, b) = self.leg(i);
+        if t == 0.0 {
+            a
+        } else if t == 1.0 {
+            b
+        } else {
+            a.lerp(b, t)
+        }
+    }
+
+    /// The control triangle of segment `k` for leg fractions `t`.
+    fn control_points(&self, t: &[f64], k: usize) -> [Point; 3] {
+        let (sl, el) = self.legs_of_segment(k);
+        let v = self.vertex_of_segment(k);
+        [self.at(sl, t[sl]), self.points[v], self.at(el, t[el])]
+    }
+
+    /// The turning direction at vertex `v` (`None` when the legs are collinear).
+    fn turn_at(&self, v: usize) -> Option<Turn> {
+        let n = self.points.len();
+        let (p, q, r) = (
+            self.points[(v + n - 1) % n],
+            self.points[v],
+            self.points[(v + 1) % n],
+        );
+        Turn::of((q - p).cross(r - q))
+    }
+
+    /// Largest coordinate extent, the scale of position checks.
+    fn size(&self) -> f64 {
+        let (mut lo, mut hi) = (self.points[0], self.points[0]);
+        for p in &self.points {
+            lo = Point::new(lo.x.min(p.x), lo.y.min(p.y));
+            hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
+        }
+        (hi.x - lo.x).max(hi.y - lo.y)
+    }
+
+    /// The fractions of every leg for joints `fractions` on the joint legs (in the order of
+    /// [`ControlPolygon::joint_legs`]); an open polygon's end legs get 0 (start at P0) and
+    /// 1 (end at Pn).
+    fn leg_fractions(&self, joint_fractions: &[f64]) -> Vec<f64> {
+        let mut t = vec![0.0; self.leg_count()];
+        if !self.closed {
+            let last = t.len() - 1;
+            t[last] = 1.0;
+        }
+        for (leg, f) in self.joint_legs().into_iter().zip(joint_fractions) {
+            t[leg] = *f;
+        }
+        t
+    }
+}
+
+/// The slopes of a path's segments: one α for all, or one per segment (in the order of the
+/// vertices that carry them).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Alphas {
+    /// The same α for every segment.
+    One(f64),
+    /// α of each segment.
+    PerSegment(Vec<f64>),
+}
+
+impl Alphas {
+    /// One α per segment of `polygon`, checked.
+    fn resolve(&self, polygon: &ControlPolygon) -> Result<Vec<f64>> {
+        let n = polygon.segment_count();
+        let out = match self {
+            Alphas::One(a) => vec![check_alpha("alpha", *a)?; n],
+            Alphas::PerSegment(list) => {
+                if list.len() != n {
+                    return Err(Error::OutOfRange {
+                        name: "number of alphas",
+                        value: list.len() as f64,
+                        expected: "one alpha per segment (per interior vertex of an open \
+                                   polygon, per vertex of a closed one), or a single alpha",
+                    });
+                }
+                for a in list {
+                    check_alpha("alpha", *a)?;
+                }
+                list.clone()
+            }
+        };
+        Ok(out)
+    }
+}
+
+/// How continuous a path is at its joints.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "snake_case")
+)]
+pub enum Continuity {
+    /// Position and tangent.
+    G1,
+    /// Position, tangent and curvature.
+    G2,
+}
+
+/// What the solver measured at one joint of a path (its own check, see [`Path`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Joint {
+    /// The polygon leg the joint lies on (leg i runs from P_i to P_{i+1}).
+    pub leg: usize,
+    /// The fraction of the leg from P_i, in (0, 1).
+    pub fraction: f64,
+    /// The joint.
+    pub point: Point,
+    /// Signed curvature at the end of the segment before the joint.
+    pub curvature_before: f64,
+    /// Signed curvature at the start of the segment after it.
+    pub curvature_after: f64,
+    /// Distance between the two segments' ends, caller's units.
+    pub gap: f64,
+    /// Angle between the two segments' tangents, radians.
+    pub tangent_jump: f64,
+    /// |κ⁻ − κ⁺| / max(|κ⁻|, |κ⁺|) (0 when both are 0).
+    pub curvature_jump: f64,
+}
+
+/// A log-aesthetic path: one [`Segment`] per interior vertex of a [`ControlPolygon`], joined
+/// at points on the legs with continuous position and tangent (G1), and curvature too when
+/// solved by [`Path::g2`]. See the module documentation for the construction.
+///
+/// It is a [`Curve`]: arc length runs from the start of the first segment (P0 when open; the
+/// joint on the last leg when closed) through the segments in order.
+///
+/// ```
+/// use kurbo::Point;
+/// use lac::{Alphas, ControlPolygon, Curve, Path};
+///
+/// let polygon = ControlPolygon::open(&[
+///     Point::new(0.0, 0.0), Point::new(2.0, 0.0), Point::new(3.0, 1.5), Point::new(3.0, 3.0),
+/// ])?;
+/// let path = Path::g2(&polygon, &Alphas::One(0.5), None)?;
+/// let joint = path.joints()[0];
+/// assert!(joint.curvature_jump <= 1e-9);
+/// assert!((path.end_point() - Point::new(3.0, 3.0)).hypot() < 1e-12);
+/// # Ok::<(), lac::Error>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct Path {
+    polygon: ControlPolygon,
+    alphas: Vec<f64>,
+    /// Fraction of every leg (0 and 1 on an open polygon's end legs).
+    fractions: Vec<f64>,
+    segments: Vec<Segment>,
+    joints: Vec<Joint>,
+    continuity: Continuity,
+}
+
+impl Path {
+    /// The G1 path with joints at `fractions` of the joint legs (in the order of
+    /// [`ControlPolygon::joint_legs`], each in (0, 1)), or at the leg midpoints.
+    ///
+    /// Errors: [`Error::PathSegment`] naming the vertex whose segment cannot be drawn (and
+    /// why), or a fraction out of range.
+    pub fn g1(
+        polygon: &ControlPolygon,
+        alphas: &Alphas,
+        fractions: Option<&[f64]>,
+    ) -> Result<Path> {
+        let alphas = alphas.resolve(polygon)?;
+        let joints = polygon.joint_legs().len();
+        let fractions = match fractions {
+            Some(f) => {
+                if f.len() != joints {
+                    return Err(Error::OutOfRange {
+                        name: "number of fractions",
+                        value: f.len() as f64,
+                        expected: "one fraction per joint leg (every leg of a closed polygon, \
+                                   all but the first and last of an open one)",
+                    });
+                }
+                for &t in f {
+                    finite("fraction", t)?;
+                    if !(t > 0.0 && t < 1.0) {
+                        return Err(Error::OutOfRange {
+                            name: "fraction",
+                            value: t,
+                            expected: "a leg fraction strictly between 0 and 1",
+                        });
+                    }
+                }
+                f.to_vec()
+            }
+            None => vec![0.5; joints],
+        };
+        let t = polygon.leg_fractions(&fractions);
+        let segments = (0..polygon.segment_count())
+            .map(|k| segment(polygon, &alphas, &t, k))
+            .collect::<Result<Vec<_>>>()?;
+        Path::assemble(polygon.clone(), alphas, t, segments, Continuity::G1)
+    }
+
+    /// The G2 path: the joints placed so that the curvature is continuous at every one
+    /// (relative jump ≤ [`G2_JUMP_LIMIT`]), by Newton's method on the joint fractions, from
+    /// `warm` (the [`Path::joint_fractions`] of an earlier solution for a polygon with the
+    /// same number of points, e.g. before a drag) or from the leg midpoints.
+    ///
+    /// Errors: [`Error::NoG2Path`] naming the joint where no continuous curvature was
+    /// reached, and why; [`Error::PathSegment`] when a segment cannot be drawn at the start.
+    /// [`Path::g2_or_nearest_g1`] offers the nearest G1 path instead.
+    pub fn g2(polygon: &ControlPolygon, alphas: &Alphas, warm: Option<&[f64]>) -> Result<Path> {
+        let outcome = g2::solve(polygon, &alphas.resolve(polygon)?, warm)?;
+        match outcome.failure {
+            None => Ok(outcome.path),
+            Some(error) => Err(error),
+        }
+    }
+
+    /// [`Path::g2`], or when no G2 path is found, the G1 path whose curvature jumps were the
+    /// smallest the search reached (never a silent kink: the outcome says why G2 failed and
+    /// the path's [`Path::continuity`] is [`Continuity::G1`]).
+    pub fn g2_or_nearest_g1(
+        polygon: &ControlPolygon,
+        alphas: &Alphas,
+        warm: Option<&[f64]>,
+    ) -> Result<G2Outcome> {
+        g2::solve(polygon, &alphas.resolve(polygon)?, warm)
+    }
+
+    /// Check every joint and build the path: positions within 1e-10 of the polygon's size,
+    /// tangents within 1e-10 rad, and in G2 the curvature jump within [`G2_JUMP_LIMIT`].
+    fn assemble(
+        polygon: ControlPolygon,
+        alphas: Vec<f64>,
+        fractions: Vec<f64>,
+        segments: Vec<Segment>,
+        continuity: Continuity,
+    ) -> Result<Path> {
+        let size = polygon.size();
+        let mut joints = Vec::new();
+        for leg in polygon.joint_legs() {
+            let (before, after) = polygon.segments_at_leg(leg);
+            let (a, b) = (&segments[before], &segments[after]);
+            let kb = a.end_curvatures().1;
+            let ka = b.end_curvatures().0;
+            let end_theta = a.theta_of(&a.station_at_turning(a.turning_angle())?);
+            let start_theta = b.theta_of(&b.station_at_turning(0.0)?);
+            let d = end_theta - start_theta;
+            let tangent_jump =
+                (d - std::f64::consts::TAU * (d / std::f64::consts::TAU).round()).abs();
+            let big = kb.abs().max(ka.abs());
+            let joint = Joint {
+                leg,
+                fraction: fractions[leg],
+                point: polygon.at(leg, fractions[leg]),
+                curvature_before: kb,
+                curvature_after: ka,
+                gap: (a.last_point() - b.first_point()).hypot(),
+                tangent_jump,
+                curvature_jump: if big > 0.0 {
+                    (kb - ka).abs() / big
+                } else {
+                    0.0
+                },
+            };
+            let g1_ok = joint.gap <= G1_LIMIT * size && joint.tangent_jump <= G1_LIMIT;
+            let g2_ok = continuity == Continuity::G1 || joint.curvature_jump <= G2_JUMP_LIMIT;
+            if !(g1_ok && g2_ok) {
+                return Err(Error::NumericalFailure {
+                    what: "the path's joint check (a joint's position, tangent or curvature \
+                           does not match)",
+                });
+            }
+            joints.push(joint);
+        }
+        Ok(Path {
+            polygon,
+            alphas,
+            fractions,
+            segments,
+            joints,
+            continuity,
+        })
+    }
+
+    /// The control polygon.
+    pub fn polygon(&self) -> &ControlPolygon {
+        &self.polygon
+    }
+
+    /// α of each segment.
+    pub fn alphas(&self) -> &[f64] {
+        &self.alphas
+    }
+
+    /// The fraction of each joint leg at which its joint lies (the order of
+    /// [`ControlPolygon::joint_legs`]): the warm start for [`Path::g2`].
+    pub fn joint_fractions(&self) -> Vec<f64> {
+        self.joints.iter().map(|j| j.fraction).collect()
+    }
+
+    /// The fraction of every leg (an open polygon's first leg 0, its last 1: the path
+    /// starts at P0 and ends at Pn).
+    pub fn leg_fractions(&self) -> &[f64] {
+        &self.fractions
+    }
+
+    /// The control triangle of each segment as the solver placed it: (start joint, vertex,
+    /// end joint), the joints exactly shared by consecutive segments.
+    pub fn control_triangles(&self) -> Vec<[Point; 3]> {
+        (0..self.segments.len())
+            .map(|k| self.polygon.control_points(&self.fractions, k))
+            .collect()
+    }
+
+    /// The joints, with what the solver's check measured there.
+    pub fn joints(&self) -> &[Joint] {
+        &self.joints
+    }
+
+    /// The arc length of each joint from the path's start (the order of [`Path::joints`];
+    /// a closed path's last joint is at its full length).
+    pub fn joints_s(&self) -> Vec<f64> {
+        let mut s = 0.0;
+        self.segments[..self.joints.len()]
+            .iter()
+            .map(|seg| {
+                s += seg.arc_length();
+                s
+            })
+            .collect()
+    }
+
+    /// G1 or G2.
+    pub fn continuity(&self) -> Continuity {
+        self.continuity
+    }
+
+    /// The largest relative curvature jump over the joints (0 without joints).
+    pub fn max_curvature_jump(&self) -> f64 {
+        self.joints
+            .iter()
+            .map(|j| j.curvature_jump)
+            .fold(0.0, f64::max)
+    }
+}
+
+impl Curve for Path {
+    fn pieces(&self) -> &[Segment] {
+        &self.segments
+    }
+}
+
+/// Segment `k` of the polygon for leg fractions `t`, its failure named by its vertex.
+fn segment(polygon: &ControlPolygon, alphas: &[f64], t: &[f64], k: usize) -> Result<Segment> {
+    let (sl, el) = polygon.legs_of_segment(k);
+    let v = polygon.vertex_of_segment(k);
+    let points = [
+        polygon.at(sl, t[sl]),
+        polygon.points[v],
+        polygon.at(el, t[el]),
+    ];
+    Segment::from_control_points(points, alphas[k]).map_err(|e| Error::PathSegment {
+        vertex: v,
+        source: Box::new(e),
+    })
+}

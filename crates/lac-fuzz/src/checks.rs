@@ -3,8 +3,9 @@
 
 use kurbo::{ParamCurve, Point, Vec2};
 use lac::{
-    curvature_plot, log_curvature_graph, CompoundCurve, Curve, Monotonicity, QuasiCurve,
-    RationalCubic, Sample, Segment, SpaceSegment, SpaceShape, Tolerance, TorsionType, Vec3,
+    curvature_plot, log_curvature_graph, Alphas, CompoundCurve, ControlPolygon, Curve,
+    Monotonicity, Path, QuasiCurve, RationalCubic, Sample, Segment, SpaceSegment, SpaceShape,
+    Tolerance, TorsionType, Vec3,
 };
 
 use crate::Input;
@@ -154,6 +155,36 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
                 return Ok(false);
             };
             check_quasi(&seg, &pts, &quasi, *tolerance)?;
+            Ok(true)
+        }
+        Input::Path {
+            points,
+            alpha,
+            closed,
+            g2,
+        } => {
+            let pts: Vec<Point> = points.iter().map(|&p| pt(p)).collect();
+            let polygon = if *closed {
+                ControlPolygon::closed(&pts)
+            } else {
+                ControlPolygon::open(&pts)
+            };
+            let Ok(polygon) = polygon else {
+                return Ok(false);
+            };
+            let alphas = match alpha.as_slice() {
+                [one] => Alphas::One(*one),
+                many => Alphas::PerSegment(many.to_vec()),
+            };
+            let path = if *g2 {
+                Path::g2(&polygon, &alphas, None)
+            } else {
+                Path::g1(&polygon, &alphas, None)
+            };
+            let Ok(path) = path else {
+                return Ok(false);
+            };
+            check_path(&path, *closed, *g2)?;
             Ok(true)
         }
         Input::Space {
@@ -349,6 +380,64 @@ fn check_samples(samples: &[Sample], tol: f64, len: f64) -> Result<(), String> {
     }
     if polyline > len * (1.0 + 1e-9) + 64.0 * tol {
         return Err(format!("polyline {polyline:e} longer than the arc {len:e}"));
+    }
+    Ok(())
+}
+
+/// A path: each segment on its control triangle (ends, end tangents, monotone curvature,
+/// chords between tangents); consecutive segments (and the last and first of a closed path)
+/// meet with continuous position and tangent, and curvature too in G2; the whole is finite.
+fn check_path(path: &Path, closed: bool, g2: bool) -> Result<(), String> {
+    let pieces = path.pieces();
+    let triangles = path.control_triangles();
+    if pieces.len() != triangles.len() || pieces.is_empty() {
+        return Err(format!(
+            "{} segments for {} control triangles",
+            pieces.len(),
+            triangles.len()
+        ));
+    }
+    finite("arc length", &[path.arc_length()])?;
+    for (seg, t) in pieces.iter().zip(&triangles) {
+        check_curve(
+            seg,
+            &[t[0], t[1]],
+            &[t[1], t[2]],
+            9,
+            1e-3 * seg.arc_length(),
+        )?;
+    }
+    let all: Vec<Point> = triangles.iter().flatten().copied().collect();
+    let size = path.arc_length();
+    let tol = bounds::POSITION * size + rounding(&all);
+    let pairs = pieces.len() - usize::from(!closed);
+    let kmax = pieces
+        .iter()
+        .map(|p| p.curvature_start().abs().max(p.curvature_end().abs()))
+        .fold(0.0, f64::max);
+    for i in 0..pairs {
+        let (a, b) = (&pieces[i], &pieces[(i + 1) % pieces.len()]);
+        let (pa, pb) = (a.end_point(), b.start_point());
+        if dist(pa, pb) > 64.0 * tol {
+            return Err(format!(
+                "segments {i} and {} {:e} apart",
+                i + 1,
+                dist(pa, pb)
+            ));
+        }
+        let ta = a.theta_at_s(a.arc_length()).map_err(|e| e.to_string())?;
+        let tb = b.theta_at_s(0.0).map_err(|e| e.to_string())?;
+        let tau = std::f64::consts::TAU;
+        let jump = (ta - tb) - tau * ((ta - tb) / tau).round();
+        if jump.abs() > bounds::TANGENT + 1e3 * tol / size {
+            return Err(format!("tangent jumps {jump:e} rad after segment {i}"));
+        }
+        let (ka, kb) = (a.curvature_end(), b.curvature_start());
+        if g2 && (ka - kb).abs() > bounds::JOINT_CURVATURE * kmax {
+            return Err(format!(
+                "curvature jumps after segment {i}: {ka:e} to {kb:e}"
+            ));
+        }
     }
     Ok(())
 }

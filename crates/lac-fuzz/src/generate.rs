@@ -407,3 +407,69 @@ pub(crate) fn space(rng: &mut Rng) -> Input {
         torsion: rng.pick(&[1, 2, 1, 2, 0, 3]),
     }
 }
+
+pub(crate) fn path(rng: &mut Rng) -> Input {
+    let n = 2 + rng.below(11);
+    let closed = rng.chance(0.3);
+    let mut points: Vec<[f64; 2]> = match rng.below(10) {
+        // Around a circle (turning one way, as a G2 path wants), radii and steps jittered.
+        0..=5 => {
+            let mut angle = rng.uniform(0.0, 6.3);
+            let span = if closed { 6.2 } else { rng.uniform(0.5, 6.0) };
+            (0..n)
+                .map(|_| {
+                    angle += span / n as f64 * rng.uniform(0.5, 1.5);
+                    let r = rng.uniform(0.7, 1.3);
+                    [r * angle.cos(), r * angle.sin()]
+                })
+                .collect()
+        }
+        // A zigzag: the turning changes direction at every vertex.
+        6 => (0..n)
+            .map(|i| {
+                [
+                    i as f64,
+                    if i % 2 == 0 {
+                        0.0
+                    } else {
+                        rng.uniform(0.2, 2.0)
+                    },
+                ]
+            })
+            .collect(),
+        // Anything.
+        _ => (0..n).map(|_| [rng.number(), rng.number()]).collect(),
+    };
+    if rng.chance(0.1) && n > 2 {
+        // Two vertices coincide, or three are collinear.
+        let i = rng.below(n - 1);
+        points[i + 1] = if rng.chance(0.5) {
+            points[i]
+        } else {
+            let (a, b) = (points[i], points[(i + 2) % n]);
+            [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])]
+        };
+    }
+    if rng.chance(0.15) {
+        // Far from the origin, or very large or very small.
+        let (scale, shift) = (
+            rng.log_uniform(-150.0, 150.0).abs(),
+            rng.log_uniform(-3.0, 8.0),
+        );
+        for p in points.iter_mut() {
+            *p = [p[0] * scale + shift, p[1] * scale];
+        }
+    }
+    let segments = if closed { n } else { n.saturating_sub(2) };
+    let alpha = if rng.chance(0.8) || segments == 0 {
+        vec![alpha(rng)]
+    } else {
+        (0..segments).map(|_| alpha(rng)).collect()
+    };
+    Input::Path {
+        points,
+        alpha,
+        closed,
+        g2: rng.chance(0.6),
+    }
+}

@@ -90,6 +90,17 @@ pub enum Input {
         /// Plain cubics.
         cubic: bool,
     },
+    /// `Path::g1` / `Path::g2` from a control polygon.
+    Path {
+        /// The polygon's vertices.
+        points: Vec<[f64; 2]>,
+        /// One α for every segment, or one per segment.
+        alpha: Vec<f64>,
+        /// A closed polygon.
+        closed: bool,
+        /// Curvature continuous at the joints (else joints at the leg midpoints).
+        g2: bool,
+    },
     /// `SpaceSegment::from_control_points`.
     Space {
         /// P0..P3.
@@ -122,11 +133,13 @@ pub enum EntryPoint {
     Quasi,
     /// Space segments.
     Space,
+    /// Paths from a control polygon.
+    Path,
 }
 
 impl EntryPoint {
     /// Every entry point.
-    pub const ALL: [EntryPoint; 7] = [
+    pub const ALL: [EntryPoint; 8] = [
         EntryPoint::Segment,
         EntryPoint::Compound3,
         EntryPoint::Compound4,
@@ -134,6 +147,7 @@ impl EntryPoint {
         EntryPoint::Analysis,
         EntryPoint::Quasi,
         EntryPoint::Space,
+        EntryPoint::Path,
     ];
 
     /// Its name on the command line and in reports.
@@ -146,6 +160,7 @@ impl EntryPoint {
             EntryPoint::Analysis => "analysis",
             EntryPoint::Quasi => "quasi",
             EntryPoint::Space => "space",
+            EntryPoint::Path => "path",
         }
     }
 
@@ -182,6 +197,7 @@ impl EntryPoint {
             EntryPoint::Analysis => generate::analysis(rng),
             EntryPoint::Quasi => generate::quasi(rng),
             EntryPoint::Space => generate::space(rng),
+            EntryPoint::Path => generate::path(rng),
         }
     }
 }

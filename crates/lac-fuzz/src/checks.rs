@@ -554,7 +554,8 @@ fn check_quasi(
         // Control points rounded by δ move a piece's end curvature by about δ/size² (not
         // relative to κ: a nearly straight piece far from the origin feels it most).
         let allowed = (bounds::QUASI_JOINT_CURVATURE + 1e3 * magnitude / size) * kmax
-            + 1e3 * magnitude / (size * size);
+            + 1e3 * magnitude / (size * size)
+            + 4.0 * (conditioning(&a, false) + conditioning(&b, true));
         if (ka - kb).abs() > allowed {
             return Err(format!("curvature jumps between pieces: {ka:e} to {kb:e}"));
         }
@@ -627,6 +628,29 @@ fn check_quasi(
 /// |a − b| without kurbo's overflow of the squares from 1e154 on.
 fn dist(a: Point, b: Point) -> f64 {
     (a.x - b.x).hypot(a.y - b.y)
+}
+
+/// What rounding the control points of `c` (a few ulps of its largest coordinate) can do
+/// to its curvature at an end: the curvature there is ∝ h/L² (L the end leg, h the third
+/// point's distance from the end tangent), so a nearly collinear end triangle (small h)
+/// makes it sensitive.
+fn conditioning(c: &RationalCubic, at_start: bool) -> f64 {
+    let p = c.points();
+    let [b0, b1, b2] = if at_start {
+        [p[0], p[1], p[2]]
+    } else {
+        [p[3], p[2], p[1]]
+    };
+    let ulps = rounding(&p) / 16.0; // 4 ulps of the largest coordinate
+    let l = dist(b1, b0);
+    let h = ((b1 - b0).cross(b2 - b0) / l).abs();
+    let k = c.signed_curvature(if at_start { 0.0 } else { 1.0 }).abs();
+    let bound = k * ulps * (2.0 / l + (1.0 + dist(b2, b0) / l) / h);
+    if bound.is_nan() {
+        f64::INFINITY
+    } else {
+        bound
+    }
 }
 
 /// Distance from `x` to the segment pq, without squaring coordinates (curves of size 1e160).

@@ -114,12 +114,67 @@ pub(crate) fn replace(
                 && p.turning.1.is_finite()
                 && p.max_deviation.is_finite()
         });
-    if finite {
-        Ok(quasi)
-    } else {
-        Err(Error::Unrepresentable {
+    if !finite {
+        return Err(Error::Unrepresentable {
             what: "the Bézier replacement of this curve (its weights or deviation overflow)",
-        })
+        });
+    }
+    check_joins(&quasi)?;
+    Ok(quasi)
+}
+
+/// The G2 joins as a reader sees them: each piece's end curvature evaluated from its
+/// control points as written must match the next piece's start curvature, within 1e-6 of the
+/// chain's largest end curvature plus what rounding the control points' coordinates can
+/// do there. (The fit joins pieces exactly in its own frame; a piece with a very short
+/// first or last leg, as extreme weights make it, can lose that in world coordinates.)
+fn check_joins(quasi: &QuasiCurve) -> Result<()> {
+    let ends = |c: &RationalCubic| [c.signed_curvature(0.0), c.signed_curvature(1.0)];
+    let kmax = quasi
+        .pieces
+        .iter()
+        .flat_map(|p| ends(&p.curve))
+        .fold(0.0f64, |m, k| m.max(k.abs()));
+    for w in quasi.pieces.windows(2) {
+        let (a, b) = (&w[0].curve, &w[1].curve);
+        let (ka, kb) = (ends(a)[1], ends(b)[0]);
+        let allowed =
+            1e-6 * kmax + end_curvature_rounding(a, false) + end_curvature_rounding(b, true);
+        if (ka - kb).abs() > allowed {
+            return Err(Error::NumericalFailure {
+                what: "G2 joins of the Bézier replacement (a piece's end curvature is too \
+                       sensitive to its control points' rounding)",
+            });
+        }
+    }
+    Ok(())
+}
+
+/// How far rounding the control points (by a few ulps of their largest coordinate) can move
+/// a rational cubic's curvature at an end: with L the first leg, D the distance to the
+/// third point and h that point's distance from the tangent, κ ∝ h/L², so
+/// |Δκ| ≲ |κ| (2δ/L + δ(1 + D/L)/h).
+fn end_curvature_rounding(c: &RationalCubic, at_start: bool) -> f64 {
+    let p = c.points();
+    let (b0, b1, b2) = if at_start {
+        (p[0], p[1], p[2])
+    } else {
+        (p[3], p[2], p[1])
+    };
+    let big = p
+        .iter()
+        .fold(0.0f64, |m, q| m.max(q.x.abs()).max(q.y.abs()));
+    let delta = 4.0 * f64::EPSILON * big;
+    let (leg, far) = (b1 - b0, b2 - b0);
+    let l = leg.x.hypot(leg.y);
+    let d = far.x.hypot(far.y);
+    let h = (leg.x / l * far.y - leg.y / l * far.x).abs();
+    let k = c.signed_curvature(if at_start { 0.0 } else { 1.0 }).abs();
+    let bound = k * (2.0 * delta / l + delta * (1.0 + d / l) / h);
+    if bound.is_nan() {
+        f64::INFINITY
+    } else {
+        bound
     }
 }
 

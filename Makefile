@@ -33,9 +33,10 @@ e2e:
 	$(CARGO_TEST) --no-run
 	cd crates/lac-serve/e2e && LAC_BIN=$(LAC_BIN) node --test --test-concurrency=1
 
-$(VENV)/.installed: tools/reference/requirements.txt
+$(VENV)/.installed: tools/reference/requirements.txt tools/reference/requirements-export.txt
 	python3 -m venv $(VENV)
-	$(VENV)/bin/pip install --quiet --disable-pip-version-check -r tools/reference/requirements.txt
+	$(VENV)/bin/pip install --quiet --disable-pip-version-check -r tools/reference/requirements.txt \
+		-r tools/reference/requirements-export.txt
 	touch $@
 
 # Redraw the README's figures (docs/*.svg) from its *Made by* lines with the freshly built
@@ -64,6 +65,7 @@ bench: $(VENV)/.installed
 	cargo bench -p lac --bench compound
 	cargo bench -p lac --bench quasi
 	cargo bench -p lac --bench space
+	cargo bench -p lac-io --bench export -- --warm-up-time 1 --measurement-time 3
 	$(PY) tools/reference/bench_clothoids.py
 
 # The main job: a clothoid-to-spiral segment drawn as SVG with its curvature comb.

@@ -37,20 +37,36 @@ impl Exact for PlaneExact<'_> {
     }
 
     fn jets(&self, s: &[f64]) -> Result<Vec<Jet>> {
-        s.iter()
-            .map(|&s| {
-                let s = s.clamp(0.0, self.length());
-                let p = self.0.point_at_s(s)?;
-                let t = self.0.tangent_at_s(s)?;
-                let k = self.0.curvature_at_s(s)?;
-                Ok(Jet {
-                    point: [p.x, p.y, 0.0],
-                    d1: [t.x, t.y, 0.0],
-                    d2: [-k * t.y, k * t.x, 0.0],
-                })
-            })
-            .collect()
+        // One evaluation per station, in ascending order as the sampler asks.
+        let len = self.length();
+        let (order, sorted) = ascending(s, len);
+        let samples = self.0.samples_at_arc_lengths(&sorted)?;
+        let mut out = vec![ZERO_JET; s.len()];
+        for (q, &i) in samples.iter().zip(&order) {
+            let (sin, cos) = q.theta.sin_cos();
+            let k = q.kappa;
+            out[i] = Jet {
+                point: [q.point.x, q.point.y, 0.0],
+                d1: [cos, sin, 0.0],
+                d2: [-k * sin, k * cos, 0.0],
+            };
+        }
+        Ok(out)
     }
+}
+
+const ZERO_JET: Jet = Jet {
+    point: [0.0; 3],
+    d1: [0.0; 3],
+    d2: [0.0; 3],
+};
+
+/// The permutation that sorts `s`, and the sorted values clamped to [0, len].
+fn ascending(s: &[f64], len: f64) -> (Vec<usize>, Vec<f64>) {
+    let mut order: Vec<usize> = (0..s.len()).collect();
+    order.sort_by(|&a, &b| s[a].total_cmp(&s[b]));
+    let sorted = order.iter().map(|&i| s[i].clamp(0.0, len)).collect();
+    (order, sorted)
 }
 
 /// A space segment.
@@ -63,19 +79,9 @@ impl Exact for SpaceExact<'_> {
 
     fn jets(&self, s: &[f64]) -> Result<Vec<Jet>> {
         // The integrator's dense output is cheapest in ascending order.
-        let len = self.length();
-        let mut order: Vec<usize> = (0..s.len()).collect();
-        order.sort_by(|&a, &b| s[a].total_cmp(&s[b]));
-        let sorted: Vec<f64> = order.iter().map(|&i| s[i].clamp(0.0, len)).collect();
+        let (order, sorted) = ascending(s, self.length());
         let frames = self.0.frames(&sorted)?;
-        let mut out = vec![
-            Jet {
-                point: [0.0; 3],
-                d1: [0.0; 3],
-                d2: [0.0; 3],
-            };
-            s.len()
-        ];
+        let mut out = vec![ZERO_JET; s.len()];
         for (f, &i) in frames.iter().zip(&order) {
             out[i] = Jet {
                 point: f.point.to_array(),
@@ -133,12 +139,25 @@ pub fn deviation(exact: &dyn Exact, nurbs: &Nurbs, per_span: usize) -> Result<f6
         }
     }
     let mut best = vec![f64::INFINITY; queries.len()];
+    // Only the stations whose Newton step has not settled are evaluated again.
+    let mut active: Vec<usize> = (0..queries.len()).collect();
     for _ in 0..ITERATIONS {
-        let jets = exact.jets(&s)?;
-        for (k, jet) in jets.iter().enumerate() {
+        let at: Vec<f64> = active.iter().map(|&k| s[k]).collect();
+        let jets = exact.jets(&at)?;
+        let mut still = Vec::with_capacity(active.len());
+        for (&k, jet) in active.iter().zip(&jets) {
             best[k] = best[k].min(norm(sub(jet.point, queries[k])));
-            s[k] = (s[k] + newton_step(jet, queries[k])).clamp(0.0, len);
+            let step = newton_step(jet, queries[k]);
+            let next = (s[k] + step).clamp(0.0, len);
+            if (next - s[k]).abs() > 1e-15 * len {
+                still.push(k);
+            }
+            s[k] = next;
         }
+        if still.is_empty() {
+            break;
+        }
+        active = still;
     }
     let mut max = best.iter().fold(0.0f64, |m, &d| m.max(d));
     // Curve → B-spline.
@@ -162,7 +181,12 @@ pub fn deviation(exact: &dyn Exact, nurbs: &Nurbs, per_span: usize) -> Result<f6
             for _ in 0..ITERATIONS {
                 let j = span.jet(u);
                 d = d.min(norm(sub(j.point, q)));
-                u = (u + newton_step(&j, q)).clamp(0.0, 1.0);
+                let next = (u + newton_step(&j, q)).clamp(0.0, 1.0);
+                let settled = (next - u).abs() <= 1e-15;
+                u = next;
+                if settled {
+                    break;
+                }
             }
             let j = span.jet(u);
             d = d.min(norm(sub(j.point, q)));

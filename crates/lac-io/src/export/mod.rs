@@ -22,7 +22,7 @@ pub mod svg;
 
 use serde::{Deserialize, Serialize};
 
-use lac::{Error, SpaceSegment, Tolerance};
+use lac::{Error, SpaceSegment, Tolerance, MIN_RELATIVE_TOLERANCE};
 
 use crate::json::{ErrorBody, Solved};
 use certify::{deviation, Exact, PlaneExact, SpaceExact};
@@ -148,7 +148,7 @@ pub fn export(
             "SVG holds planar curves only: export a space curve as step, iges, dxf or json",
         ));
     }
-    let tol = tolerance.relative_to(length)? * length;
+    let tol = checked_tolerance(tolerance, length)? * length;
     let plain = format == Format::Svg;
     let mut target = tol;
     let mut reached = f64::INFINITY;
@@ -190,6 +190,29 @@ pub fn export(
         reached: reached / length,
     }
     .into())
+}
+
+/// The tolerance relative to the arc length. A positive tolerance below
+/// [`MIN_RELATIVE_TOLERANCE`] of the arc length cannot be met (double precision cannot
+/// measure the deviation that finely): `tolerance_not_met`, not an invalid request.
+fn checked_tolerance(tolerance: Tolerance, length: f64) -> Result<f64, ErrorBody> {
+    let (Tolerance::Absolute(t) | Tolerance::Relative(t)) = tolerance;
+    let relative = match tolerance {
+        Tolerance::Absolute(t) => t / length,
+        Tolerance::Relative(t) => t,
+    };
+    if t.is_finite() && relative > 0.0 && relative < MIN_RELATIVE_TOLERANCE {
+        return Err(ErrorBody::new(
+            "tolerance_not_met",
+            format!(
+                "a tolerance of {t:e} is {relative:.1e} of the arc length {length}: below \
+                 {MIN_RELATIVE_TOLERANCE:e} of it no deviation can be certified in double \
+                 precision; ask for at least {:e}",
+                MIN_RELATIVE_TOLERANCE * length
+            ),
+        ));
+    }
+    Ok(tolerance.relative_to(length)?)
 }
 
 fn measure(exact: &dyn Exact, nurbs: &Nurbs) -> Result<f64, ErrorBody> {

@@ -99,8 +99,9 @@ fn de_boor(n: &Nurbs, t: f64) -> [f64; 3] {
         for j in (r..=p).rev() {
             let i = j + s - p;
             let a = (t - k[i]) / (k[i + p + 1 - r] - k[i]);
-            for m in 0..4 {
-                d[j][m] = (1.0 - a) * d[j - 1][m] + a * d[j][m];
+            let prev = d[j - 1];
+            for (m, x) in d[j].iter_mut().enumerate() {
+                *x = (1.0 - a) * prev[m] + a * *x;
             }
         }
     }

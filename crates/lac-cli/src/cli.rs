@@ -3,7 +3,8 @@
 //! The same flag means the same thing in every subcommand: `--points` (control points
 //! "x,y" or "x,y,z" separated by spaces or semicolons), `--alpha` (a segment's slope),
 //! `--alpha0`/`--alpha1`/`--ratio` (a compound curve's), `--samples` (points equally spaced
-//! in arc length), `--tolerance` (relative to the arc length), `--format`, `-o/--output`
+//! in arc length), `--tolerance` (relative to the arc length; in model units in `export`),
+//! `--format`, `-o/--output`
 //! (a file, "-" for standard output) and `--batch` (JSON lines in, JSON lines out).
 
 use std::path::PathBuf;

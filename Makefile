@@ -49,10 +49,11 @@ py: $(VENV)/.installed
 py-bench: py
 	$(PY) crates/lac-py/bench/bench_clothoids.py
 
-$(VENV)/.installed: tools/reference/requirements.txt crates/lac-py/requirements.txt
+$(VENV)/.installed: tools/reference/requirements.txt tools/reference/requirements-export.txt \
+		crates/lac-py/requirements.txt
 	python3 -m venv $(VENV)
 	$(VENV)/bin/pip install --quiet --disable-pip-version-check -r tools/reference/requirements.txt \
-		-r crates/lac-py/requirements.txt
+		-r tools/reference/requirements-export.txt -r crates/lac-py/requirements.txt
 	touch $@
 
 # Redraw the README's figures (docs/*.svg) from its *Made by* lines with the freshly built
@@ -97,6 +98,7 @@ bench: $(VENV)/.installed
 	cargo bench -p lac --bench quasi
 	cargo bench -p lac --bench space
 	cargo bench -p lac --bench path
+	cargo bench -p lac-io --bench export -- --warm-up-time 1 --measurement-time 3
 	$(PY) tools/reference/bench_clothoids.py
 
 # The main job: a clothoid-to-spiral segment drawn as SVG with its curvature comb.

@@ -3,7 +3,8 @@
 //! The same flag means the same thing in every subcommand: `--points` (control points
 //! "x,y" or "x,y,z" separated by spaces or semicolons), `--alpha` (a segment's slope),
 //! `--alpha0`/`--alpha1`/`--ratio` (a compound curve's), `--samples` (points equally spaced
-//! in arc length), `--tolerance` (relative to the arc length), `--format`, `-o/--output`
+//! in arc length), `--tolerance` (relative to the arc length; in model units in `export`),
+//! `--format`, `-o/--output`
 //! (a file, "-" for standard output) and `--batch` (JSON lines in, JSON lines out).
 
 use std::path::PathBuf;
@@ -151,6 +152,32 @@ pub(crate) enum Command {
                                 [--samples N] [--format json|csv|svg] [-o FILE|-] [--comb] [--evolute]"
     )]
     Path(PathArgs),
+    /// Export a segment, compound curve or space segment for CAD: rational degree-3
+    /// B-splines within a tolerance (DXF, STEP, IGES, JSON) or plain cubic Béziers (SVG), with
+    /// the achieved deviation measured densely
+    ///
+    /// The curve is given as for lac segment, lac compound or lac space (--points with
+    /// --alpha; --alpha0, --alpha1 and --ratio; or four 3-D points with --alpha and --beta), or
+    /// as one result of those commands in FILE or on standard input. Planar curves become the
+    /// quasi-aesthetic rational cubics of lac quasi (joined G2, each piece's curvature proven
+    /// monotone), space curves cubic Hermite pieces (joined C1); the pieces are written as one
+    /// clamped B-spline (interior knots of multiplicity 3), or with --pieces as one curve per
+    /// piece. Lengths are in model units, declared as millimetres in DXF, STEP and IGES.
+    ///
+    /// A one-line JSON report goes to standard error: {"format","kind","pieces","single_spans",
+    /// "tolerance","max_deviation","fit_deviation","samples_per_piece","arc_length",
+    /// "continuity","monotone_proven","polynomial","units"}; max_deviation is the sampled
+    /// two-sided distance between the curve written and the exact curve. Exit code 3
+    /// (tolerance_not_met, too_many_pieces) when the tolerance cannot be met.
+    #[command(
+        override_usage = "lac export --format dxf|step|iges|svg|json [--tolerance T | \
+                                --relative-tolerance R] [--pieces] -o FILE \
+                                --points … --alpha A [--alpha0 A --alpha1 B [--ratio R]] [--beta B \
+                                --omega W --type 1|2]\n       \
+                                lac export [FILE|-] --format … -o FILE      \
+                                # a lac segment, compound or space result"
+    )]
+    Export(ExportArgs),
     /// Start the interactive editor: a local web server with the editor's page (embedded,
     /// works offline) and its JSON API; prints the URL and serves until interrupted
     #[command(override_usage = "lac serve [--port P] [--open] [--host ADDR --allow-remote]")]
@@ -657,4 +684,91 @@ pub(crate) struct ServeArgs {
     /// Allow a non-loopback --host: anyone who can reach the port can use the editor's API
     #[arg(long)]
     pub(crate) allow_remote: bool,
+}
+
+/// Arguments of `lac export`.
+#[derive(Debug, Args)]
+pub(crate) struct ExportArgs {
+    /// One result of lac segment, lac compound or lac space to export ("-": standard input;
+    /// nothing, without --points: standard input when it is not a terminal)
+    #[arg(value_name = "FILE", conflicts_with = "points")]
+    pub(crate) input: Option<PathBuf>,
+
+    /// The control points: three "x,y" with --alpha (a segment), three with --alpha0,
+    /// --alpha1 and --ratio or four with --alpha0 and --alpha1 (a compound curve), or four
+    /// "x,y,z" with --alpha and --beta (a space segment)
+    #[arg(long, value_name = "POINTS", allow_hyphen_values = true)]
+    pub(crate) points: Option<String>,
+
+    /// A segment's (or space segment's) slope of the logarithmic curvature graph
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub(crate) alpha: Option<f64>,
+
+    /// A compound curve: the slope of the piece from the first point to the joint
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub(crate) alpha0: Option<f64>,
+
+    /// A compound curve: the slope of the piece from the joint to the last point
+    #[arg(long, value_name = "B", allow_hyphen_values = true)]
+    pub(crate) alpha1: Option<f64>,
+
+    /// A compound curve from three points: the share of the turning of the alpha0 piece
+    #[arg(long, value_name = "R", allow_hyphen_values = true)]
+    pub(crate) ratio: Option<f64>,
+
+    /// A space segment: the slope of the logarithmic torsion graph
+    #[arg(long, value_name = "B", allow_hyphen_values = true)]
+    pub(crate) beta: Option<f64>,
+
+    /// A space segment: the torsion parameter (default 0)
+    #[arg(long, value_name = "W", allow_hyphen_values = true)]
+    pub(crate) omega: Option<f64>,
+
+    /// A space segment: the torsion type, 1 or 2 (default 1)
+    #[arg(long = "type", value_name = "1|2")]
+    pub(crate) torsion_type: Option<u8>,
+
+    /// File format (default: from the extension of -o: .dxf, .step/.stp, .iges/.igs, .svg,
+    /// .json)
+    #[arg(long, value_enum)]
+    pub(crate) format: Option<ExportFormat>,
+
+    /// Largest deviation allowed from the exact curve, in model units (default 1e-6)
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    pub(crate) tolerance: Option<f64>,
+
+    /// Largest deviation allowed, as a fraction of the arc length (1e-12 to 1), instead of
+    /// --tolerance
+    #[arg(
+        long,
+        value_name = "R",
+        allow_hyphen_values = true,
+        conflicts_with = "tolerance"
+    )]
+    pub(crate) relative_tolerance: Option<f64>,
+
+    /// Write each Bézier piece as a B-spline of its own (one knot span), for readers that
+    /// refuse interior knots of multiplicity above 1
+    #[arg(long)]
+    pub(crate) pieces: bool,
+
+    /// Write to FILE ("-": standard output)
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub(crate) file: Option<PathBuf>,
+}
+
+/// Formats of `lac export`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum ExportFormat {
+    /// DXF R2000 (AC1015): SPLINE entities with weights
+    Dxf,
+    /// STEP AP214: bounded rational B-spline curves in a wireframe shape
+    Step,
+    /// IGES 5.3: rational B-spline curves, entity 126
+    Iges,
+    /// SVG: plain cubic Béziers in model units (planar curves)
+    Svg,
+    /// JSON: {"curves":[{"degree","dimension","control_points","weights","knots"}], and the
+    /// report's fields}
+    Json,
 }

@@ -22,6 +22,7 @@ mod batch;
 mod cli;
 mod compound;
 mod errors;
+mod export;
 mod input;
 mod lcg;
 mod limits;
@@ -74,6 +75,7 @@ fn main() -> ExitCode {
         Command::Lcg(args) => lcg::run(args, limits),
         Command::Space(args) => space::run(args, limits),
         Command::Path(args) => path::run(args, limits),
+        Command::Export(args) => export::run(args, limits),
         Command::Serve(args) => serve::run(args),
     };
     match result {

@@ -208,6 +208,7 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
                 return Ok(false);
             };
             check_space(&seg, &pts)?;
+            check_space_cubics(&seg)?;
             Ok(true)
         }
     }
@@ -713,6 +714,55 @@ fn check_space(seg: &SpaceSegment, pts: &[Vec3; 4]) -> Result<(), String> {
     let off1 = b.tangent.angle_to(t1);
     if off0 > allowed || off1 > allowed {
         return Err(format!("space end tangents off by {off0:e}, {off1:e} rad"));
+    }
+    Ok(())
+}
+
+/// The cubic pieces of a solved space segment (`SpaceSegment::to_cubics`, what `lac export`
+/// writes) at a relative tolerance of 1e-4: a typed error, or pieces with finite points, the
+/// segment's ends, shared joins and a deviation within the tolerance, re-measured here at
+/// the middle of every piece against the segment's own point there.
+#[allow(clippy::neg_cmp_op_on_partial_ord)] // NaN must fail the checks
+fn check_space_cubics(seg: &SpaceSegment) -> Result<(), String> {
+    let Ok(chain) = seg.to_cubics(Tolerance::Relative(1e-4)) else {
+        return Ok(());
+    };
+    let len = seg.arc_length();
+    let tol = 1e-4 * len;
+    let pieces = &chain.pieces;
+    if pieces.is_empty() || pieces.len() > lac::MAX_PIECES {
+        return Err(format!("space cubics: {} pieces", pieces.len()));
+    }
+    let coords: Vec<f64> = pieces
+        .iter()
+        .flat_map(|p| p.points.iter().flat_map(|q| q.to_array()))
+        .collect();
+    finite("space cubics", &coords)?;
+    if !(chain.max_deviation <= tol) {
+        return Err(format!(
+            "space cubics: deviation {:e} over the tolerance {tol:e}",
+            chain.max_deviation
+        ));
+    }
+    for w in pieces.windows(2) {
+        if w[0].points[3] != w[1].points[0] || w[0].s.1 != w[1].s.0 {
+            return Err("space cubics: pieces that do not share their join".into());
+        }
+    }
+    // u = 0.3 is between the fit's 48 steps: the pair there is not one it measured, and the
+    // fit's margin (accepted below 0.98 of the tolerance) must cover it.
+    let at: Vec<f64> = pieces
+        .iter()
+        .map(|p| p.s.0 + 0.3 * (p.s.1 - p.s.0))
+        .collect();
+    let frames = seg.frames(&at).map_err(|e| e.to_string())?;
+    for (p, f) in pieces.iter().zip(&frames) {
+        let d = p.eval(0.3).distance(f.point);
+        if !(d <= tol) {
+            return Err(format!(
+                "space cubics: {d:e} from the curve at a piece's middle"
+            ));
+        }
     }
     Ok(())
 }

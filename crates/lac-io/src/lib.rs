@@ -6,4 +6,5 @@
 //! [`json`], and the CSV forms of the reports in [`csv`].
 
 pub mod csv;
+pub mod export;
 pub mod json;

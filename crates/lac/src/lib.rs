@@ -102,8 +102,8 @@ pub use space::{
     SpaceEnd, TurningCell,
 };
 pub use space::{
-    Frame, GraphPoint, Similarity3, SpaceForm, SpaceFormParams, SpaceSegment, SpaceShape,
-    TorsionType, PLANAR_TOLERANCE,
+    Frame, GraphPoint, Similarity3, SpaceCubic, SpaceCubics, SpaceForm, SpaceFormParams,
+    SpaceSegment, SpaceShape, TorsionType, PLANAR_TOLERANCE,
 };
 pub use standard_form::{Classification, InfiniteRadiusEnd, StandardForm, ZeroRadiusEnd};
 pub use tolerance::{Tolerance, MIN_RELATIVE_TOLERANCE};

@@ -2,6 +2,7 @@
 //! classification of its ends, and segments from four control points.
 
 mod classify;
+mod cubics;
 mod family;
 mod mat3;
 mod segment;
@@ -12,6 +13,7 @@ pub use classify::{
     BoundBy, EndBehaviour, RadiusCell, RadiusLimit, RatioLimit, SeedRow, SpaceClassification,
     SpaceEnd, TurningCell,
 };
+pub use cubics::{SpaceCubic, SpaceCubics};
 pub use family::{SpaceForm, SpaceFormParams, TorsionType};
 pub use segment::{GraphPoint, Similarity3, SpaceSegment, SpaceShape, PLANAR_TOLERANCE};
 

@@ -1,0 +1,210 @@
+//! `lac export`: a segment, compound curve or space segment written for CAD systems as
+//! rational degree-3 B-splines (DXF, STEP, IGES, JSON) or plain cubics (SVG) within a
+//! tolerance, with the deviation achieved measured on what was written
+//! ([`lac_io::export`]).
+
+use std::time::{SystemTime, UNIX_EPOCH};
+
+use lac::Tolerance;
+use lac_io::export::{export, ExportCurve, Format, Meta, DEFAULT_TOLERANCE};
+use lac_io::json::{to_line, CurveInput, ErrorBody, LcgInput, SegmentInput, Solved, SpaceInput};
+
+use crate::cli::{ExportArgs, ExportFormat};
+use crate::compound;
+use crate::errors;
+use crate::input::read_document;
+use crate::limits::Limits;
+use crate::output::write_document;
+use crate::points::{parse_points, parse_space_points};
+
+/// What to give when there is nothing to read.
+const HINT: &str = "give --points with --alpha (and --alpha0/--alpha1/--ratio or --beta), or a \
+                    FILE with a lac segment, compound or space result, or pipe one in";
+
+/// What the arguments ask to export.
+enum Input {
+    Plane(CurveInput),
+    Space(SpaceInput),
+}
+
+/// Run `lac export`.
+///
+/// The file is written only after the export met its tolerance, so a refused export leaves
+/// an existing file untouched.
+pub(crate) fn run(args: &ExportArgs, limits: Limits) -> Result<(), ErrorBody> {
+    let format = format_of(args)?;
+    let tolerance = match (args.tolerance, args.relative_tolerance) {
+        (_, Some(r)) => Tolerance::Relative(r),
+        (Some(t), None) => Tolerance::Absolute(t),
+        (None, None) => Tolerance::Absolute(DEFAULT_TOLERANCE),
+    };
+    let input = if args.points.is_some() {
+        from_arguments(args)?
+    } else {
+        if args.alpha.is_some()
+            || args.alpha0.is_some()
+            || args.beta.is_some()
+            || args.alpha1.is_some()
+        {
+            return Err(errors::usage("the curve's parameters need --points"));
+        }
+        let text = read_document(args.input.as_deref(), limits.document(), HINT)?;
+        match LcgInput::parse(&text)? {
+            LcgInput::Curve(c) => Input::Plane(c),
+            LcgInput::Space(s) => Input::Space(s),
+            LcgInput::Pieces(_) => {
+                return Err(ErrorBody::invalid_input(
+                    "lac export needs the exact curve (a lac segment, compound or space \
+                     result), not Bézier pieces",
+                ))
+            }
+        }
+    };
+    let meta = Meta {
+        name: args
+            .file
+            .as_deref()
+            .and_then(|p| p.file_stem())
+            .and_then(|s| s.to_str())
+            .filter(|s| *s != "-")
+            .unwrap_or("lac-curve")
+            .to_string(),
+        timestamp: timestamp(SystemTime::now()),
+        version: env!("CARGO_PKG_VERSION").to_string(),
+    };
+    let exported = match &input {
+        Input::Plane(c) => {
+            let solved: Solved = c.solve()?;
+            export(
+                &ExportCurve::Plane(&solved),
+                format,
+                tolerance,
+                args.pieces,
+                &meta,
+            )?
+        }
+        Input::Space(s) => {
+            let segment = s.solve()?;
+            export(
+                &ExportCurve::Space(&segment),
+                format,
+                tolerance,
+                args.pieces,
+                &meta,
+            )?
+        }
+    };
+    write_document(args.file.as_deref(), exported.document.as_bytes())?;
+    eprintln!("{}", to_line(&exported.report));
+    Ok(())
+}
+
+/// `--format`, or the format named by the extension of `-o`.
+fn format_of(args: &ExportArgs) -> Result<Format, ErrorBody> {
+    if let Some(f) = args.format {
+        return Ok(match f {
+            ExportFormat::Dxf => Format::Dxf,
+            ExportFormat::Step => Format::Step,
+            ExportFormat::Iges => Format::Iges,
+            ExportFormat::Svg => Format::Svg,
+            ExportFormat::Json => Format::Json,
+        });
+    }
+    let extension = args
+        .file
+        .as_deref()
+        .and_then(|p| p.extension())
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    match extension.as_deref() {
+        Some("dxf") => Ok(Format::Dxf),
+        Some("step" | "stp") => Ok(Format::Step),
+        Some("iges" | "igs") => Ok(Format::Iges),
+        Some("svg") => Ok(Format::Svg),
+        Some("json") => Ok(Format::Json),
+        _ => Err(errors::usage(
+            "give --format dxf|step|iges|svg|json (or -o FILE with one of those extensions)",
+        )),
+    }
+}
+
+/// The curve of `--points` and the slopes.
+fn from_arguments(args: &ExportArgs) -> Result<Input, ErrorBody> {
+    let text = args.points.as_deref().unwrap_or_default();
+    if let Some(beta) = args.beta {
+        let Some(alpha) = args.alpha else {
+            return Err(errors::usage("a space segment needs --alpha with --beta"));
+        };
+        if args.alpha0.is_some() || args.alpha1.is_some() || args.ratio.is_some() {
+            return Err(errors::usage(
+                "--beta is a space segment's: drop --alpha0, --alpha1 and --ratio",
+            ));
+        }
+        return Ok(Input::Space(SpaceInput {
+            points: parse_space_points(text)?,
+            alpha,
+            beta,
+            omega: args.omega.unwrap_or(0.0),
+            torsion_type: args.torsion_type.unwrap_or(1),
+        }));
+    }
+    if args.omega.is_some() || args.torsion_type.is_some() {
+        return Err(errors::usage(
+            "--omega and --type belong to a space segment: give --beta and four x,y,z points",
+        ));
+    }
+    match (args.alpha, args.alpha0, args.alpha1) {
+        (Some(alpha), None, None) if args.ratio.is_none() => {
+            Ok(Input::Plane(CurveInput::Segment(SegmentInput {
+                points: parse_points(text)?,
+                alpha,
+            })))
+        }
+        (None, Some(alpha0), Some(alpha1)) => Ok(Input::Plane(CurveInput::Compound(
+            compound::from_arguments(text, alpha0, alpha1, args.ratio)?,
+        ))),
+        _ => Err(errors::usage(
+            "give --alpha for a segment, --alpha0 and --alpha1 (and --ratio for three points) \
+             for a compound curve, or --alpha and --beta for a space segment",
+        )),
+    }
+}
+
+/// `YYYY-MM-DDTHH:MM:SS` (UTC) of `time`.
+fn timestamp(time: SystemTime) -> String {
+    let secs = time
+        .duration_since(UNIX_EPOCH)
+        .map(|d| d.as_secs())
+        .unwrap_or(0);
+    let (days, rest) = ((secs / 86_400) as i64, secs % 86_400);
+    // Days to civil date (proleptic Gregorian), after H. Hinnant's `civil_from_days`.
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    format!(
+        "{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}",
+        rest / 3600,
+        rest % 3600 / 60,
+        rest % 60
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::time::Duration;
+
+    #[test]
+    fn timestamps_are_utc_calendar_dates() {
+        let at = |s| timestamp(UNIX_EPOCH + Duration::from_secs(s));
+        assert_eq!(at(0), "1970-01-01T00:00:00");
+        assert_eq!(at(951_782_400), "2000-02-29T00:00:00");
+        assert_eq!(at(1_795_000_000), "2026-11-18T11:06:40");
+    }
+}

@@ -1,0 +1,316 @@
+//! CAD export: a log-aesthetic curve (segment, compound curve, space segment) as rational
+//! degree-3 B-splines within a tolerance, with the achieved deviation measured densely, in
+//! DXF, STEP, IGES, SVG (plain cubics) or JSON.
+//!
+//! Planar curves are replaced by the quasi-aesthetic rational cubics of
+//! [`lac::Curve::to_rational_cubics`] (G2 joins, each piece's curvature proven monotone; SVG
+//! takes the plain cubics of [`lac::Curve::to_cubics`]), space segments by the C1 cubic
+//! Hermite pieces of [`SpaceSegment::to_cubics`] (no monotonicity proof). The pieces become
+//! one clamped B-spline ([`Nurbs`]), or one single-span curve per piece. The deviation
+//! reported is [`certify::deviation`] of the B-spline as written; when it exceeds the
+//! tolerance (the fits measure their own deviation more coarsely) the fit is repeated with
+//! a smaller target, and the export is refused when that does not help.
+
+pub mod certify;
+pub mod dxf;
+pub mod iges;
+pub mod json;
+mod number;
+pub mod nurbs;
+pub mod step;
+pub mod svg;
+
+use serde::{Deserialize, Serialize};
+
+use lac::{Error, SpaceSegment, Tolerance, MIN_RELATIVE_TOLERANCE};
+
+use crate::json::{ErrorBody, Solved};
+use certify::{deviation, Exact, PlaneExact, SpaceExact};
+use json::{ExportDocument, NurbsRow};
+pub use nurbs::Nurbs;
+use nurbs::Span;
+
+/// The default tolerance: 1e-6 model units (millimetres in DXF, STEP and IGES).
+pub const DEFAULT_TOLERANCE: f64 = 1e-6;
+
+/// Samples per piece, in each direction, of the deviation measured.
+pub const SAMPLES_PER_PIECE: usize = 64;
+
+/// Fits tried with ever smaller targets before the export is refused.
+const ATTEMPTS: usize = 4;
+
+/// The file formats.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Format {
+    /// DXF R2000, SPLINE entities.
+    Dxf,
+    /// STEP AP214, rational B-spline curves in a wireframe shape.
+    Step,
+    /// IGES 5.3, entity 126.
+    Iges,
+    /// SVG, plain cubic Béziers (planar curves).
+    Svg,
+    /// JSON: degree, control points, weights, knots.
+    Json,
+}
+
+/// What the file says about itself.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Meta {
+    /// The product's (and file's) name.
+    pub name: String,
+    /// When it was written, ISO 8601 (`2026-11-23T14:00:00`).
+    pub timestamp: String,
+    /// The writing program's version.
+    pub version: String,
+}
+
+/// The curve to export.
+pub enum ExportCurve<'a> {
+    /// A planar segment or compound curve.
+    Plane(&'a Solved),
+    /// A space segment.
+    Space(&'a SpaceSegment),
+}
+
+/// How an export went: `lac export`'s report.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ExportReport {
+    /// The format written.
+    pub format: Format,
+    /// `"segment"`, `"compound"` or `"space"`.
+    pub kind: String,
+    /// Bézier pieces (knot spans).
+    pub pieces: usize,
+    /// Each piece written as a curve of its own (`--pieces`)?
+    pub single_spans: bool,
+    /// The tolerance asked, model units.
+    pub tolerance: f64,
+    /// The largest deviation from the exact curve, model units, measured densely on what
+    /// was written (a sampled two-sided distance, [`certify::deviation`]).
+    pub max_deviation: f64,
+    /// The fit's own measure of its largest deviation, model units.
+    pub fit_deviation: f64,
+    /// Samples per piece of `max_deviation`, in each direction.
+    pub samples_per_piece: usize,
+    /// Arc length of the exact curve.
+    pub arc_length: f64,
+    /// Continuity at the joins: `"G2"` (planar) or `"C1"` (space).
+    pub continuity: String,
+    /// Every piece's curvature proven monotone (planar rational pieces); null for space
+    /// curves, for which nothing is proven about curvature.
+    pub monotone_proven: Option<bool>,
+    /// Weights all 1 (plain cubics)?
+    pub polynomial: bool,
+    /// The length unit the CAD formats declare.
+    pub units: String,
+}
+
+/// The written document and its report.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Exported {
+    /// The file's text.
+    pub document: String,
+    /// How it went.
+    pub report: ExportReport,
+}
+
+/// An approximation before writing.
+struct Fitted {
+    nurbs: Nurbs,
+    fit_deviation: f64,
+    monotone_proven: Option<bool>,
+}
+
+/// Export `curve` as `format` within `tolerance`, one curve or (`single_spans`) one per
+/// piece.
+pub fn export(
+    curve: &ExportCurve,
+    format: Format,
+    tolerance: Tolerance,
+    single_spans: bool,
+    meta: &Meta,
+) -> Result<Exported, ErrorBody> {
+    let (length, kind) = match curve {
+        ExportCurve::Plane(solved) => (
+            solved.curve().arc_length(),
+            match solved {
+                Solved::Segment(_) => "segment",
+                Solved::Compound(_) => "compound",
+            },
+        ),
+        ExportCurve::Space(seg) => (seg.arc_length(), "space"),
+    };
+    if format == Format::Svg && matches!(curve, ExportCurve::Space(_)) {
+        return Err(ErrorBody::new(
+            "usage",
+            "SVG holds planar curves only: export a space curve as step, iges, dxf or json",
+        ));
+    }
+    let tol = checked_tolerance(tolerance, length)? * length;
+    let plain = format == Format::Svg;
+    let mut target = tol;
+    let mut reached = f64::INFINITY;
+    for _ in 0..ATTEMPTS {
+        let fitted = fit(curve, target, plain)?;
+        let measured = match curve {
+            ExportCurve::Plane(s) => measure(&PlaneExact(s.curve()), &fitted.nurbs)?,
+            ExportCurve::Space(s) => measure(&SpaceExact(s), &fitted.nurbs)?,
+        };
+        if measured <= tol {
+            let curves = if single_spans {
+                fitted.nurbs.single_spans()
+            } else {
+                vec![fitted.nurbs.clone()]
+            };
+            let report = ExportReport {
+                format,
+                kind: kind.to_string(),
+                pieces: fitted.nurbs.span_count(),
+                single_spans,
+                tolerance: tol,
+                max_deviation: measured,
+                fit_deviation: fitted.fit_deviation,
+                samples_per_piece: SAMPLES_PER_PIECE,
+                arc_length: length,
+                continuity: if kind == "space" { "C1" } else { "G2" }.to_string(),
+                monotone_proven: fitted.monotone_proven,
+                polynomial: fitted.nurbs.is_polynomial(),
+                units: "mm".to_string(),
+            };
+            let document = write(format, &curves, &fitted.nurbs, meta, &report);
+            return Ok(Exported { document, report });
+        }
+        reached = reached.min(measured);
+        target *= (0.8 * tol / measured).min(0.5);
+    }
+    Err(Error::ToleranceNotMet {
+        tolerance: tol / length,
+        reached: reached / length,
+    }
+    .into())
+}
+
+/// The tolerance relative to the arc length. A positive tolerance below
+/// [`MIN_RELATIVE_TOLERANCE`] of the arc length cannot be met (double precision cannot
+/// measure the deviation that finely): `tolerance_not_met`, not an invalid request.
+fn checked_tolerance(tolerance: Tolerance, length: f64) -> Result<f64, ErrorBody> {
+    let (Tolerance::Absolute(t) | Tolerance::Relative(t)) = tolerance;
+    let relative = match tolerance {
+        Tolerance::Absolute(t) => t / length,
+        Tolerance::Relative(t) => t,
+    };
+    if t.is_finite() && relative > 0.0 && relative < MIN_RELATIVE_TOLERANCE {
+        return Err(ErrorBody::new(
+            "tolerance_not_met",
+            format!(
+                "a tolerance of {t:e} is {relative:.1e} of the arc length {length}: below \
+                 {MIN_RELATIVE_TOLERANCE:e} of it no deviation can be certified in double \
+                 precision; ask for at least {:e}",
+                MIN_RELATIVE_TOLERANCE * length
+            ),
+        ));
+    }
+    Ok(tolerance.relative_to(length)?)
+}
+
+fn measure(exact: &dyn Exact, nurbs: &Nurbs) -> Result<f64, ErrorBody> {
+    let d = deviation(exact, nurbs, SAMPLES_PER_PIECE)?;
+    if d.is_finite() {
+        Ok(d)
+    } else {
+        Err(Error::NumericalFailure {
+            what: "the deviation of an export",
+        }
+        .into())
+    }
+}
+
+/// The B-spline of the pieces fitted to `curve` within `target` (model units).
+fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBody> {
+    let bad = || -> ErrorBody {
+        Error::NumericalFailure {
+            what: "the B-spline of an export",
+        }
+        .into()
+    };
+    match curve {
+        ExportCurve::Plane(solved) => {
+            let c = solved.curve();
+            let quasi = if plain {
+                c.to_cubics(Tolerance::Absolute(target))?
+            } else {
+                c.to_rational_cubics(Tolerance::Absolute(target))?
+            };
+            let spans: Vec<Span> = quasi
+                .pieces
+                .iter()
+                .map(|p| Span::from_rational_cubic(&p.curve))
+                .collect();
+            let mut breaks = vec![0.0];
+            for p in &quasi.pieces {
+                breaks.push(breaks[breaks.len() - 1] + p.curve.arc_length());
+            }
+            let nurbs = Nurbs::from_spans(&spans, &breaks, true).map_err(|_| bad())?;
+            Ok(Fitted {
+                nurbs,
+                fit_deviation: quasi.max * c.arc_length(),
+                monotone_proven: Some(quasi.pieces.iter().all(|p| p.monotonicity.proven)),
+            })
+        }
+        ExportCurve::Space(seg) => {
+            let cubics = seg.to_cubics(Tolerance::Absolute(target))?;
+            let spans: Vec<Span> = cubics
+                .pieces
+                .iter()
+                .map(|p| Span {
+                    points: p.points.map(|q| q.to_array()),
+                    weights: [1.0; 4],
+                })
+                .collect();
+            let mut breaks = vec![0.0];
+            breaks.extend(cubics.pieces.iter().map(|p| p.s.1));
+            let nurbs = Nurbs::from_spans(&spans, &breaks, false).map_err(|_| bad())?;
+            Ok(Fitted {
+                nurbs,
+                fit_deviation: cubics.max_deviation,
+                monotone_proven: None,
+            })
+        }
+    }
+}
+
+/// The document of `curves` in `format`.
+fn write(
+    format: Format,
+    curves: &[Nurbs],
+    whole: &Nurbs,
+    meta: &Meta,
+    report: &ExportReport,
+) -> String {
+    let uncertainty = (0.1 * report.tolerance).min(1e-7);
+    match format {
+        Format::Dxf => dxf::write(curves),
+        Format::Step => step::write(curves, meta, uncertainty),
+        Format::Iges => iges::write(curves, meta, uncertainty),
+        Format::Svg => {
+            let mut path = kurbo::BezPath::new();
+            for i in 0..whole.span_count() {
+                let p = whole.span(i).points.map(|q| kurbo::Point::new(q[0], q[1]));
+                if i == 0 {
+                    path.move_to(p[0]);
+                }
+                path.curve_to(p[1], p[2], p[3]);
+            }
+            svg::write(&path)
+        }
+        Format::Json => {
+            let document = ExportDocument {
+                curves: curves.iter().map(NurbsRow::from).collect(),
+                report: report.clone(),
+            };
+            crate::json::to_line(&document) + "\n"
+        }
+    }
+}

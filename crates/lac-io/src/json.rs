@@ -159,6 +159,17 @@ pub fn to_line<T: Serialize>(report: &T) -> String {
     })
 }
 
+/// A report as one line of JSON appended to `out`, without a newline: the bytes of
+/// [`to_line`] without an intermediate `String` (for `--batch`, which writes many).
+pub fn write_line<T: Serialize>(report: &T, out: &mut Vec<u8>) {
+    let mark = out.len();
+    if let Err(e) = serde_json::to_writer(&mut *out, report) {
+        out.truncate(mark);
+        let body = ErrorBody::new("internal", format!("a report did not serialise: {e}"));
+        out.extend_from_slice(body.to_json_line().as_bytes());
+    }
+}
+
 /// Reports that can say whether all their numbers are finite (JSON has no NaN).
 pub trait Report: Serialize {
     /// Are all numbers finite?

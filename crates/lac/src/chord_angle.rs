@@ -20,7 +20,10 @@ use std::cell::OnceCell;
 
 use crate::error::{Error, NotDrawable, Result};
 use crate::numeric::{expm1_ratio, ln1p_ratio, Complex};
-use crate::standard_form::integrate::{integrate_with, NodeCache};
+use crate::standard_form::integrate::{
+    clothoid_arc, integrate_with, ClothoidEnd, NodeCache, CLOTHOID_MIN_LAMBDA_TURN,
+    CLOTHOID_MIN_TURN,
+};
 use crate::standard_form::{StandardForm, Station};
 
 /// Largest supported ln(ρ_max/ρ_min) along one curve (ρ ratio ≈ 1e260).
@@ -65,6 +68,9 @@ pub(crate) struct ChordAngle {
     d: f64,
     /// Built on first use: the series path never needs them.
     nodes: [OnceCell<NodeCache>; 2],
+    /// For a single clothoid piece (α = −1, θ ∈ [0, θd], θd ≥ `CLOTHOID_MIN_TURN`): e^{iθd},
+    /// for the closed form of [`ChordAngle::eval_clothoid`].
+    clothoid: Option<Complex>,
 }
 
 struct Eval {
@@ -95,6 +101,8 @@ impl ChordAngle {
             bound,
             d: bound[0].max(bound[1]),
             nodes: [OnceCell::new(), OnceCell::new()],
+            clothoid: (alpha == [-1.0, -1.0] && theta[0] == 0.0 && theta[1] >= CLOTHOID_MIN_TURN)
+                .then(|| Complex::cis(theta[1])),
         }
     }
 
@@ -130,6 +138,9 @@ impl ChordAngle {
     }
 
     fn eval(&self, mu: f64) -> Eval {
+        if let Some(e) = self.eval_clothoid(mu) {
+            return e;
+        }
         let k = self.d / self.total;
         let lambda = mu * expm1_ratio(-k * mu) / self.total;
         let w_bind = (-k * mu).exp();
@@ -175,6 +186,67 @@ impl ChordAngle {
             slope: dphi_dlambda * dlambda_dmu,
             pieces: Pieces { parts },
         }
+    }
+
+    /// [`ChordAngle::eval`] for a single clothoid piece, where everything is in closed form:
+    /// D = 2θd, so Λ = (1 − e^{−2μ})/(2θd), the curvature at the far end is e^{−μ} (ρ = 1 at
+    /// the start) and the chord is a difference of Fresnel integrals. `None` where the
+    /// closed form would lose precision (near the circle), for the general path.
+    #[inline]
+    fn eval_clothoid(&self, mu: f64) -> Option<Eval> {
+        let end_dir = self.clothoid?;
+        let theta_d = self.theta[1];
+        let w = (-2.0 * mu).exp(); // ρ^(α−1) = κ² at the far end
+        let lambda = -(-2.0 * mu).exp_m1() / (2.0 * theta_d);
+        if !(lambda * theta_d >= CLOTHOID_MIN_LAMBDA_TURN) {
+            return None;
+        }
+        let kappa = w.sqrt();
+        let far = ClothoidEnd {
+            kappa,
+            rho: 1.0 / kappa,
+        };
+        let start = ClothoidEnd {
+            kappa: 1.0,
+            rho: 1.0,
+        };
+        let integral = clothoid_arc(
+            lambda,
+            [start, far],
+            [Complex::new(1.0, 0.0), end_dir],
+            true,
+        );
+        let p = integral.value;
+        let form = StandardForm {
+            alpha: -1.0,
+            lambda,
+        };
+        let end = Station {
+            theta: theta_d,
+            // s = (1 − κ)/Λ.
+            s: -(-mu).exp_m1() / lambda,
+            ln_rho: mu,
+        };
+        let start = Piece {
+            form,
+            start: Station::REFERENCE,
+            end: Station::REFERENCE,
+            chord: Complex::ZERO,
+        };
+        let piece = Piece {
+            form,
+            start: Station::REFERENCE,
+            end,
+            chord: p,
+        };
+        let phi = p.arg().rem_euclid(std::f64::consts::TAU);
+        Some(Eval {
+            g: phi - self.theta_e,
+            slope: integral.d_lambda.div(p).im * w / theta_d,
+            pieces: Pieces {
+                parts: [start, piece],
+            },
+        })
     }
 
     /// g and dg/dμ at μ = 0 (both pieces arcs of the unit circle) in closed form, and a

@@ -318,7 +318,7 @@ fn read_line(
             break;
         }
         any = true;
-        let (piece, done) = match buffer.iter().position(|&b| b == b'\n') {
+        let (piece, done) = match memchr::memchr(b'\n', buffer) {
             Some(i) => (&buffer[..i], Some(i + 1)),
             None => (buffer, None),
         };

@@ -3,7 +3,7 @@
 use std::sync::Arc;
 
 use lac::Curve;
-use lac_io::json::{parse, to_line, write_line, ErrorBody, Report, SegmentInput, SegmentReport};
+use lac_io::json::{to_line, ErrorBody, Report, SegmentInput, SegmentReport};
 
 use crate::batch;
 use crate::cli::{CurveFormat, CurveOutput, SegmentArgs};
@@ -59,9 +59,9 @@ pub(crate) fn run(args: &SegmentArgs, limits: Limits) -> Result<(), ErrorBody> {
 /// The output line for one `--batch` line, appended to `out`: the report, or why there is
 /// none.
 fn solve_line(text: &str, samples: usize, out: &mut Vec<u8>) -> Result<(), ErrorBody> {
-    let input: SegmentInput = parse(text, SegmentInput::SHAPE)?;
+    let input = SegmentInput::parse_line(text)?;
     let report = SegmentReport::new(&input.solve()?, samples)?.with_points(input.points);
-    write_line(&report.checked()?, out);
+    report.checked()?.write_json(out);
     Ok(())
 }
 

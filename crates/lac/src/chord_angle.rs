@@ -255,11 +255,25 @@ impl ChordAngle {
     /// in Λ are integrals of ψⁿe^{iψ}.
     fn at_circle(&self) -> (f64, f64, f64) {
         let (a, b) = (-self.theta[0], self.theta[1]);
+        // e^{iψ} at the three places the antiderivatives are taken (each once).
+        let (ea, eb) = (
+            Complex::cis(a),
+            self.clothoid.unwrap_or_else(|| Complex::cis(b)),
+        );
+        let cis = |x: f64| {
+            if x == 0.0 {
+                Complex::new(1.0, 0.0)
+            } else if x == a {
+                ea
+            } else {
+                eb
+            }
+        };
         // Antiderivatives of ψⁿe^{iψ}, n = 0..3.
-        let p0 = |x: f64| Complex::cis(x).mul_i().scale(-1.0);
-        let p1 = |x: f64| Complex::cis(x) * Complex::new(1.0, -x);
-        let p2 = |x: f64| Complex::cis(x) * Complex::new(2.0 * x, 2.0 - x * x);
-        let p3 = |x: f64| Complex::cis(x) * Complex::new(3.0 * x * x - 6.0, 6.0 * x - x * x * x);
+        let p0 = |x: f64| cis(x).mul_i().scale(-1.0);
+        let p1 = |x: f64| cis(x) * Complex::new(1.0, -x);
+        let p2 = |x: f64| cis(x) * Complex::new(2.0 * x, 2.0 - x * x);
+        let p3 = |x: f64| cis(x) * Complex::new(3.0 * x * x - 6.0, 6.0 * x - x * x * x);
         // ∂ⁿP/∂Λⁿ at Λ = 0: ρ = 1 + Λψ + (2−α)Λ²ψ²/2 + (2−α)(3−2α)Λ³ψ³/6 + O(Λ⁴).
         let piecewise = |f: &dyn Fn(f64) -> Complex, c: &dyn Fn(f64) -> f64| {
             (f(0.0) - f(a)).scale(c(self.alpha[0])) + (f(b) - f(0.0)).scale(c(self.alpha[1]))

@@ -193,6 +193,11 @@ impl Segment {
         let mut prev_jet = self.jet_of(prev);
         out.push(self.sample_from(prev, z));
         for node in &nodes[1..] {
+            if node.st == self.last {
+                // The last point's offset is the solved chord: nothing to integrate.
+                out.push(self.sample_from(node, self.chord));
+                continue;
+            }
             let jet = self.jet_of(node);
             z += self.hermite(prev, node, &prev_jet, &jet, 0);
             out.push(self.sample_from(node, z));

@@ -21,6 +21,10 @@ lac solves, writes them as a `lac segment --batch` input, and times in each repe
   included;
 * python_loop: one `build_G1` per configuration in a plain Python loop, per curve.
 
+Wall times on a shared machine depend on its load (every runnable thread gets a share of
+the cores), so the batch and the loop are also given in CPU time (the batch's summed over its
+threads).
+
 Prints one JSON object: the medians over the repeats, the ratios the issue asks about
 (solver / build_G1 ≤ 1, batch / python_loop ≤ 1), every repeat's figures and the load
 average before and after (the machine is shared).
@@ -30,6 +34,7 @@ import argparse
 import json
 import math
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -104,19 +109,25 @@ def time_clothoids(data):
     zero = statistics.median(per_call_us(curve.length, (), 1000) for _ in range(50))
     overhead = six + max(six - zero, 0.0) / 6
     # The plain Python loop, one call per configuration.
-    start = time.perf_counter_ns()
+    start, cpu = time.perf_counter_ns(), time.process_time_ns()
     for d in data:
         curve.build_G1(*d, TOL)
     loop = (time.perf_counter_ns() - start) / len(data) / 1000
+    loop_cpu = (time.process_time_ns() - cpu) / len(data) / 1000
     return {"build_G1_raw_us": raw, "overhead_us": overhead, "build_G1_us": raw - overhead,
-            "python_loop_us": loop}
+            "python_loop_us": loop, "python_loop_cpu_us": loop_cpu}
 
 
 def time_batch(lac, big, lines):
+    """Wall time and CPU time (all threads) per curve."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter_ns()
     subprocess.run([str(lac), "segment", "--batch", str(big), "--samples", "2", "-o", os.devnull],
                    check=True)
-    return (time.perf_counter_ns() - start) / lines / 1000
+    wall = (time.perf_counter_ns() - start) / lines / 1000
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime) / lines * 1e6
+    return wall, cpu
 
 
 def main():
@@ -138,15 +149,19 @@ def main():
         for _ in range(args.repeats):
             solver = json.loads(subprocess.run([str(timer), str(inputs), "3"], check=True,
                                                capture_output=True, text=True).stdout)
+            batch, batch_cpu = time_batch(lac, big, len(kept) * BATCH_COPIES)
             run = {"solver_us": solver["median_us"], **time_clothoids(data),
-                   "batch_us": time_batch(lac, big, len(kept) * BATCH_COPIES),
-                   "load": os.getloadavg()[0]}
+                   "batch_us": batch, "batch_cpu_us": batch_cpu, "load": os.getloadavg()[0]}
             runs.append(run)
             print(json.dumps({k: round(v, 4) for k, v in run.items()}), file=sys.stderr)
     median = {k: round(statistics.median(r[k] for r in runs), 4) for k in runs[0]}
     ratios = {
         "solver_over_build_G1": [round(r["solver_us"] / r["build_G1_us"], 3) for r in runs],
         "batch_over_python_loop": [round(r["batch_us"] / r["python_loop_us"], 3) for r in runs],
+        # CPU time (all of lac's threads) against the loop's: what a loaded machine cannot
+        # blur; with every core free the batch's wall time is this divided by the cores.
+        "batch_cpu_over_python_loop_cpu": [
+            round(r["batch_cpu_us"] / r["python_loop_cpu_us"], 3) for r in runs],
     }
     print(json.dumps({
         "configurations": len(kept),

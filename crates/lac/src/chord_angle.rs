@@ -196,12 +196,12 @@ impl ChordAngle {
     fn eval_clothoid(&self, mu: f64) -> Option<Eval> {
         let end_dir = self.clothoid?;
         let theta_d = self.theta[1];
-        let w = (-2.0 * mu).exp(); // ρ^(α−1) = κ² at the far end
+        let kappa = (-mu).exp(); // at the far end
+        let w = kappa * kappa; // ρ^(α−1)
         let lambda = -(-2.0 * mu).exp_m1() / (2.0 * theta_d);
         if !(lambda * theta_d >= CLOTHOID_MIN_LAMBDA_TURN) {
             return None;
         }
-        let kappa = w.sqrt();
         let far = ClothoidEnd {
             kappa,
             rho: 1.0 / kappa,
@@ -223,8 +223,8 @@ impl ChordAngle {
         };
         let end = Station {
             theta: theta_d,
-            // s = (1 − κ)/Λ.
-            s: -(-mu).exp_m1() / lambda,
+            // s = (1 − κ)/Λ = 2θd/(1 + κ), as 2Λθd = 1 − κ².
+            s: 2.0 * theta_d / (1.0 + kappa),
             ln_rho: mu,
         };
         let start = Piece {

@@ -32,7 +32,20 @@ use crate::output::{carried, is_stdout};
 
 /// What solves one line: its text (without the line ending) to the answer's JSON, appended
 /// to the buffer without a newline. On `Err` whatever it appended is discarded.
-pub(crate) type Solve = Arc<dyn Fn(&str, &mut Vec<u8>) -> Result<(), ErrorBody> + Send + Sync>;
+pub(crate) type Solve = Arc<SolveFn>;
+
+/// The function behind a [`Solve`].
+pub(crate) type SolveFn = dyn Fn(&str, &mut Vec<u8>) -> Result<(), ErrorBody> + Send + Sync;
+
+/// The answers to a few consecutive lines.
+struct Slice {
+    /// One line of output per input line.
+    bytes: Vec<u8>,
+    /// How many lines.
+    lines: usize,
+    /// The errors among them, in order.
+    failed: Vec<ErrorBody>,
+}
 
 /// A [`Solve`] from a function that makes the answer line as a `String` (for the
 /// subcommands whose lines take far longer to solve than to copy).
@@ -198,9 +211,9 @@ fn stream(
         match message {
             Message::Lines(chunk) => {
                 let solved = solve_chunk(&chunk, max_line, &*solve);
-                for (bytes, errors) in solved {
-                    out.write_all(&bytes)?;
-                    tally.record(errors.0, errors.1);
+                for slice in solved {
+                    out.write_all(&slice.bytes)?;
+                    tally.record(slice.lines, slice.failed);
                 }
             }
             Message::ReadFailed(e) => {
@@ -254,13 +267,8 @@ fn read_chunks(
     }
 }
 
-/// The answers to a chunk's lines, in slices: each slice's output bytes (one line per input
-/// line) and how many lines it had, with the errors among them in order.
-fn solve_chunk(
-    chunk: &Chunk,
-    max_line: usize,
-    solve: &(dyn Fn(&str, &mut Vec<u8>) -> Result<(), ErrorBody> + Send + Sync),
-) -> Vec<(Vec<u8>, (usize, Vec<ErrorBody>))> {
+/// The answers to a chunk's lines, in slices of consecutive lines, in order.
+fn solve_chunk(chunk: &Chunk, max_line: usize, solve: &SolveFn) -> Vec<Slice> {
     // Slices small enough that every thread gets several, for balance.
     let threads = rayon::current_num_threads().max(1);
     let slice = (chunk.lines.len() / (4 * threads)).clamp(1, SLICE_LINES);
@@ -284,7 +292,11 @@ fn solve_chunk(
                 }
                 out.push(b'\n');
             }
-            (out, (lines.len(), failed))
+            Slice {
+                bytes: out,
+                lines: lines.len(),
+                failed,
+            }
         })
         .collect()
 }
@@ -356,7 +368,7 @@ fn answer(
     line: &Line,
     data: &[u8],
     max_line: usize,
-    solve: &(dyn Fn(&str, &mut Vec<u8>) -> Result<(), ErrorBody> + Send + Sync),
+    solve: &SolveFn,
     out: &mut Vec<u8>,
 ) -> Result<(), ErrorBody> {
     let mark = out.len();

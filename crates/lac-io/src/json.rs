@@ -2065,12 +2065,9 @@ mod tests {
                 (a, b) => panic!("{line}: {a:?} against {b:?}"),
             }
         }
-        assert!(scan_segment_input(lines[0].as_bytes()).is_some());
-        assert!(
-            scan_segment_input(lines[1].as_bytes()).is_none(),
-            "1e400 overflows"
-        );
-        assert!(scan_segment_input(lines[2].as_bytes()).is_some());
+        assert!(scan_segment_input(lines[0]).is_some());
+        assert!(scan_segment_input(lines[1]).is_none(), "1e400 overflows");
+        assert!(scan_segment_input(lines[2]).is_some());
     }
 
     #[test]

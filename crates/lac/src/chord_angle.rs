@@ -199,9 +199,8 @@ impl ChordAngle {
         let kappa = (-mu).exp(); // at the far end
         let w = kappa * kappa; // ρ^(α−1)
         let lambda = -(-2.0 * mu).exp_m1() / (2.0 * theta_d);
-        if !(lambda * theta_d >= CLOTHOID_MIN_LAMBDA_TURN) {
-            return None;
-        }
+        // (Also `None` for a NaN.)
+        (lambda * theta_d >= CLOTHOID_MIN_LAMBDA_TURN).then_some(())?;
         let far = ClothoidEnd {
             kappa,
             rho: 1.0 / kappa,

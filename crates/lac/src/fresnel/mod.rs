@@ -49,7 +49,7 @@ const ASYMPTOTIC: [[f64; 8]; 2] = [
 #[inline]
 pub(crate) fn aux(x: f64) -> (f64, f64) {
     if x < X_TABLE {
-        if !(x >= 0.0) {
+        if x.is_nan() || x < 0.0 {
             return (f64::NAN, f64::NAN);
         }
         let k = (x * (1.0 / H)) as usize;

@@ -19,7 +19,7 @@
 
 mod table;
 
-use table::{ASYMPTOTIC_TERMS, H, PIECES, X_TABLE};
+use table::{ASYMPTOTIC_TERMS, H, PIECES, TERMS, X_TABLE};
 
 /// (−1)ⁿ(4n−1)!! and (−1)ⁿ(4n+1)!!: the asymptotic series' coefficients of f and g.
 const ASYMPTOTIC: [[f64; 8]; 2] = [
@@ -52,8 +52,8 @@ pub(crate) fn aux(x: f64) -> (f64, f64) {
         if x.is_nan() || x < 0.0 {
             return (f64::NAN, f64::NAN);
         }
-        let k = (x * (1.0 / H)) as usize;
-        let (cf, cg) = PIECES[k.min(PIECES.len() - 1)];
+        let k = ((x * (1.0 / H)) as usize).min(PIECES.len() - 1);
+        let [cf, cg] = &PIECES[k];
         let u = (x - (k as f64 + 0.5) * H) * (2.0 / H);
         (horner(cf, u), horner(cg, u))
     } else {
@@ -67,8 +67,9 @@ pub(crate) fn aux(x: f64) -> (f64, f64) {
     }
 }
 
+/// Σ cᵢuⁱ by Horner's rule over a fixed number of terms (unrolled by the compiler).
 #[inline]
-fn horner(c: &[f64], u: f64) -> f64 {
+fn horner(c: &[f64; TERMS], u: f64) -> f64 {
     c.iter().rev().fold(0.0, |acc, &c| acc * u + c)
 }
 
@@ -97,8 +98,10 @@ mod tests {
     fn the_pieces_join_continuously() {
         // Both neighbours agree at every joint to rounding (a wrong coefficient would not).
         for k in 1..PIECES.len() {
-            let (left_f, left_g) = (horner(PIECES[k - 1].0, 1.0), horner(PIECES[k - 1].1, 1.0));
-            let (right_f, right_g) = (horner(PIECES[k].0, -1.0), horner(PIECES[k].1, -1.0));
+            let [lf, lg] = &PIECES[k - 1];
+            let [rf, rg] = &PIECES[k];
+            let (left_f, left_g) = (horner(lf, 1.0), horner(lg, 1.0));
+            let (right_f, right_g) = (horner(rf, -1.0), horner(rg, -1.0));
             assert!((left_f - right_f).abs() < 5e-16 * left_f, "f at joint {k}");
             assert!((left_g - right_g).abs() < 5e-16 * left_g, "g at joint {k}");
         }

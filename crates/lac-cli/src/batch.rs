@@ -1,51 +1,83 @@
 //! `--batch` of every solving subcommand: one JSON input per line in, one JSON line per
 //! input line out, in input order.
 //!
-//! A reader thread reads the lines and hands each to rayon's pool as soon as it is read;
-//! this thread writes the answers in input order, each as soon as it and every line before
-//! it are done, and flushes whenever it would otherwise wait. At most a window of lines is
-//! in flight (read but not yet written): the reader waits for a slot, so memory stays
-//! bounded however long the input, and a slow line holds back only the lines after it. A
-//! line longer than the limit is not kept: it is skipped to its end and answered with a
-//! `limit` error.
+//! A reader thread reads the input in chunks of whole lines into one buffer per chunk (no
+//! allocation per line) and hands them over through a channel of two chunks; this thread
+//! solves each chunk on rayon's pool, in slices of a few lines whose answers are written
+//! straight into one output buffer per slice, and writes the slices in input order. A chunk
+//! ends at [`chunk_lines`] lines, at [`CHUNK_BYTES`] bytes, or as soon as no more input is
+//! waiting (so answers stream out as the lines come in, one by one if they come slowly),
+//! and the output is flushed whenever no chunk is waiting: at most three chunks are in
+//! flight, so memory stays bounded however long the input. A line longer than the limit is
+//! not kept: it is skipped to its end and answered with a `limit` error.
 //!
 //! A line that fails (bad JSON, a blank line, a curve that does not exist, even a defect that
 //! panics) gives `{"error":{"kind":…,"message":"line N: …"}}` in its place, so the output can
 //! be zipped with the input. When any line failed, the batch ends with a one-line summary on
 //! standard error and the exit code of the first failed line.
 
-use std::collections::BTreeMap;
 use std::fs::File;
-use std::io::{self, BufRead, BufReader, BufWriter, Write};
+use std::io::{self, BufRead, BufReader, BufWriter, Read, Write};
+use std::ops::Range;
 use std::path::Path;
-use std::sync::mpsc::{self, Receiver, SyncSender, TryRecvError};
+use std::sync::mpsc::{self, TryRecvError};
 use std::sync::Arc;
 
 use lac_io::json::ErrorBody;
+use rayon::prelude::*;
 
 use crate::errors;
 use crate::limits::{mebibytes, Limits};
 use crate::output::{carried, is_stdout};
 
-/// What solves one line: its text (without the line ending) to the answer's JSON line.
-pub(crate) type Solve = Arc<dyn Fn(&str) -> Result<String, ErrorBody> + Send + Sync>;
+/// What solves one line: its text (without the line ending) to the answer's JSON, appended
+/// to the buffer without a newline. On `Err` whatever it appended is discarded.
+pub(crate) type Solve = Arc<SolveFn>;
 
-/// Lines in flight per pool thread when each line is light.
-const LINES_PER_THREAD: usize = 16;
-/// The work (in samples, or comparable units) the lines in flight may hold together.
-const WORK_IN_FLIGHT: usize = 2_000_000;
+/// The function behind a [`Solve`].
+pub(crate) type SolveFn = dyn Fn(&str, &mut Vec<u8>) -> Result<(), ErrorBody> + Send + Sync;
 
-/// How many lines may be in flight when each costs about `cost` (its samples): enough to
-/// keep every core busy past a slow line, few enough that together they stay within
-/// [`WORK_IN_FLIGHT`] (at 1,000,000 samples a line, two lines: about 350 MB).
-pub(crate) fn window(cost: usize) -> usize {
-    let threads = rayon::current_num_threads().max(1);
-    (WORK_IN_FLIGHT / cost.max(1)).clamp(2, LINES_PER_THREAD * threads)
+/// The answers to a few consecutive lines.
+struct Slice {
+    /// One line of output per input line.
+    bytes: Vec<u8>,
+    /// How many lines.
+    lines: usize,
+    /// The errors among them, in order.
+    failed: Vec<ErrorBody>,
 }
 
-/// Solve every line of `input` ("-": standard input) with `solve`, at most `window` lines in
-/// flight, and write one line per input line to `output` (a file, or standard output for
-/// `None` or "-").
+/// A [`Solve`] from a function that makes the answer line as a `String` (for the
+/// subcommands whose lines take far longer to solve than to copy).
+pub(crate) fn from_lines<F>(solve: F) -> Solve
+where
+    F: Fn(&str) -> Result<String, ErrorBody> + Send + Sync + 'static,
+{
+    Arc::new(move |text, out| {
+        out.extend_from_slice(solve(text)?.as_bytes());
+        Ok(())
+    })
+}
+
+/// Most lines in one chunk.
+const MAX_CHUNK_LINES: usize = 1024;
+/// A chunk ends once its lines hold this many bytes.
+const CHUNK_BYTES: usize = 1 << 22;
+/// Lines solved one after the other by one task, into one output buffer.
+const SLICE_LINES: usize = 16;
+/// The work (in samples, or comparable units) the lines of a chunk may hold together.
+const WORK_IN_FLIGHT: usize = 2_000_000;
+
+/// How many lines a chunk may hold when each costs about `cost` (its samples): enough to
+/// keep every core busy, few enough that together they stay within [`WORK_IN_FLIGHT`] (at
+/// 1,000,000 samples a line, two lines: about 350 MB).
+pub(crate) fn chunk_lines(cost: usize) -> usize {
+    (WORK_IN_FLIGHT / cost.max(1)).clamp(2, MAX_CHUNK_LINES)
+}
+
+/// Solve every line of `input` ("-": standard input) with `solve`, in chunks of at most
+/// `chunk` lines, and write one line per input line to `output` (a file, or standard output
+/// for `None` or "-").
 ///
 /// Returns `Err` when the input or output fails (after writing every answer before the
 /// failure), and when a line failed: then the error is the summary, with the first failed
@@ -54,22 +86,23 @@ pub(crate) fn run(
     input: &Path,
     output: Option<&Path>,
     limits: Limits,
-    window: usize,
+    chunk: usize,
     solve: Solve,
 ) -> Result<(), ErrorBody> {
     let reader = open(input)?;
     let mut out: Box<dyn Write> = match output.filter(|_| !is_stdout(output)) {
-        Some(path) => Box::new(BufWriter::new(
+        Some(path) => Box::new(BufWriter::with_capacity(
+            1 << 16,
             File::create(path).map_err(|e| errors::io("create", Some(path), &e))?,
         )),
-        None => Box::new(BufWriter::new(io::stdout().lock())),
+        None => Box::new(BufWriter::with_capacity(1 << 16, io::stdout().lock())),
     };
     let write_error = |e: io::Error| match output.filter(|_| !is_stdout(output)) {
         Some(path) => errors::io("write", Some(path), &e),
         None => errors::io("write standard output", None, &e),
     };
     let mut tally = Tally::default();
-    match stream(reader, &mut *out, limits.line(), window, solve, &mut tally) {
+    match stream(reader, &mut *out, limits.line(), chunk, solve, &mut tally) {
         Ok(()) => {}
         Err(e) if e.kind() == io::ErrorKind::BrokenPipe && is_stdout(output) => return Ok(()),
         Err(e) => {
@@ -85,23 +118,33 @@ pub(crate) fn run(
     tally.summary()
 }
 
+/// The input, buffered (its buffer tells whether more input is already waiting).
+type Input = BufReader<Box<dyn Read + Send>>;
+
 /// Open `input` for reading, "-" meaning standard input.
-fn open(input: &Path) -> Result<Box<dyn BufRead + Send>, ErrorBody> {
-    if input.as_os_str() == "-" {
-        return Ok(Box::new(BufReader::new(io::stdin())));
-    }
-    let file = File::open(input).map_err(|e| errors::io("read", Some(input), &e))?;
-    Ok(Box::new(BufReader::with_capacity(1 << 16, file)))
+fn open(input: &Path) -> Result<Input, ErrorBody> {
+    let read: Box<dyn Read + Send> = if input.as_os_str() == "-" {
+        Box::new(io::stdin())
+    } else {
+        Box::new(File::open(input).map_err(|e| errors::io("read", Some(input), &e))?)
+    };
+    Ok(BufReader::with_capacity(1 << 16, read))
 }
 
-/// What the reader thread tells the writer.
+/// Lines read together: their bytes one after the other.
+#[derive(Default)]
+struct Chunk {
+    /// Index (from 0) of the chunk's first line in the input.
+    first: usize,
+    data: Vec<u8>,
+    lines: Vec<Line>,
+}
+
+/// What the reader thread hands over.
 enum Message {
-    /// Line `index` (from 0) is answered.
-    Answer(usize, Result<String, ErrorBody>),
-    /// The input ended after this many lines.
-    End(usize),
-    /// Reading failed after this many lines.
-    ReadFailed(usize, io::Error),
+    Lines(Chunk),
+    /// Reading failed (after the lines sent before).
+    ReadFailed(io::Error),
 }
 
 /// How the lines went.
@@ -113,11 +156,11 @@ struct Tally {
 }
 
 impl Tally {
-    fn record(&mut self, answer: &Result<String, ErrorBody>) {
-        self.lines += 1;
-        if let Err(err) = answer {
-            self.failed += 1;
-            self.first.get_or_insert_with(|| err.clone());
+    fn record(&mut self, lines: usize, errors: Vec<ErrorBody>) {
+        self.lines += lines;
+        self.failed += errors.len();
+        if self.first.is_none() {
+            self.first = errors.into_iter().next();
         }
     }
 
@@ -140,87 +183,19 @@ impl Tally {
 
 /// The reader thread, the pool and the ordered writing; see the module documentation.
 fn stream(
-    reader: Box<dyn BufRead + Send>,
+    reader: Input,
     out: &mut dyn Write,
     max_line: usize,
-    window: usize,
+    chunk: usize,
     solve: Solve,
     tally: &mut Tally,
 ) -> io::Result<()> {
-    let window = window.max(1);
-    let (answers, inbox) = mpsc::channel::<Message>();
-    let (slots, free) = mpsc::sync_channel::<()>(window);
-    for _ in 0..window {
-        let _ = slots.send(());
-    }
+    let chunk = chunk.max(1);
+    let (chunks, inbox) = mpsc::sync_channel::<Message>(2);
     // Detached: if the writer stops early (a closed pipe), the process ends without
     // waiting for a reader blocked on its input.
-    std::thread::spawn(move || read_lines(reader, max_line, solve, answers, free));
-    write_in_order(out, &inbox, &slots, tally)
-}
-
-/// Read lines, each after taking a slot, and hand each to the pool; then say how many.
-fn read_lines(
-    mut reader: Box<dyn BufRead + Send>,
-    max_line: usize,
-    solve: Solve,
-    answers: mpsc::Sender<Message>,
-    free: Receiver<()>,
-) {
-    let mut index = 0;
+    std::thread::spawn(move || read_chunks(reader, max_line, chunk, chunks));
     loop {
-        if free.recv().is_err() {
-            return; // the writer has stopped
-        }
-        let line = match read_line(&mut *reader, max_line) {
-            Ok(Some(line)) => line,
-            Ok(None) => {
-                let _ = answers.send(Message::End(index));
-                return;
-            }
-            Err(e) => {
-                let _ = answers.send(Message::ReadFailed(index, e));
-                return;
-            }
-        };
-        let (solve, answers) = (Arc::clone(&solve), answers.clone());
-        let i = index;
-        rayon::spawn(move || {
-            let answer = answer(i + 1, line, max_line, &*solve);
-            let _ = answers.send(Message::Answer(i, answer));
-        });
-        index += 1;
-    }
-}
-
-/// Write the answers in input order as they come, returning a slot for each line written.
-fn write_in_order(
-    out: &mut dyn Write,
-    inbox: &Receiver<Message>,
-    slots: &SyncSender<()>,
-    tally: &mut Tally,
-) -> io::Result<()> {
-    let mut ready: BTreeMap<usize, Result<String, ErrorBody>> = BTreeMap::new();
-    let mut next = 0;
-    let mut end: Option<(usize, Option<io::Error>)> = None;
-    loop {
-        while let Some(answer) = ready.remove(&next) {
-            match &answer {
-                Ok(line) => writeln!(out, "{line}")?,
-                Err(err) => writeln!(out, "{}", err.to_json_line())?,
-            }
-            tally.record(&answer);
-            next += 1;
-            let _ = slots.try_send(());
-        }
-        if let Some((lines, failure)) = &mut end {
-            if next >= *lines {
-                return match failure.take() {
-                    Some(e) => Err(e),
-                    None => Ok(()),
-                };
-            }
-        }
         let message = match inbox.try_recv() {
             Ok(message) => message,
             Err(TryRecvError::Empty) => {
@@ -228,36 +203,120 @@ fn write_in_order(
                 out.flush()?;
                 match inbox.recv() {
                     Ok(message) => message,
-                    Err(_) => return Err(io::Error::other("the batch reader stopped")),
+                    Err(_) => return Ok(()), // the input has ended
                 }
             }
-            Err(TryRecvError::Disconnected) => {
-                return Err(io::Error::other("the batch reader stopped"))
-            }
+            Err(TryRecvError::Disconnected) => return Ok(()),
         };
         match message {
-            Message::Answer(i, answer) => {
-                ready.insert(i, answer);
+            Message::Lines(chunk) => {
+                let solved = solve_chunk(&chunk, max_line, &*solve);
+                for slice in solved {
+                    out.write_all(&slice.bytes)?;
+                    tally.record(slice.lines, slice.failed);
+                }
             }
-            Message::End(lines) => end = Some((lines, None)),
-            Message::ReadFailed(lines, e) => {
+            Message::ReadFailed(e) => {
                 let body = errors::io("read the batch input", None, &e);
-                end = Some((lines, Some(io::Error::other(body))));
+                return Err(io::Error::other(body));
             }
         }
     }
 }
 
-/// One input line: its bytes without the line ending, or its length when it is longer than
-/// the limit (its bytes are skipped).
+/// Read chunks of lines and send them; a chunk ends early when no more input is waiting.
+fn read_chunks(
+    mut reader: Input,
+    max_line: usize,
+    chunk_lines: usize,
+    chunks: mpsc::SyncSender<Message>,
+) {
+    let mut index = 0;
+    loop {
+        let mut chunk = Chunk {
+            first: index,
+            ..Chunk::default()
+        };
+        let mut ended = false;
+        while chunk.lines.len() < chunk_lines && chunk.data.len() < CHUNK_BYTES {
+            match read_line(&mut reader, max_line, &mut chunk.data) {
+                Ok(Some(line)) => chunk.lines.push(line),
+                Ok(None) => {
+                    ended = true;
+                    break;
+                }
+                Err(e) => {
+                    if !chunk.lines.is_empty() {
+                        let _ = chunks.send(Message::Lines(chunk));
+                    }
+                    let _ = chunks.send(Message::ReadFailed(e));
+                    return;
+                }
+            }
+            if reader.buffer().is_empty() {
+                break; // answer what has come before waiting for more
+            }
+        }
+        index += chunk.lines.len();
+        if !chunk.lines.is_empty() && chunks.send(Message::Lines(chunk)).is_err() {
+            return; // the writer has stopped
+        }
+        if ended {
+            return;
+        }
+    }
+}
+
+/// The answers to a chunk's lines, in slices of consecutive lines, in order.
+fn solve_chunk(chunk: &Chunk, max_line: usize, solve: &SolveFn) -> Vec<Slice> {
+    // Slices small enough that every thread gets several, for balance.
+    let threads = rayon::current_num_threads().max(1);
+    let slice = (chunk.lines.len() / (4 * threads)).clamp(1, SLICE_LINES);
+    let slices: Vec<(usize, &[Line])> = chunk
+        .lines
+        .chunks(slice)
+        .enumerate()
+        .map(|(i, lines)| (chunk.first + i * slice, lines))
+        .collect();
+    slices
+        .into_par_iter()
+        .map(|(first, lines)| {
+            let mut out = Vec::with_capacity(256 * lines.len());
+            let mut failed = Vec::new();
+            for (k, line) in lines.iter().enumerate() {
+                if let Err(err) =
+                    answer(first + k + 1, line, &chunk.data, max_line, solve, &mut out)
+                {
+                    out.extend_from_slice(err.to_json_line().as_bytes());
+                    failed.push(err);
+                }
+                out.push(b'\n');
+            }
+            Slice {
+                bytes: out,
+                lines: lines.len(),
+                failed,
+            }
+        })
+        .collect()
+}
+
+/// One input line: where its bytes are in the chunk (without the line ending), or its
+/// length when it is longer than the limit (its bytes are skipped).
+#[derive(Clone, Debug, PartialEq)]
 enum Line {
-    Text(Vec<u8>),
+    Text(Range<usize>),
     TooLong(usize),
 }
 
-/// The next line, without its line ending (`\n` or `\r\n`); `None` at the end of the input.
-fn read_line(reader: &mut dyn BufRead, max_line: usize) -> io::Result<Option<Line>> {
-    let mut line = Vec::new();
+/// The next line, without its line ending (`\n` or `\r\n`), appended to `data`; `None` at
+/// the end of the input.
+fn read_line(
+    reader: &mut dyn BufRead,
+    max_line: usize,
+    data: &mut Vec<u8>,
+) -> io::Result<Option<Line>> {
+    let start = data.len();
     let mut length = 0;
     let mut last = None;
     let mut any = false;
@@ -271,14 +330,14 @@ fn read_line(reader: &mut dyn BufRead, max_line: usize) -> io::Result<Option<Lin
             break;
         }
         any = true;
-        let (chunk, done) = match buffer.iter().position(|&b| b == b'\n') {
+        let (piece, done) = match memchr::memchr(b'\n', buffer) {
             Some(i) => (&buffer[..i], Some(i + 1)),
             None => (buffer, None),
         };
-        length += chunk.len();
-        last = chunk.last().copied().or(last);
+        length += piece.len();
+        last = piece.last().copied().or(last);
         if length <= max_line + 1 {
-            line.extend_from_slice(chunk);
+            data.extend_from_slice(piece);
         }
         let used = done.unwrap_or(buffer.len());
         reader.consume(used);
@@ -291,47 +350,50 @@ fn read_line(reader: &mut dyn BufRead, max_line: usize) -> io::Result<Option<Lin
     }
     if last == Some(b'\r') {
         length -= 1;
-        if line.len() > length {
-            line.pop();
-        }
     }
-    Ok(Some(if length > max_line {
-        Line::TooLong(length)
-    } else {
-        Line::Text(line)
-    }))
+    if length > max_line {
+        data.truncate(start);
+        return Ok(Some(Line::TooLong(length)));
+    }
+    data.truncate(start + length);
+    Ok(Some(Line::Text(start..start + length)))
 }
 
-/// The answer to line `number` (from 1): what `solve` made of it, or why there is none,
-/// with the line number at the head of the message. A panic is caught and answered as
-/// kind "internal" for this line, so one bad line cannot lose the rest of the batch.
+/// The answer to line `number` (from 1), appended to `out`: what `solve` made of it, or
+/// (with nothing appended) why there is none, with the line number at the head of the
+/// message. A panic is caught and answered as kind "internal" for this line, so one bad
+/// line cannot lose the rest of the batch.
 fn answer(
     number: usize,
-    line: Line,
+    line: &Line,
+    data: &[u8],
     max_line: usize,
-    solve: &(dyn Fn(&str) -> Result<String, ErrorBody> + Send + Sync),
-) -> Result<String, ErrorBody> {
+    solve: &SolveFn,
+    out: &mut Vec<u8>,
+) -> Result<(), ErrorBody> {
+    let mark = out.len();
     let solved = errors::catching(|| {
-        errors::debug_panic(&format!("line {number}"));
+        errors::debug_panic_at_line(number);
         match line {
             Line::TooLong(length) => Err(ErrorBody::limit(format!(
                 "the line has {length} bytes, over the limit of {} a line (--allow-large \
                  raises it)",
                 mebibytes(max_line)
             ))),
-            Line::Text(bytes) => std::str::from_utf8(&bytes)
+            Line::Text(range) => std::str::from_utf8(&data[range.clone()])
                 .map_err(|_| ErrorBody::invalid_input("the line is not valid UTF-8"))
-                .and_then(solve),
+                .and_then(|text| solve(text, &mut *out)),
         }
     });
     let err = match solved {
-        Ok(Ok(report)) => return Ok(report),
+        Ok(Ok(())) => return Ok(()),
         Ok(Err(err)) => err,
         Err(_) => ErrorBody::new(
             "internal",
             "lac panicked on this line; this is a defect of lac, please report it with the line",
         ),
     };
+    out.truncate(mark);
     // serde_json counts lines within the line; the file's line number is what helps.
     let message = err.message.replace(" at line 1 column ", " at column ");
     Err(ErrorBody {
@@ -346,9 +408,10 @@ mod tests {
 
     fn lines(mut input: &[u8], max: usize) -> Vec<String> {
         let mut out = Vec::new();
-        while let Some(line) = read_line(&mut input, max).unwrap() {
+        let mut data = Vec::new();
+        while let Some(line) = read_line(&mut input, max, &mut data).unwrap() {
             out.push(match line {
-                Line::Text(t) => String::from_utf8(t).unwrap(),
+                Line::Text(r) => String::from_utf8(data[r].to_vec()).unwrap(),
                 Line::TooLong(n) => format!("<{n}>"),
             });
         }
@@ -364,35 +427,51 @@ mod tests {
             lines(b"0123456789\n01234567890\r\nx", 10),
             ["0123456789", "<11>", "x"]
         );
+        assert_eq!(lines(b"0123456789\r\nab\r", 10), ["0123456789", "ab"]);
     }
 
     #[test]
     fn answers_carry_the_line_number_and_a_panic_stays_in_its_line() {
-        let solve = |text: &str| -> Result<String, ErrorBody> {
+        let solve = |text: &str, out: &mut Vec<u8>| -> Result<(), ErrorBody> {
+            out.extend_from_slice(b"partial");
             match text {
                 "boom" => panic!("boom"),
                 "bad" => Err(ErrorBody::invalid_input(
                     "expected value at line 1 column 1",
                 )),
-                _ => Ok(text.to_string()),
+                _ => {
+                    out.extend_from_slice(text.as_bytes());
+                    Ok(())
+                }
             }
         };
-        let ok = answer(3, Line::Text(b"fine".to_vec()), 10, &solve);
-        assert_eq!(ok.unwrap(), "fine");
-        let bad = answer(17, Line::Text(b"bad".to_vec()), 10, &solve).unwrap_err();
+        let text = |s: &str| (Line::Text(0..s.len()), s.as_bytes().to_vec());
+        let mut out = b"before ".to_vec();
+        let (line, data) = text("fine");
+        answer(3, &line, &data, 10, &solve, &mut out).unwrap();
+        assert_eq!(out, b"before partialfine");
+        let mut out = Vec::new();
+        let (line, data) = text("bad");
+        let bad = answer(17, &line, &data, 10, &solve, &mut out).unwrap_err();
         assert_eq!(bad.message, "line 17: expected value at column 1");
-        let long = answer(2, Line::TooLong(99), 10, &solve).unwrap_err();
+        assert!(
+            out.is_empty(),
+            "a failed line's partial answer is discarded"
+        );
+        let long = answer(2, &Line::TooLong(99), &[], 10, &solve, &mut out).unwrap_err();
         assert_eq!(long.kind, "limit");
         assert!(long.message.starts_with("line 2: the line has 99 bytes"));
-        let boom = answer(5, Line::Text(b"boom".to_vec()), 10, &solve).unwrap_err();
+        let (line, data) = text("boom");
+        let boom = answer(5, &line, &data, 10, &solve, &mut out).unwrap_err();
         assert_eq!(boom.kind, "internal");
         assert!(boom.message.starts_with("line 5: "));
+        assert!(out.is_empty());
     }
 
     #[test]
-    fn the_window_shrinks_with_the_work_of_a_line() {
-        assert_eq!(window(1_000_000), 2);
-        assert!(window(65) >= 16);
-        assert!(window(65) <= LINES_PER_THREAD * rayon::current_num_threads());
+    fn chunks_shrink_with_the_work_of_a_line() {
+        assert_eq!(chunk_lines(1_000_000), 2);
+        assert_eq!(chunk_lines(2), MAX_CHUNK_LINES);
+        assert!(chunk_lines(65) >= 16);
     }
 }

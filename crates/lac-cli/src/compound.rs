@@ -4,7 +4,7 @@
 use std::sync::Arc;
 
 use lac::Curve;
-use lac_io::json::{parse, to_line, CompoundInput, CompoundReport, ErrorBody};
+use lac_io::json::{parse, to_line, write_line, CompoundInput, CompoundReport, ErrorBody};
 
 use crate::batch;
 use crate::cli::{CompoundArgs, CurveFormat};
@@ -24,9 +24,9 @@ pub(crate) fn run(args: &CompoundArgs, limits: Limits) -> Result<(), ErrorBody> 
     check_output(output, args.batch.is_some())?;
     let samples = limits.samples(output.samples as usize, "--samples")?;
     if let Some(input) = &args.batch {
-        let solve: batch::Solve = Arc::new(move |text| solve_line(text, samples));
-        let window = batch::window(samples);
-        return batch::run(input, output.file.as_deref(), limits, window, solve);
+        let solve: batch::Solve = Arc::new(move |text, out| solve_line(text, samples, out));
+        let chunk = batch::chunk_lines(samples);
+        return batch::run(input, output.file.as_deref(), limits, chunk, solve);
     }
     let (Some(text), Some(alpha0), Some(alpha1)) = (&args.points, args.alpha0, args.alpha1) else {
         return Err(errors::usage(
@@ -53,13 +53,11 @@ pub(crate) fn run(args: &CompoundArgs, limits: Limits) -> Result<(), ErrorBody> 
 }
 
 /// The output line for one `--batch` line: the report, or why there is none.
-fn solve_line(text: &str, samples: usize) -> Result<String, ErrorBody> {
+fn solve_line(text: &str, samples: usize, out: &mut Vec<u8>) -> Result<(), ErrorBody> {
     let input: CompoundInput = parse(text, CompoundInput::SHAPE)?;
-    Ok(to_line(&CompoundReport::new(
-        &input.solve()?,
-        &input,
-        samples,
-    )?))
+    let report = CompoundReport::new(&input.solve()?, &input, samples)?;
+    write_line(&report, out);
+    Ok(())
 }
 
 /// The compound curve's input for the arguments `--points` (`text`), `--alpha0`,

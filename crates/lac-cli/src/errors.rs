@@ -110,7 +110,27 @@ pub(crate) fn catching<T>(f: impl FnOnce() -> T) -> std::thread::Result<T> {
 /// ("main", or "line N" of a `--batch`): how the tests check that a defect still gives one
 /// line of JSON and its exit code.
 pub(crate) fn debug_panic(place: &str) {
-    if std::env::var_os("LAC_DEBUG_PANIC").is_some_and(|v| v == place) {
+    if debug_panic_place().is_some_and(|p| p == place) {
         panic!("LAC_DEBUG_PANIC={place}");
     }
+}
+
+/// [`debug_panic`] at "line `number`" of a batch, without formatting the place for every
+/// line (the variable is read once).
+pub(crate) fn debug_panic_at_line(number: usize) {
+    if let Some(place) = debug_panic_place() {
+        if place.strip_prefix("line ") == Some(number.to_string().as_str()) {
+            panic!("LAC_DEBUG_PANIC={place}");
+        }
+    }
+}
+
+/// The value of `LAC_DEBUG_PANIC`, read once.
+fn debug_panic_place() -> Option<&'static str> {
+    static PLACE: std::sync::OnceLock<Option<String>> = std::sync::OnceLock::new();
+    PLACE
+        .get_or_init(|| {
+            std::env::var_os("LAC_DEBUG_PANIC").map(|v| v.to_string_lossy().into_owned())
+        })
+        .as_deref()
 }

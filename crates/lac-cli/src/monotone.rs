@@ -3,8 +3,6 @@
 //! `--points` and `--weights`, for every piece of a JSON document (what `lac quasi` prints,
 //! so `lac quasi … | lac monotone` works), or for each line of a `--batch`.
 
-use std::sync::Arc;
-
 use lac_io::json::{to_line, ErrorBody, MonotoneDocument, MonotoneReport, PieceInput};
 
 use crate::batch;
@@ -15,7 +13,7 @@ use crate::limits::Limits;
 use crate::output::write_document;
 use crate::points::{parse_point_list, parse_weights};
 
-/// What a line of `--batch` costs, in samples, for sizing the window of lines in flight.
+/// What a line of `--batch` costs, in samples, for sizing the chunks of lines read together.
 const LINE_COST: usize = 1_000;
 
 /// What to give when there is nothing to read.
@@ -25,9 +23,9 @@ const HINT: &str = "give --points (and --weights), a FILE of JSON, or pipe lac q
 /// Run `lac monotone`.
 pub(crate) fn run(args: &MonotoneArgs, limits: Limits) -> Result<(), ErrorBody> {
     if let Some(input) = &args.batch {
-        let solve: batch::Solve = Arc::new(|text| MonotoneDocument::parse(text)?.report_line());
-        let window = batch::window(LINE_COST);
-        return batch::run(input, args.file.as_deref(), limits, window, solve);
+        let solve = batch::from_lines(|text| MonotoneDocument::parse(text)?.report_line());
+        let chunk = batch::chunk_lines(LINE_COST);
+        return batch::run(input, args.file.as_deref(), limits, chunk, solve);
     }
     let line = match &args.points {
         Some(text) => {

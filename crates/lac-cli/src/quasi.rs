@@ -2,8 +2,6 @@
 //! pieces (seed 001, SPEC §5), as JSON, CSV, or drawn over the curve; or many with
 //! `--batch`.
 
-use std::sync::Arc;
-
 use lac_io::json::{
     parse, to_line, CurveInput, ErrorBody, QuasiInput, QuasiReport, Report, SegmentInput,
 };
@@ -17,7 +15,7 @@ use crate::output::write_document;
 use crate::points::{kurbo_points, parse_points};
 use crate::svg;
 
-/// What a line of `--batch` costs, in samples, for sizing the window of lines in flight:
+/// What a line of `--batch` costs, in samples, for sizing the chunks of lines read together:
 /// a fit evaluates its curve at a few thousand points a piece.
 const LINE_COST: usize = 50_000;
 
@@ -32,9 +30,9 @@ pub(crate) fn run(args: &QuasiArgs, limits: Limits) -> Result<(), ErrorBody> {
                 "--batch writes JSON lines; --format csv and svg need --points",
             ));
         }
-        let solve: batch::Solve = Arc::new(solve_line);
-        let window = batch::window(LINE_COST);
-        return batch::run(input, args.file.as_deref(), limits, window, solve);
+        let solve = batch::from_lines(solve_line);
+        let chunk = batch::chunk_lines(LINE_COST);
+        return batch::run(input, args.file.as_deref(), limits, chunk, solve);
     }
     let input = QuasiInput {
         curve: curve_from_arguments(args)?,

@@ -3,7 +3,7 @@
 use std::sync::Arc;
 
 use lac::Curve;
-use lac_io::json::{parse, to_line, ErrorBody, Report, SegmentInput, SegmentReport};
+use lac_io::json::{to_line, ErrorBody, Report, SegmentInput, SegmentReport};
 
 use crate::batch;
 use crate::cli::{CurveFormat, CurveOutput, SegmentArgs};
@@ -22,9 +22,9 @@ pub(crate) fn run(args: &SegmentArgs, limits: Limits) -> Result<(), ErrorBody> {
     check_output(output, args.batch.is_some())?;
     let samples = limits.samples(output.samples as usize, "--samples")?;
     if let Some(input) = &args.batch {
-        let solve: batch::Solve = Arc::new(move |text| solve_line(text, samples));
-        let window = batch::window(samples);
-        return batch::run(input, output.file.as_deref(), limits, window, solve);
+        let solve: batch::Solve = Arc::new(move |text, out| solve_line(text, samples, out));
+        let chunk = batch::chunk_lines(samples);
+        return batch::run(input, output.file.as_deref(), limits, chunk, solve);
     }
     let (Some(text), Some(alpha)) = (&args.points, args.alpha) else {
         return Err(errors::usage("give --points and --alpha, or --batch FILE"));
@@ -56,11 +56,13 @@ pub(crate) fn run(args: &SegmentArgs, limits: Limits) -> Result<(), ErrorBody> {
     write_document(output.file.as_deref(), document.as_bytes())
 }
 
-/// The output line for one `--batch` line: the report, or why there is none.
-fn solve_line(text: &str, samples: usize) -> Result<String, ErrorBody> {
-    let input: SegmentInput = parse(text, SegmentInput::SHAPE)?;
+/// The output line for one `--batch` line, appended to `out`: the report, or why there is
+/// none.
+fn solve_line(text: &str, samples: usize, out: &mut Vec<u8>) -> Result<(), ErrorBody> {
+    let input = SegmentInput::parse_line(text)?;
     let report = SegmentReport::new(&input.solve()?, samples)?.with_points(input.points);
-    Ok(to_line(&report.checked()?))
+    report.checked()?.write_json(out);
+    Ok(())
 }
 
 /// Reject combinations of output flags that would be silently ignored; `batch`: is

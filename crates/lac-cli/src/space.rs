@@ -5,7 +5,7 @@
 use std::sync::Arc;
 
 use lac::{SpaceSegment, Vec3};
-use lac_io::json::{parse, to_line, ErrorBody, SpaceInput, SpaceReport, PLANAR_NOTE};
+use lac_io::json::{parse, to_line, write_line, ErrorBody, SpaceInput, SpaceReport, PLANAR_NOTE};
 
 use crate::batch;
 use crate::cli::{SpaceArgs, SpaceFormat};
@@ -34,10 +34,10 @@ pub(crate) fn run(args: &SpaceArgs, limits: Limits) -> Result<(), ErrorBody> {
                 "--batch writes JSON lines; --format csv, svg, obj and ply need --points",
             ));
         }
-        let solve: batch::Solve = Arc::new(move |text| solve_line(text, samples, frames));
+        let solve: batch::Solve = Arc::new(move |text, out| solve_line(text, samples, frames, out));
         // A sample with its frame holds about three times the numbers.
-        let window = batch::window(samples * if frames { 3 } else { 1 });
-        return batch::run(input, args.file.as_deref(), limits, window, solve);
+        let chunk = batch::chunk_lines(samples * if frames { 3 } else { 1 });
+        return batch::run(input, args.file.as_deref(), limits, chunk, solve);
     }
     let (Some(text), Some(alpha), Some(beta)) = (&args.points, args.alpha, args.beta) else {
         return Err(errors::usage(
@@ -63,13 +63,16 @@ pub(crate) fn run(args: &SpaceArgs, limits: Limits) -> Result<(), ErrorBody> {
 }
 
 /// The output line for one `--batch` line: the report, or why there is none.
-fn solve_line(text: &str, samples: usize, frames: bool) -> Result<String, ErrorBody> {
+fn solve_line(
+    text: &str,
+    samples: usize,
+    frames: bool,
+    out: &mut Vec<u8>,
+) -> Result<(), ErrorBody> {
     let input: SpaceInput = parse(text, SpaceInput::SHAPE)?;
-    Ok(to_line(&SpaceReport::new(
-        &input.solve()?,
-        samples,
-        frames,
-    )?))
+    let report = SpaceReport::new(&input.solve()?, samples, frames)?;
+    write_line(&report, out);
+    Ok(())
 }
 
 /// The comment lines of OBJ and PLY files: what was solved and how to read the numbers.

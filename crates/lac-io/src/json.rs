@@ -158,6 +158,17 @@ pub fn to_line<T: Serialize>(report: &T) -> String {
     })
 }
 
+/// A report as one line of JSON appended to `out`, without a newline: the bytes of
+/// [`to_line`] without an intermediate `String` (for `--batch`, which writes many).
+pub fn write_line<T: Serialize>(report: &T, out: &mut Vec<u8>) {
+    let mark = out.len();
+    if let Err(e) = serde_json::to_writer(&mut *out, report) {
+        out.truncate(mark);
+        let body = ErrorBody::new("internal", format!("a report did not serialise: {e}"));
+        out.extend_from_slice(body.to_json_line().as_bytes());
+    }
+}
+
 /// Reports that can say whether all their numbers are finite (JSON has no NaN).
 pub trait Report: Serialize {
     /// Are all numbers finite?
@@ -459,6 +470,170 @@ impl SegmentReport {
     pub fn with_points(mut self, points: [Xy; 3]) -> Self {
         self.points = points;
         self
+    }
+}
+
+impl SegmentReport {
+    /// The report as one line of JSON appended to `out`, without a newline: the bytes
+    /// serde_json writes (see [`to_line`]), formatted directly, for `--batch`.
+    pub fn write_json(&self, out: &mut Vec<u8>) {
+        let mut floats = zmij::Buffer::new();
+        let mut num = |out: &mut Vec<u8>, x: f64| {
+            if x.is_finite() {
+                out.extend_from_slice(floats.format_finite(x).as_bytes());
+            } else {
+                out.extend_from_slice(b"null");
+            }
+        };
+        out.extend_from_slice(b"{\"alpha\":");
+        num(out, self.alpha);
+        out.extend_from_slice(b",\"lambda\":");
+        num(out, self.lambda);
+        out.extend_from_slice(b",\"arc_length\":");
+        num(out, self.arc_length);
+        out.extend_from_slice(b",\"curvature_start\":");
+        num(out, self.curvature_start);
+        out.extend_from_slice(b",\"curvature_end\":");
+        num(out, self.curvature_end);
+        out.extend_from_slice(b",\"turning_angle\":");
+        num(out, self.turning_angle);
+        out.extend_from_slice(b",\"points\":[");
+        for (i, [x, y]) in self.points.iter().enumerate() {
+            out.extend_from_slice(if i == 0 { b"[" } else { b",[" });
+            num(out, *x);
+            out.push(b',');
+            num(out, *y);
+            out.push(b']');
+        }
+        out.extend_from_slice(b"],\"samples\":[");
+        for (i, row) in self.samples.iter().enumerate() {
+            out.extend_from_slice(if i == 0 { b"{\"s\":" } else { b",{\"s\":" });
+            num(out, row.s);
+            out.extend_from_slice(b",\"x\":");
+            num(out, row.x);
+            out.extend_from_slice(b",\"y\":");
+            num(out, row.y);
+            out.extend_from_slice(b",\"theta\":");
+            num(out, row.theta);
+            out.extend_from_slice(b",\"kappa\":");
+            num(out, row.kappa);
+            out.push(b'}');
+        }
+        out.extend_from_slice(b"]}");
+    }
+}
+
+impl SegmentInput {
+    /// Read a `--batch` line: the common exact shape
+    /// `{"points":[[x,y],[x,y],[x,y]],"alpha":A}` (any JSON whitespace, fields in this order)
+    /// by a direct scan, anything else (other orders, escapes, errors) by [`parse`], so the
+    /// numbers are the same correctly rounded doubles and every message is serde_json's.
+    pub fn parse_line(text: &str) -> Result<SegmentInput, ErrorBody> {
+        match scan_segment_input(text) {
+            Some(input) => Ok(input),
+            None => parse(text, Self::SHAPE),
+        }
+    }
+}
+
+/// The direct scan of [`SegmentInput::parse_line`]; `None` for anything it does not know.
+fn scan_segment_input(text: &str) -> Option<SegmentInput> {
+    let mut at = Scan {
+        text: text.as_bytes(),
+        source: text,
+        pos: 0,
+    };
+    at.expect(b'{')?;
+    at.key(b"points")?;
+    at.expect(b'[')?;
+    let mut points = [[0.0; 2]; 3];
+    for (i, p) in points.iter_mut().enumerate() {
+        if i > 0 {
+            at.expect(b',')?;
+        }
+        at.expect(b'[')?;
+        p[0] = at.number()?;
+        at.expect(b',')?;
+        p[1] = at.number()?;
+        at.expect(b']')?;
+    }
+    at.expect(b']')?;
+    at.expect(b',')?;
+    at.key(b"alpha")?;
+    let alpha = at.number()?;
+    at.expect(b'}')?;
+    at.skip_space();
+    (at.pos == text.len()).then_some(SegmentInput { points, alpha })
+}
+
+struct Scan<'a> {
+    text: &'a [u8],
+    /// The same text as a `str`, to slice numbers from (they are ASCII).
+    source: &'a str,
+    pos: usize,
+}
+
+impl Scan<'_> {
+    fn skip_space(&mut self) {
+        while let Some(b' ' | b'\t' | b'\n' | b'\r') = self.text.get(self.pos) {
+            self.pos += 1;
+        }
+    }
+
+    fn expect(&mut self, byte: u8) -> Option<()> {
+        self.skip_space();
+        (self.text.get(self.pos) == Some(&byte)).then(|| self.pos += 1)
+    }
+
+    /// `"name":` (no escapes).
+    fn key(&mut self, name: &[u8]) -> Option<()> {
+        self.expect(b'"')?;
+        let end = self.pos + name.len();
+        (self.text.get(self.pos..end) == Some(name)).then_some(())?;
+        self.pos = end;
+        (self.text.get(self.pos) == Some(&b'"')).then_some(())?;
+        self.pos += 1;
+        self.expect(b':')
+    }
+
+    /// A number in JSON's grammar, `-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?`, read
+    /// correctly rounded (as serde_json's float_roundtrip does); `None` for anything else,
+    /// and for magnitudes that overflow (serde_json's error is the one to give).
+    fn number(&mut self) -> Option<f64> {
+        self.skip_space();
+        let start = self.pos;
+        let digits = |s: &mut Self| {
+            let from = s.pos;
+            while s.text.get(s.pos).is_some_and(u8::is_ascii_digit) {
+                s.pos += 1;
+            }
+            s.pos - from
+        };
+        if self.text.get(self.pos) == Some(&b'-') {
+            self.pos += 1;
+        }
+        let first = *self.text.get(self.pos)?;
+        let int = digits(self);
+        if int == 0 || (first == b'0' && int > 1) {
+            return None;
+        }
+        if self.text.get(self.pos) == Some(&b'.') {
+            self.pos += 1;
+            if digits(self) == 0 {
+                return None;
+            }
+        }
+        if let Some(b'e' | b'E') = self.text.get(self.pos) {
+            self.pos += 1;
+            if let Some(b'+' | b'-') = self.text.get(self.pos) {
+                self.pos += 1;
+            }
+            if digits(self) == 0 {
+                return None;
+            }
+        }
+        let token = self.source.get(start..self.pos)?;
+        token.parse::<f64>().ok().filter(|x| x.is_finite())
     }
 }
 
@@ -2051,6 +2226,75 @@ impl Report for PathReport {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn segment_reports_are_written_byte_for_byte_as_serde_json_writes_them() {
+        let seg = Segment::from_control_points(
+            [
+                Point::new(0.0, 0.0),
+                Point::new(3.0, 0.0),
+                Point::new(4.0, 1.5),
+            ],
+            -1.0,
+        )
+        .unwrap();
+        let mut report = SegmentReport::new(&seg, 5).unwrap();
+        for extra in [0.0, -0.0, 1e-300, 123456789.0, f64::NAN, f64::INFINITY] {
+            report.samples[1].theta = extra;
+            report.lambda = -extra;
+            let mut out = b"prefix".to_vec();
+            report.write_json(&mut out);
+            assert_eq!(
+                std::str::from_utf8(&out[6..]).unwrap(),
+                serde_json::to_string(&report).unwrap()
+            );
+        }
+        report.samples.clear();
+        let mut out = Vec::new();
+        report.write_json(&mut out);
+        assert_eq!(out, serde_json::to_vec(&report).unwrap());
+    }
+
+    #[test]
+    fn segment_lines_read_by_the_scan_are_what_serde_json_reads() {
+        let lines = [
+            r#"{"points":[[-1,0],[0.2,0.8],[1,0]],"alpha":-1}"#,
+            r#" { "points" : [ [ -1.5e-3 , 0.0 ] , [0.2, 8E+2], [1e400, -0] ] , "alpha": 0.5 }  "#,
+            r#"{"points": [[-1.0, 0.0], [0.30000000000000004, 0.1], [1, 0]], "alpha": -0}"#,
+            r#"{"points":[[-1,0],[0.2,0.8],[1,0]],"alpha":12345678901234567890123}"#,
+            r#"{"points":[[-1,0],[0.2,0.8],[1,0]],"alpha":2.4703282292062328e-324}"#,
+            r#"{"points":[[-1,0],[0.2,0.8],[1,0]],"alpha":-1,"extra":1}"#,
+            r#"{"alpha":-1,"points":[[-1,0],[0.2,0.8],[1,0]]}"#,
+            r#"{"points":[[-1,0],[0.2,0.8],[1,0]],"alpha":01}"#,
+            r#"{"points":[[-1,0],[0.2,0.8],[1,0]],"alpha":1.}"#,
+            r#"{"points":[[-1,0],[0.2,0.8],[1,0]],"alpha":.5}"#,
+            r#"{"points":[[-1,0],[0.2,0.8],[1,0]],"alpha":+1}"#,
+            r#"{"points":[[-1,0],[0.2,0.8],[1,0]],"alpha":NaN}"#,
+            r#"{"points":[[-1,0],[0.2,0.8],[1,0]],"alpha":inf}"#,
+            r#"{"points":[[-1,0],[0.2,0.8]],"alpha":1}"#,
+            r#"{"points":[[-1,0],[0.2,0.8],[1,0]],"alpha":1}x"#,
+            r#"{"po\u0069nts":[[-1,0],[0.2,0.8],[1,0]],"alpha":1}"#,
+            "",
+            "  ",
+        ];
+        for line in lines {
+            let scanned = SegmentInput::parse_line(line);
+            let serde = parse::<SegmentInput>(line, SegmentInput::SHAPE);
+            match (scanned, serde) {
+                (Ok(a), Ok(b)) => {
+                    let bits = |i: &SegmentInput| {
+                        (i.points.map(|p| p.map(f64::to_bits)), i.alpha.to_bits())
+                    };
+                    assert_eq!(bits(&a), bits(&b), "{line}");
+                }
+                (Err(a), Err(b)) => assert_eq!(a, b, "{line}"),
+                (a, b) => panic!("{line}: {a:?} against {b:?}"),
+            }
+        }
+        assert!(scan_segment_input(lines[0]).is_some());
+        assert!(scan_segment_input(lines[1]).is_none(), "1e400 overflows");
+        assert!(scan_segment_input(lines[2]).is_some());
+    }
 
     #[test]
     fn a_segment_report_reads_back_as_its_input() {

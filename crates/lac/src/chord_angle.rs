@@ -20,7 +20,10 @@ use std::cell::OnceCell;
 
 use crate::error::{Error, NotDrawable, Result};
 use crate::numeric::{expm1_ratio, ln1p_ratio, Complex};
-use crate::standard_form::integrate::{integrate_with, NodeCache};
+use crate::standard_form::integrate::{
+    clothoid_arc, integrate_with, ClothoidEnd, NodeCache, CLOTHOID_MIN_LAMBDA_TURN,
+    CLOTHOID_MIN_TURN,
+};
 use crate::standard_form::{StandardForm, Station};
 
 /// Largest supported ln(ρ_max/ρ_min) along one curve (ρ ratio ≈ 1e260).
@@ -65,6 +68,9 @@ pub(crate) struct ChordAngle {
     d: f64,
     /// Built on first use: the series path never needs them.
     nodes: [OnceCell<NodeCache>; 2],
+    /// For a single clothoid piece (α = −1, θ ∈ [0, θd], θd ≥ `CLOTHOID_MIN_TURN`): e^{iθd},
+    /// for the closed form of [`ChordAngle::eval_clothoid`].
+    clothoid: Option<Complex>,
 }
 
 struct Eval {
@@ -95,6 +101,8 @@ impl ChordAngle {
             bound,
             d: bound[0].max(bound[1]),
             nodes: [OnceCell::new(), OnceCell::new()],
+            clothoid: (alpha == [-1.0, -1.0] && theta[0] == 0.0 && theta[1] >= CLOTHOID_MIN_TURN)
+                .then(|| Complex::cis(theta[1])),
         }
     }
 
@@ -130,6 +138,9 @@ impl ChordAngle {
     }
 
     fn eval(&self, mu: f64) -> Eval {
+        if let Some(e) = self.eval_clothoid(mu) {
+            return e;
+        }
         let k = self.d / self.total;
         let lambda = mu * expm1_ratio(-k * mu) / self.total;
         let w_bind = (-k * mu).exp();
@@ -177,17 +188,91 @@ impl ChordAngle {
         }
     }
 
+    /// [`ChordAngle::eval`] for a single clothoid piece, where everything is in closed form:
+    /// D = 2θd, so Λ = (1 − e^{−2μ})/(2θd), the curvature at the far end is e^{−μ} (ρ = 1 at
+    /// the start) and the chord is a difference of Fresnel integrals. `None` where the
+    /// closed form would lose precision (near the circle), for the general path.
+    #[inline]
+    fn eval_clothoid(&self, mu: f64) -> Option<Eval> {
+        let end_dir = self.clothoid?;
+        let theta_d = self.theta[1];
+        let kappa = (-mu).exp(); // at the far end
+        let w = kappa * kappa; // ρ^(α−1)
+        let lambda = -(-2.0 * mu).exp_m1() / (2.0 * theta_d);
+        // (Also `None` for a NaN.)
+        (lambda * theta_d >= CLOTHOID_MIN_LAMBDA_TURN).then_some(())?;
+        let far = ClothoidEnd {
+            kappa,
+            rho: 1.0 / kappa,
+        };
+        let start = ClothoidEnd {
+            kappa: 1.0,
+            rho: 1.0,
+        };
+        let integral = clothoid_arc(
+            lambda,
+            [start, far],
+            [Complex::new(1.0, 0.0), end_dir],
+            true,
+        );
+        let p = integral.value;
+        let form = StandardForm {
+            alpha: -1.0,
+            lambda,
+        };
+        let end = Station {
+            theta: theta_d,
+            // s = (1 − κ)/Λ = 2θd/(1 + κ), as 2Λθd = 1 − κ².
+            s: 2.0 * theta_d / (1.0 + kappa),
+            ln_rho: mu,
+        };
+        let start = Piece {
+            form,
+            start: Station::REFERENCE,
+            end: Station::REFERENCE,
+            chord: Complex::ZERO,
+        };
+        let piece = Piece {
+            form,
+            start: Station::REFERENCE,
+            end,
+            chord: p,
+        };
+        let phi = p.arg().rem_euclid(std::f64::consts::TAU);
+        Some(Eval {
+            g: phi - self.theta_e,
+            slope: integral.d_lambda.div(p).im * w / theta_d,
+            pieces: Pieces {
+                parts: [start, piece],
+            },
+        })
+    }
+
     /// g and dg/dμ at μ = 0 (both pieces arcs of the unit circle) in closed form, and a
     /// first iterate from a saturating Padé model of g at μ = 0: near the circle
     /// ρ = 1 + Λψ + (2 − α)Λ²ψ²/2 + (2 − α)(3 − 2α)Λ³ψ³/6 + O(Λ⁴), so the derivatives of P
     /// in Λ are integrals of ψⁿe^{iψ}.
     fn at_circle(&self) -> (f64, f64, f64) {
         let (a, b) = (-self.theta[0], self.theta[1]);
+        // e^{iψ} at the three places the antiderivatives are taken (each once).
+        let (ea, eb) = (
+            Complex::cis(a),
+            self.clothoid.unwrap_or_else(|| Complex::cis(b)),
+        );
+        let cis = |x: f64| {
+            if x == 0.0 {
+                Complex::new(1.0, 0.0)
+            } else if x == a {
+                ea
+            } else {
+                eb
+            }
+        };
         // Antiderivatives of ψⁿe^{iψ}, n = 0..3.
-        let p0 = |x: f64| Complex::cis(x).mul_i().scale(-1.0);
-        let p1 = |x: f64| Complex::cis(x) * Complex::new(1.0, -x);
-        let p2 = |x: f64| Complex::cis(x) * Complex::new(2.0 * x, 2.0 - x * x);
-        let p3 = |x: f64| Complex::cis(x) * Complex::new(3.0 * x * x - 6.0, 6.0 * x - x * x * x);
+        let p0 = |x: f64| cis(x).mul_i().scale(-1.0);
+        let p1 = |x: f64| cis(x) * Complex::new(1.0, -x);
+        let p2 = |x: f64| cis(x) * Complex::new(2.0 * x, 2.0 - x * x);
+        let p3 = |x: f64| cis(x) * Complex::new(3.0 * x * x - 6.0, 6.0 * x - x * x * x);
         // ∂ⁿP/∂Λⁿ at Λ = 0: ρ = 1 + Λψ + (2−α)Λ²ψ²/2 + (2−α)(3−2α)Λ³ψ³/6 + O(Λ⁴).
         let piecewise = |f: &dyn Fn(f64) -> Complex, c: &dyn Fn(f64) -> f64| {
             (f(0.0) - f(a)).scale(c(self.alpha[0])) + (f(b) - f(0.0)).scale(c(self.alpha[1]))

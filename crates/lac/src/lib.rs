@@ -67,6 +67,7 @@ mod chord_angle;
 mod compound;
 mod curve;
 mod error;
+mod fresnel;
 mod gauss;
 mod lcg;
 mod monotone;

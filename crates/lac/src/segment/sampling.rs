@@ -193,14 +193,21 @@ impl Segment {
         let mut z = self.offset_of(&nodes[0].st);
         let mut out = Vec::with_capacity(nodes.len());
         let mut prev = &nodes[0];
-        let mut prev_jet = self.jet_of(prev);
+        // (Not needed when the only other sample is the last point.)
+        let mut prev_jet = None;
         out.push(self.sample_from(prev, z));
         for node in &nodes[1..] {
+            if node.st == self.last {
+                // The last point's offset is the solved chord: nothing to integrate.
+                out.push(self.sample_from(node, self.chord));
+                continue;
+            }
             let jet = self.jet_of(node);
-            z += self.hermite(prev, node, &prev_jet, &jet, 0);
+            let from = *prev_jet.get_or_insert_with(|| self.jet_of(prev));
+            z += self.hermite(prev, node, &from, &jet, 0);
             out.push(self.sample_from(node, z));
             prev = node;
-            prev_jet = jet;
+            prev_jet = Some(jet);
         }
         out
     }

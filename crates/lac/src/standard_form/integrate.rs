@@ -64,6 +64,8 @@ pub(crate) struct NodeCache {
     theta: (f64, f64),
     cis8: OnceCell<Vec<Complex>>,
     cis16: OnceCell<Vec<Complex>>,
+    /// e^{ia} and e^{ib}, for the clothoid's closed form.
+    ends: OnceCell<[Complex; 2]>,
 }
 
 impl NodeCache {
@@ -72,7 +74,14 @@ impl NodeCache {
             theta: (a, b),
             cis8: OnceCell::new(),
             cis16: OnceCell::new(),
+            ends: OnceCell::new(),
         }
+    }
+
+    fn ends(&self) -> [Complex; 2] {
+        *self
+            .ends
+            .get_or_init(|| [Complex::cis(self.theta.0), Complex::cis(self.theta.1)])
     }
 
     fn table(&self, rule: &[(f64, f64)]) -> &[Complex] {
@@ -112,6 +121,27 @@ pub(crate) fn integrate_with(
     if b.theta <= a.theta {
         return Integral::default();
     }
+    if form.alpha == -1.0 {
+        let width = b.theta - a.theta;
+        if width >= CLOTHOID_MIN_TURN && form.lambda * width >= CLOTHOID_MIN_LAMBDA_TURN {
+            let ends = match cache.filter(|c| c.theta == (a.theta, b.theta)) {
+                Some(c) => c.ends(),
+                None => [Complex::cis(a.theta), Complex::cis(b.theta)],
+            };
+            return clothoid(form.lambda, a, b, ends, derivative);
+        }
+    }
+    general(form, a, b, derivative, cache)
+}
+
+/// The series near the singular point and Gauss panels elsewhere, for every α.
+fn general(
+    form: &StandardForm,
+    a: &Station,
+    b: &Station,
+    derivative: bool,
+    cache: Option<&NodeCache>,
+) -> Integral {
     let am1 = form.alpha - 1.0;
     let bl = am1.abs() * form.lambda;
     if bl > 0.0 && bl.is_finite() {
@@ -141,6 +171,76 @@ pub(crate) fn integrate_with(
         }
     }
     gauss_panels(form, a, b, derivative, cache)
+}
+
+/// The clothoid's closed form is used for arcs that turn by at least this much (radians):
+/// it is a difference of two terms of size ρ, which loses the factor ρ/|P| ≈ 1/turning of
+/// relative precision.
+pub(crate) const CLOTHOID_MIN_TURN: f64 = 0.05;
+/// … and with Λ × turning at least this: ∂P/∂Λ is formed with a cancellation of relative
+/// size (Λ × turning)², which must leave the Newton steps their quadratic convergence.
+pub(crate) const CLOTHOID_MIN_LAMBDA_TURN: f64 = 0.01;
+
+/// ∫ₐᵇ ρ e^{iψ} dψ on the clothoid (α = −1, Λ > 0, both stations before the inflection at
+/// ψ = 1/(2Λ)) in closed form, `ends` = [e^{ia}, e^{ib}].
+///
+/// With κ = √(1 − 2Λψ) and t the arc length left to the inflection (κ = Λt), ψ =
+/// 1/(2Λ) − Λt²/2, so P = e^{i/(2Λ)} √(π/Λ) conj(F(x_a) − F(x_b)) with x = κ/√(πΛ) and F the
+/// Fresnel integral (see `crate::fresnel`). Written with the auxiliary functions,
+/// e^{i/(2Λ)} e^{−iπx²/2} = e^{iψ} and
+///
+/// ```text
+/// P = √(π/Λ) [H(x_b) e^{ib} − H(x_a) e^{ia}],   H = g − i f,
+/// ```
+///
+/// whose terms have the size of ρ at their end. From H′(x) = iπxH − 1 and
+/// dx/dΛ = −1/(2πΛ²x): ∂P/∂Λ = (ρ_b e^{ib} − ρ_a e^{ia} − (i + Λ)P)/(2Λ²).
+fn clothoid(
+    lambda: f64,
+    a: &Station,
+    b: &Station,
+    ends: [Complex; 2],
+    derivative: bool,
+) -> Integral {
+    let end = |st: &Station| ClothoidEnd {
+        kappa: (-st.ln_rho).exp(),
+        rho: if derivative { st.ln_rho.exp() } else { 0.0 },
+    };
+    clothoid_arc(lambda, [end(a), end(b)], ends, derivative)
+}
+
+/// Curvature and radius of curvature at one end of a clothoid arc (the radius is needed
+/// only for ∂/∂Λ).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ClothoidEnd {
+    pub(crate) kappa: f64,
+    pub(crate) rho: f64,
+}
+
+/// [`clothoid`] from the curvatures (and radii) at the ends, `ends` = [e^{ia}, e^{ib}];
+/// used directly by the segment solver, which knows them in closed form. Requires
+/// b − a ≥ [`CLOTHOID_MIN_TURN`] and Λ(b − a) ≥ [`CLOTHOID_MIN_LAMBDA_TURN`] for full
+/// accuracy.
+#[inline]
+pub(crate) fn clothoid_arc(
+    lambda: f64,
+    [at_a, at_b]: [ClothoidEnd; 2],
+    [ea, eb]: [Complex; 2],
+    derivative: bool,
+) -> Integral {
+    let root = (std::f64::consts::PI * lambda).sqrt();
+    let h = |kappa: f64| {
+        let (f, g) = crate::fresnel::aux(kappa / root);
+        Complex::new(g, -f)
+    };
+    let value = (eb * h(at_b.kappa) - ea * h(at_a.kappa)).scale(std::f64::consts::PI / root);
+    let d_lambda = if derivative {
+        let ends = eb.scale(at_b.rho) - ea.scale(at_a.rho);
+        (ends - value.mul_i() - value.scale(lambda)).scale(0.5 / (lambda * lambda))
+    } else {
+        Complex::ZERO
+    };
+    Integral { value, d_lambda }
 }
 
 /// The power series about the singular point between distances `sigma_near < sigma_far`.
@@ -322,6 +422,55 @@ mod tests {
             }
         }
         (v, d)
+    }
+
+    #[test]
+    fn the_clothoid_closed_form_agrees_with_the_series_and_panels() {
+        let mut worst: [f64; 2] = [0.0; 2];
+        let mut count = 0;
+        for &(a, b) in &[
+            (0.0f64, 0.05f64),
+            (0.0, 0.3),
+            (0.0, 1.0),
+            (0.0, 2.5),
+            (0.0, 3.1),
+            (-2.0, 0.0),
+            (-0.7, -0.1),
+        ] {
+            for i in 0..80 {
+                let mu = 0.005 * 1.15f64.powi(i);
+                // Λ from near the circle to the inflection just past b (or 0 for b = 0).
+                let reach = b.max(0.5);
+                let lambda = mu * expm1_ratio(-2.0 * mu) / reach;
+                let form = StandardForm {
+                    alpha: -1.0,
+                    lambda,
+                };
+                let (Some(sa), Some(sb)) = (
+                    form.advance_theta(&Station::REFERENCE, a),
+                    form.advance_theta(&Station::REFERENCE, b),
+                ) else {
+                    continue;
+                };
+                if lambda * (b - a) < CLOTHOID_MIN_LAMBDA_TURN {
+                    continue;
+                }
+                let ends = [Complex::cis(a), Complex::cis(b)];
+                let got = clothoid(lambda, &sa, &sb, ends, true);
+                let want = general(&form, &sa, &sb, true, None);
+                let err = (got.value - want.value).norm() / want.value.norm();
+                let derr = (got.d_lambda - want.d_lambda).norm() / want.d_lambda.norm();
+                worst = [worst[0].max(err), worst[1].max(derr)];
+                count += 1;
+                assert!(
+                    err < 1e-14 * (0.3 / (b - a)).max(1.0),
+                    "[{a}, {b}] Λ {lambda}: value {err:e}"
+                );
+                assert!(derr < 1e-9, "[{a}, {b}] Λ {lambda}: d/dΛ {derr:e}");
+            }
+        }
+        assert!(count > 300);
+        eprintln!("clothoid closed form against the series and panels ({count}): {worst:?}");
     }
 
     #[test]

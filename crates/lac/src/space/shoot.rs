@@ -135,6 +135,34 @@ pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep: Checkpoints) -> Option<
     None
 }
 
+/// Integrate `form` from s = 0 to `s_end`: the state there and, with
+/// [`Checkpoints::Keep`], the states at the starts of the steps (the same steps [`shoot`]
+/// takes). `None` when `s_end` is not inside the valid range, beyond seed 003's 2π guard,
+/// or further than [`MAX_STEPS`] steps.
+pub(crate) fn integrate_to(form: &SpaceForm, s_end: f64, keep: Checkpoints) -> Option<Shot> {
+    let (_, s_max) = form.s_range();
+    if !(s_end > 0.0 && s_end < s_max && within_guard(form, s_end)) {
+        return None;
+    }
+    let mut state = State::start();
+    let mut checkpoints = Vec::new();
+    for _ in 0..MAX_STEPS {
+        let expansion = Expansion::new(form, &state);
+        let h = expansion.step_size();
+        if h <= 1e-12 * state.s.abs().max(1.0) {
+            return None;
+        }
+        if keep == Checkpoints::Keep {
+            checkpoints.push(state);
+        }
+        if state.s + h >= s_end {
+            return finish(form, &expansion, s_end - state.s, checkpoints);
+        }
+        state = expansion.state_at(h);
+    }
+    None
+}
+
 /// The crossing inside a step, between probes `a` (g = `ga`) and `b` (g = `gb`) of opposite
 /// signs: the crate's safeguarded Newton ([`find_root`]) on the step's series, from the
 /// probes' secant, with g′ = cos θ0 (x·t)/|x| − t·e1 from the series' tangent, to 1e-16 of

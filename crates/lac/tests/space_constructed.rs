@@ -143,3 +143,42 @@ fn constructed_inputs_are_solved_and_verified() {
         "solved {solved}/{total}"
     );
 }
+
+/// Dragging: P3 moved in 20 small steps (1/500 of the chord each), each solve warm-started
+/// from the last, gives a segment at every step that reproduces its ends, and the drawn curve
+/// moves only a little between steps (the warm start follows one branch).
+#[test]
+fn warm_start_follows_a_drag_continuously() {
+    let (mut followed, mut steps) = (0, 0);
+    for case in generate(7, 40) {
+        let Ok(mut seg) = SpaceSegment::from_control_points(case.points, case.shape) else {
+            continue;
+        };
+        let mut p = case.points;
+        let chord = p[3].distance(p[0]);
+        let dir = (p[1] - p[0]).cross(p[3] - p[2]).normalize();
+        for _ in 0..20 {
+            p[3] += dir * (chord / 500.0);
+            // A drag may leave the drawable region; the drag ends there.
+            let Ok(next) = SpaceSegment::from_control_points_near(p, case.shape, &seg) else {
+                break;
+            };
+            steps += 1;
+            let (pos, tan) = check_ends(&next, p);
+            assert!(pos < 1e-9 && tan < 1e-9, "{pos:e} {tan:e}");
+            // The drawn curve moves about as much as the point did (no jump to another
+            // branch): samples at equal fractions of the length stay within 1/50 of the chord.
+            let (a, b) = (seg.sample(17).unwrap(), next.sample(17).unwrap());
+            let jump = a
+                .iter()
+                .zip(&b)
+                .fold(0.0f64, |m, (f, g)| m.max(f.point.distance(g.point)))
+                / chord;
+            assert!(jump < 0.02, "jump {jump}: {}", describe(&case));
+            seg = next;
+        }
+        followed += 1;
+    }
+    eprintln!("{followed} drags, {steps} warm-started steps");
+    assert!(followed >= 35 && steps >= 600, "followed {followed}, {steps} steps");
+}

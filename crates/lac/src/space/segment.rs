@@ -18,10 +18,10 @@ pub const PLANAR_TOLERANCE: f64 = 1e-9;
 const START_LAMBDAS: [f64; 2] = [0.0, 1.0];
 
 /// The Λ of the scans that seed the free-end fallback ([`Problem::attempt_free_end`]).
-const FREE_END_LAMBDAS: [f64; 3] = [0.0, 0.3, 1.0];
+const FREE_END_LAMBDAS: [f64; 4] = [0.0, 0.15, 0.4, 1.0];
 
 /// How many of the fallback's starts (best first) are tried.
-const FREE_END_STARTS: usize = 8;
+const FREE_END_STARTS: usize = 12;
 
 /// A solution whose tangent and binormal turn by at most this much (3π/2) is accepted at
 /// once; beyond it (nearly a loop) the other starts are tried for a gentler one.
@@ -177,6 +177,14 @@ struct Solution {
     ln_nu: f64,
 }
 
+/// A previous segment's standard form and end, to start from.
+#[derive(Clone, Copy, Debug)]
+struct WarmStart {
+    solution: Solution,
+    s_end: f64,
+    reversed: bool,
+}
+
 /// A converged solution and the larger of the total turnings θ, φ of its tangent and
 /// binormal.
 #[derive(Clone, Debug)]
@@ -195,7 +203,63 @@ impl SpaceSegment {
     /// along the chord ([`Error::CollinearPoints`]), a coplanar S ([`Error::InflectedPolygon`]),
     /// and [`Error::NotDrawable`]: [`NotDrawable::TorsionTooLarge`] with the largest Ω that
     /// works when a smaller Ω would, [`NotDrawable::NoSpaceSegment`] when none does.
+    ///
+    /// Which segment, when several fit the ends (they differ in Λ, ν and length): the
+    /// search is deterministic, so the same input always gives the same segment, in this
+    /// order: (1) seed 003's cone search (the end is the first crossing of the cone about
+    /// the start tangent, the second when |θ2| > π/2) from near-helix starts (Λ = 0, then
+    /// Λ = 1, ν upward from about tan θ0); its first segment whose tangent and binormal turn
+    /// by at most 3π/2 is returned; (2) otherwise the free-end search (the end s a third
+    /// unknown, starts from ν scans on the first three crossings' cones at Λ = 0, 0.15,
+    /// 0.4, 1, best residual first), and the segment that turns least among (1) and (2);
+    /// (3) when Ω itself is out of reach, the segment at Ω = 0 followed continuously in Ω
+    /// for Ω_max. Segments found by (1) move continuously with the input while the
+    /// near-helix start stays in their basin; for dragging, where the answer should follow
+    /// the previous one, use [`SpaceSegment::from_control_points_near`].
     pub fn from_control_points(points: [Vec3; 4], shape: SpaceShape) -> Result<SpaceSegment> {
+        Self::solve(points, shape, None)
+    }
+
+    /// [`SpaceSegment::from_control_points`] with a warm start: first Newton's method on
+    /// (Λ, ln ν, s) from `previous`'s standard form and length (same α, β, type and end
+    /// order), which follows the segment continuously as the points or Ω move a little (an
+    /// editor's drag) and takes a few integrations instead of a search; the cold search
+    /// when that does not converge or `previous` does not match (planar, other slopes or
+    /// type, the other end first).
+    pub fn from_control_points_near(
+        points: [Vec3; 4],
+        shape: SpaceShape,
+        previous: &SpaceSegment,
+    ) -> Result<SpaceSegment> {
+        let start = match &previous.solved {
+            Solved::Space {
+                form,
+                s_end,
+                transform,
+                ..
+            } if form.alpha() == shape.alpha
+                && form.beta() == shape.beta
+                && form.torsion_type() == shape.torsion =>
+            {
+                Some(WarmStart {
+                    solution: Solution {
+                        lambda: form.lambda(),
+                        ln_nu: form.nu().ln(),
+                    },
+                    s_end: *s_end,
+                    reversed: transform.reversed,
+                })
+            }
+            _ => None,
+        };
+        Self::solve(points, shape, start)
+    }
+
+    fn solve(
+        points: [Vec3; 4],
+        shape: SpaceShape,
+        warm: Option<WarmStart>,
+    ) -> Result<SpaceSegment> {
         for p in &points {
             for c in p.to_array() {
                 finite("control point coordinate", c)?;
@@ -244,7 +308,7 @@ impl SpaceSegment {
         let solved = if off_plane < PLANAR_TOLERANCE {
             planar(points, alpha, theta2)?
         } else {
-            solve_space(points, shape, [theta0, theta1, theta2])?
+            solve_space(points, shape, [theta0, theta1, theta2], warm)?
         };
         let arc_length = match &solved {
             Solved::Space {
@@ -546,7 +610,12 @@ fn planar(points: [Vec3; 4], alpha: f64, theta2: f64) -> Result<Solved> {
 }
 
 /// Solve the space problem: swap the ends if θ0 < θ1, find (Λ, ν), build the similarity.
-fn solve_space(points: [Vec3; 4], shape: SpaceShape, angles: [f64; 3]) -> Result<Solved> {
+fn solve_space(
+    points: [Vec3; 4],
+    shape: SpaceShape,
+    angles: [f64; 3],
+    warm: Option<WarmStart>,
+) -> Result<Solved> {
     let [theta0, theta1, _] = angles;
     let reversed = theta0 < theta1;
     let [p0, p1, p2, p3] = if reversed {
@@ -575,7 +644,13 @@ fn solve_space(points: [Vec3; 4], shape: SpaceShape, angles: [f64; 3]) -> Result
         crossing,
     };
     let omega = shape.omega;
-    let found = problem.solve_with_omega(omega)?;
+    let warm = warm
+        .filter(|w| w.reversed == reversed)
+        .and_then(|w| problem.newton3(w.solution, w.s_end, omega));
+    let found = match warm {
+        Some(found) => found,
+        None => problem.solve_with_omega(omega)?,
+    };
     let form = problem.form(&found.solution, omega);
     // The solver's own check: the end it found, integrated once more with its checkpoints,
     // meets the end angles.

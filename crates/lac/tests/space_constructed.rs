@@ -180,5 +180,8 @@ fn warm_start_follows_a_drag_continuously() {
         followed += 1;
     }
     eprintln!("{followed} drags, {steps} warm-started steps");
-    assert!(followed >= 35 && steps >= 600, "followed {followed}, {steps} steps");
+    assert!(
+        followed >= 35 && steps >= 600,
+        "followed {followed}, {steps} steps"
+    );
 }

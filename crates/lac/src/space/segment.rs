@@ -4,7 +4,7 @@ use kurbo::Point;
 
 use super::family::{SpaceForm, SpaceFormParams, TorsionType};
 use super::mat3::Mat3;
-use super::shoot::{end_angles, integrate_to, shoot, Checkpoints, Cone, Shot};
+use super::shoot::{end_angles, integrate_to, shoot, shoot_each, Checkpoints, Cone, Shot};
 use super::taylor::{Expansion, State};
 use super::Frame;
 use crate::error::{finite, Error, NotDrawable, Result};
@@ -767,12 +767,18 @@ impl Problem {
     /// first three crossings, best (2-D residual) first.
     fn attempt_free_end(&self, omega: f64) -> Option<Converged> {
         let mut starts = Vec::new();
-        for crossing in 1..=3 {
-            let problem = Problem { crossing, ..*self };
-            for lambda in FREE_END_LAMBDAS {
-                let mut scan = Scan::default();
-                problem.scan(omega, lambda, &mut scan, ScanUntil::End);
-                starts.append(&mut scan.defined);
+        let base = self.target.theta0.min(1.4).tan().ln() - 0.5 * std::f64::consts::LN_10;
+        let cone = Cone::new(self.target.theta0, 3);
+        for lambda in FREE_END_LAMBDAS {
+            for k in 0..16 {
+                let p = Solution {
+                    lambda,
+                    ln_nu: base + f64::from(k) * 0.25 * std::f64::consts::LN_10,
+                };
+                for shot in shoot_each(&self.form(&p, omega), &cone) {
+                    let r = self.target.residual(&shot);
+                    starts.push((r[0].hypot(r[1]), p, shot.end.s));
+                }
             }
         }
         starts.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -833,7 +839,7 @@ impl Problem {
                 .max(1.0);
             d = d.map(|x| x / limit);
             let mut accepted = false;
-            for _ in 0..30 {
+            for _ in 0..12 {
                 let mut lambda = p.lambda + d[0];
                 if lambda < 0.0 {
                     lambda = 0.1 * p.lambda;
@@ -1041,7 +1047,7 @@ impl Problem {
             dl /= limit;
             dn /= limit;
             let mut accepted = false;
-            for _ in 0..30 {
+            for _ in 0..12 {
                 let mut lambda = p.lambda + dl;
                 if lambda < 0.0 {
                     lambda = 0.1 * p.lambda;

@@ -19,7 +19,7 @@ mod common;
 use common::{median_per_call, Rng};
 
 #[path = "../tests/common/space_inputs.rs"]
-#[allow(dead_code, unreachable_pub)]
+#[allow(unreachable_pub)]
 mod space_inputs;
 
 /// One random input: points, Ω and type.

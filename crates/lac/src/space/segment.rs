@@ -20,12 +20,6 @@ const START_LAMBDAS: [f64; 2] = [0.0, 1.0];
 /// The Λ of the scans that seed the free-end fallback ([`Problem::attempt_free_end`]).
 const FREE_END_LAMBDAS: [f64; 4] = [0.0, 0.15, 0.4, 1.0];
 
-/// Newton gives up on a start whose residual is still above [`STALL_RESIDUAL`] (radians)
-/// after this many iterations.
-const STALL_ITERATIONS: usize = 8;
-/// See [`STALL_ITERATIONS`].
-const STALL_RESIDUAL: f64 = 1e-2;
-
 /// How many of the fallback's starts (best first) are tried.
 const FREE_END_STARTS: usize = 12;
 
@@ -803,7 +797,7 @@ impl Problem {
         };
         let mut r = eval(&p, s_end)?;
         let (mut slow, mut last) = (0, f64::INFINITY);
-        for iteration in 0..40 {
+        for _ in 0..40 {
             let size = r.iter().fold(0.0f64, |m, x| m.max(x.abs()));
             if size < RESIDUAL_TOLERANCE {
                 let form = self.form(&p, omega);
@@ -818,9 +812,7 @@ impl Problem {
                 });
             }
             slow = if size > 0.7 * last { slow + 1 } else { 0 };
-            // Still far after STALL_ITERATIONS: a start outside the root's basin (Newton
-            // from inside it is quadratic well before that); give up on it early.
-            if slow >= 4 || (iteration >= STALL_ITERATIONS && size > STALL_RESIDUAL) {
+            if slow >= 4 {
                 return None;
             }
             last = size;
@@ -1003,7 +995,7 @@ impl Problem {
         let mut r = self.target.residual(&shot);
         let mut slow = 0;
         let mut last = f64::INFINITY;
-        for iteration in 0..60 {
+        for _ in 0..60 {
             let size = r[0].abs().max(r[1].abs());
             if size < RESIDUAL_TOLERANCE {
                 let form = self.form(&p, omega);
@@ -1020,9 +1012,7 @@ impl Problem {
             // Newton converges fast near a root; steady crawling means a dead end (the
             // edge of the region where the curve meets the cone).
             slow = if size > 0.7 * last { slow + 1 } else { 0 };
-            // Still far after STALL_ITERATIONS: a start outside the root's basin (Newton
-            // from inside it is quadratic well before that); give up on it early.
-            if slow >= 4 || (iteration >= STALL_ITERATIONS && size > STALL_RESIDUAL) {
+            if slow >= 4 {
                 return None;
             }
             last = size;

@@ -408,6 +408,28 @@ fn coplanar_points_give_the_planar_segment_with_a_note() {
         );
     }
     assert_samples_span_the_points(&tilted, control_points(TILTED_PLANE), 65);
+    assert!(v["note"]
+        .as_str()
+        .unwrap()
+        .contains("beta and omega do not apply"));
+}
+
+/// Coplanar points whose tangents turn by 180°: the planar segment (through the tangents'
+/// intersection) does not exist, and the message says so with the angles it measures.
+#[test]
+fn a_coplanar_u_turn_is_refused_with_the_turning_it_has() {
+    let run = space(
+        "0,0,0 3,0,0 3,3,0 0,3,0",
+        &["--alpha", "0.5", "--beta", "0", "--omega", "0.3"],
+    );
+    let message = assert_failure(&run, 3, "not_drawable");
+    assert!(message.contains("coplanar"), "{message}");
+    assert!(message.contains("beta and omega do not apply"), "{message}");
+    assert!(message.contains("turn by 180.0000 deg"), "{message}");
+    assert!(
+        message.contains("90.0000 deg with the start tangent"),
+        "{message}"
+    );
 }
 
 #[test]

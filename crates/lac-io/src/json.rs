@@ -1221,7 +1221,7 @@ pub type Xyz = [f64; 3];
 /// The `"note"` of a planar (coplanar-points) space result.
 pub const PLANAR_NOTE: &str = "the four control points are coplanar, so the planar \
      log-aesthetic segment through the first point, the tangents' intersection and the last \
-     point is drawn (torsion 0)";
+     point is drawn (torsion 0; beta and omega do not apply to a planar curve)";
 
 /// A log-aesthetic space curve segment from four control points (seed 003 §4):
 /// `{"points":[[x,y,z]×4],"alpha":A,"beta":B,"omega":W,"type":1}` (`omega` 0 and `type` 1

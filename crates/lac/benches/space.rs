@@ -1,6 +1,10 @@
-//! Benchmark for the promise of the space-curve issue: a segment solve from four points
-//! ≤ 500 µs median over a seeded random set of solvable inputs, per (α, β) ∈ {−1, 0, 1}²,
-//! with the share of the random inputs that are solved (printed before the timings).
+//! Benchmarks for the space-curve issues: a segment solve from four points ≤ 300 µs median
+//! and a refusal ≤ 500 µs median (≤ 5 ms worst), over a seeded random set per (α, β) ∈
+//! {−1, 0, 1}², with the share of the random inputs that are solved and the slowest refusal
+//! (printed before the timings); a solve over inputs built from known curves
+//! (`tests/common/space_inputs.rs`), cold and warm-started from the segment of a slightly
+//! different input (an editor's drag); the README's points with Ω = 5 (refused, Ω_max
+//! reported); and the coplanar points that turn 180° (refused at once).
 //!
 //! Inputs use seed 003's placement (P0 = (−1, 0, 0), P3 = (1, 0, 0)): θ0 and θ1 uniform in
 //! [0.1, 1.4] rad, |θ2| uniform in [0.05, π − 0.05] with either sign, legs |P1 − P0| and
@@ -9,9 +13,14 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use lac::{SpaceSegment, SpaceShape, TorsionType, Vec3};
 use std::hint::black_box;
+use std::time::Instant;
 
 mod common;
 use common::{median_per_call, Rng};
+
+#[path = "../tests/common/space_inputs.rs"]
+#[allow(unreachable_pub)]
+mod space_inputs;
 
 /// One random input: points, Ω and type.
 type Input = ([Vec3; 4], f64, TorsionType);
@@ -62,11 +71,21 @@ fn bench_solve(c: &mut Criterion) {
             };
             let (solvable, failing): (Vec<Input>, Vec<Input>) =
                 inputs.iter().partition(|i| solve(i).is_ok());
+            let slowest = failing
+                .iter()
+                .map(|i| {
+                    let clock = Instant::now();
+                    black_box(solve(i).unwrap_err());
+                    clock.elapsed()
+                })
+                .max()
+                .unwrap_or_default();
             eprintln!(
-                "alpha {alpha:>2} beta {beta:>2}: solved {}/{} ({:.0}%)",
+                "alpha {alpha:>2} beta {beta:>2}: solved {}/{} ({:.0}%), slowest refusal {:?}",
                 solvable.len(),
                 inputs.len(),
-                100.0 * solvable.len() as f64 / inputs.len() as f64
+                100.0 * solvable.len() as f64 / inputs.len() as f64,
+                slowest
             );
             let id = format!("{alpha}/{beta}");
             group.bench_with_input(BenchmarkId::new("solve", &id), &solvable, |b, set| {
@@ -90,9 +109,72 @@ fn bench_solve(c: &mut Criterion) {
     group.finish();
 }
 
+fn bench_constructed(c: &mut Criterion) {
+    let mut group = c.benchmark_group("space_constructed");
+    let cases = space_inputs::generate(11, 216);
+    // Each solvable case with its segment, and its P3 moved by 1/500 of the chord across
+    // the tangents (one step of a drag) for the warm start.
+    let mut solved = Vec::new();
+    for case in &cases {
+        if let Ok(seg) = SpaceSegment::from_control_points(case.points, case.shape) {
+            let mut p = case.points;
+            let dir = (p[1] - p[0]).cross(p[3] - p[2]).normalize();
+            p[3] += dir * (p[3].distance(p[0]) / 500.0);
+            solved.push((case.points, p, case.shape, seg));
+        }
+    }
+    eprintln!("constructed: solved {}/{}", solved.len(), cases.len());
+    group.bench_function("cold", |b| {
+        b.iter_custom(|iters| {
+            median_per_call(iters, &solved, |(p, _, shape, _)| {
+                black_box(SpaceSegment::from_control_points(*p, *shape).unwrap());
+            })
+        })
+    });
+    group.bench_function("warm_drag_step", |b| {
+        b.iter_custom(|iters| {
+            median_per_call(iters, &solved, |(_, moved, shape, seg)| {
+                black_box(SpaceSegment::from_control_points_near(*moved, *shape, seg).ok());
+            })
+        })
+    });
+    // The README's points with a too-large Ω, and coplanar points turning 180°.
+    let readme = [
+        Vec3::new(0.0, 0.0, 0.0),
+        Vec3::new(3.0, 0.0, 0.0),
+        Vec3::new(3.0, 3.0, 1.5),
+        Vec3::new(0.0, 3.0, 3.0),
+    ];
+    let u_turn = [
+        Vec3::new(0.0, 0.0, 0.0),
+        Vec3::new(3.0, 0.0, 0.0),
+        Vec3::new(3.0, 3.0, 0.0),
+        Vec3::new(0.0, 3.0, 0.0),
+    ];
+    for (name, p, omega) in [
+        ("readme_omega_5", readme, 5.0),
+        ("u_turn_coplanar", u_turn, 0.3),
+    ] {
+        let shape = SpaceShape {
+            alpha: 0.5,
+            beta: 0.0,
+            omega,
+            torsion: TorsionType::One,
+        };
+        eprintln!(
+            "{name}: {}",
+            SpaceSegment::from_control_points(p, shape).unwrap_err()
+        );
+        group.bench_function(name, |b| {
+            b.iter(|| black_box(SpaceSegment::from_control_points(black_box(p), shape)).ok())
+        });
+    }
+    group.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(20);
-    targets = bench_solve
+    targets = bench_solve, bench_constructed
 }
 criterion_main!(benches);

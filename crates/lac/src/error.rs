@@ -325,6 +325,15 @@ pub enum NotDrawable {
         /// The Ω asked for.
         omega: f64,
     },
+    /// The four control points are coplanar (no space segment: ν would be infinite) and the
+    /// planar segment through the first point, the tangents' intersection and the last point
+    /// does not exist: the tangents do not meet ahead of both ends.
+    PlanarTangentsApart {
+        /// Angle between the start and end tangent directions, radians (0 to π).
+        turning: f64,
+        /// Angle from the start tangent to the chord P3 − P0, radians (0 to π).
+        chord_angle: f64,
+    },
 }
 
 impl fmt::Display for NotDrawable {
@@ -422,6 +431,19 @@ impl fmt::Display for NotDrawable {
                  points (omega = {omega}{}); make the end angles to the chord more alike \
                  (theta0 close to theta1), or use alpha and beta nearer 0",
                 if omega > 0.0 { ", nor with omega = 0" } else { "" }
+            ),
+            NotDrawable::PlanarTangentsApart {
+                turning,
+                chord_angle,
+            } => write!(
+                f,
+                "the four points are coplanar, so only a planar segment could fit (beta and \
+                 omega do not apply), but the tangents turn by {:.4} deg and the chord makes {:.4} \
+                 deg with the start tangent: their lines do not meet ahead of both ends (the \
+                 planar segment needs a turning below 180 deg with the chord between the \
+                 tangents); move P1 or P2 so that the tangent lines meet",
+                turning.to_degrees(),
+                chord_angle.to_degrees()
             ),
         }
     }

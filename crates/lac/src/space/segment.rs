@@ -4,7 +4,7 @@ use kurbo::Point;
 
 use super::family::{SpaceForm, SpaceFormParams, TorsionType};
 use super::mat3::Mat3;
-use super::shoot::{end_angles, shoot, Checkpoints, Cone, Shot};
+use super::shoot::{end_angles, integrate_to, shoot, shoot_each, Checkpoints, Cone, Shot};
 use super::taylor::{Expansion, State};
 use super::Frame;
 use crate::error::{finite, Error, NotDrawable, Result};
@@ -16,6 +16,12 @@ pub const PLANAR_TOLERANCE: f64 = 1e-9;
 
 /// The Λ of the start scans: near-helix first, then a spiral.
 const START_LAMBDAS: [f64; 2] = [0.0, 1.0];
+
+/// The Λ of the scans that seed the free-end fallback ([`Problem::attempt_free_end`]).
+const FREE_END_LAMBDAS: [f64; 4] = [0.0, 0.15, 0.4, 1.0];
+
+/// How many of the fallback's starts (best first) are tried.
+const FREE_END_STARTS: usize = 12;
 
 /// A solution whose tangent and binormal turn by at most this much (3π/2) is accepted at
 /// once; beyond it (nearly a loop) the other starts are tried for a gentler one.
@@ -165,10 +171,18 @@ impl Target {
 }
 
 /// One converged standard form.
-#[derive(Clone, Debug)]
+#[derive(Clone, Copy, Debug)]
 struct Solution {
     lambda: f64,
     ln_nu: f64,
+}
+
+/// A previous segment's standard form and end, to start from.
+#[derive(Clone, Copy, Debug)]
+struct WarmStart {
+    solution: Solution,
+    s_end: f64,
+    reversed: bool,
 }
 
 /// A converged solution and the larger of the total turnings θ, φ of its tangent and
@@ -177,6 +191,8 @@ struct Solution {
 struct Converged {
     solution: Solution,
     turning: f64,
+    /// The standard-form end.
+    s_end: f64,
 }
 
 impl SpaceSegment {
@@ -187,7 +203,63 @@ impl SpaceSegment {
     /// along the chord ([`Error::CollinearPoints`]), a coplanar S ([`Error::InflectedPolygon`]),
     /// and [`Error::NotDrawable`]: [`NotDrawable::TorsionTooLarge`] with the largest Ω that
     /// works when a smaller Ω would, [`NotDrawable::NoSpaceSegment`] when none does.
+    ///
+    /// Which segment, when several fit the ends (they differ in Λ, ν and length): the
+    /// search is deterministic, so the same input always gives the same segment, in this
+    /// order: (1) seed 003's cone search (the end is the first crossing of the cone about
+    /// the start tangent, the second when |θ2| > π/2) from near-helix starts (Λ = 0, then
+    /// Λ = 1, ν upward from about tan θ0); its first segment whose tangent and binormal turn
+    /// by at most 3π/2 is returned; (2) otherwise the free-end search (the end s a third
+    /// unknown, starts from ν scans on the first three crossings' cones at Λ = 0, 0.15,
+    /// 0.4, 1, best residual first), and the segment that turns least among (1) and (2);
+    /// (3) when Ω itself is out of reach, the segment at Ω = 0 followed continuously in Ω
+    /// for Ω_max. Segments found by (1) move continuously with the input while the
+    /// near-helix start stays in their basin; for dragging, where the answer should follow
+    /// the previous one, use [`SpaceSegment::from_control_points_near`].
     pub fn from_control_points(points: [Vec3; 4], shape: SpaceShape) -> Result<SpaceSegment> {
+        Self::solve(points, shape, None)
+    }
+
+    /// [`SpaceSegment::from_control_points`] with a warm start: first Newton's method on
+    /// (Λ, ln ν, s) from `previous`'s standard form and length (same α, β, type and end
+    /// order), which follows the segment continuously as the points or Ω move a little (an
+    /// editor's drag) and takes a few integrations instead of a search; the cold search
+    /// when that does not converge or `previous` does not match (planar, other slopes or
+    /// type, the other end first).
+    pub fn from_control_points_near(
+        points: [Vec3; 4],
+        shape: SpaceShape,
+        previous: &SpaceSegment,
+    ) -> Result<SpaceSegment> {
+        let start = match &previous.solved {
+            Solved::Space {
+                form,
+                s_end,
+                transform,
+                ..
+            } if form.alpha() == shape.alpha
+                && form.beta() == shape.beta
+                && form.torsion_type() == shape.torsion =>
+            {
+                Some(WarmStart {
+                    solution: Solution {
+                        lambda: form.lambda(),
+                        ln_nu: form.nu().ln(),
+                    },
+                    s_end: *s_end,
+                    reversed: transform.reversed,
+                })
+            }
+            _ => None,
+        };
+        Self::solve(points, shape, start)
+    }
+
+    fn solve(
+        points: [Vec3; 4],
+        shape: SpaceShape,
+        warm: Option<WarmStart>,
+    ) -> Result<SpaceSegment> {
         for p in &points {
             for c in p.to_array() {
                 finite("control point coordinate", c)?;
@@ -236,7 +308,7 @@ impl SpaceSegment {
         let solved = if off_plane < PLANAR_TOLERANCE {
             planar(points, alpha, theta2)?
         } else {
-            solve_space(points, shape, [theta0, theta1, theta2])?
+            solve_space(points, shape, [theta0, theta1, theta2], warm)?
         };
         let arc_length = match &solved {
             Solved::Space {
@@ -523,9 +595,9 @@ fn planar(points: [Vec3; 4], alpha: f64, theta2: f64) -> Result<Solved> {
     let a = (q3.x * d.y - q3.y * d.x) / cross_d;
     let b = q3.y / d.y;
     if !(a > 0.0 && b > 0.0 && a.is_finite() && b.is_finite()) {
-        return Err(Error::NotDrawable(NotDrawable::ChordOutsideTangents {
-            theta_e: chord.angle_to(e1),
-            turning: 0.0,
+        return Err(Error::NotDrawable(NotDrawable::PlanarTangentsApart {
+            turning: (p1 - p0).angle_to(p3 - p2),
+            chord_angle: chord.angle_to(e1),
         }));
     }
     let segment = Segment::from_control_points([Point::ZERO, Point::new(a, 0.0), q3], alpha)?;
@@ -538,7 +610,12 @@ fn planar(points: [Vec3; 4], alpha: f64, theta2: f64) -> Result<Solved> {
 }
 
 /// Solve the space problem: swap the ends if θ0 < θ1, find (Λ, ν), build the similarity.
-fn solve_space(points: [Vec3; 4], shape: SpaceShape, angles: [f64; 3]) -> Result<Solved> {
+fn solve_space(
+    points: [Vec3; 4],
+    shape: SpaceShape,
+    angles: [f64; 3],
+    warm: Option<WarmStart>,
+) -> Result<Solved> {
     let [theta0, theta1, _] = angles;
     let reversed = theta0 < theta1;
     let [p0, p1, p2, p3] = if reversed {
@@ -567,9 +644,19 @@ fn solve_space(points: [Vec3; 4], shape: SpaceShape, angles: [f64; 3]) -> Result
         crossing,
     };
     let omega = shape.omega;
-    let solution = problem.solve_with_omega(omega)?;
-    let form = problem.form(&solution, omega);
-    let shot = shoot(&form, &problem.cone(), Checkpoints::Keep).expect("a converged shot repeats");
+    let warm = warm
+        .filter(|w| w.reversed == reversed)
+        .and_then(|w| problem.newton3(w.solution, w.s_end, omega));
+    let found = match warm {
+        Some(found) => found,
+        None => problem.solve_with_omega(omega)?,
+    };
+    let form = problem.form(&found.solution, omega);
+    // The solver's own check: the end it found, integrated once more with its checkpoints,
+    // meets the end angles.
+    let shot = integrate_to(&form, found.s_end, Checkpoints::Keep)
+        .filter(|shot| problem.residual3(shot).iter().all(|r| r.abs() < 1e-10))
+        .ok_or(Error::NotDrawable(NotDrawable::NoSpaceSegment { omega }))?;
     // Mirror when the standard form's dihedral has the other sign (seed 003 §4).
     let mirror_z = (shot.theta2 < 0.0) != (theta2 < 0.0);
     // Rotation taking e1 to t0 and the standard-form chord to the caller's.
@@ -595,17 +682,40 @@ fn solve_space(points: [Vec3; 4], shape: SpaceShape, angles: [f64; 3]) -> Result
     })
 }
 
+/// `x` with `m x = b` (Cramer's rule); `None` when `m` is singular.
+fn solve3(m: [[f64; 3]; 3], b: [f64; 3]) -> Option<[f64; 3]> {
+    let det = |m: [[f64; 3]; 3]| {
+        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+    };
+    let d = det(m);
+    if d == 0.0 || !d.is_finite() {
+        return None;
+    }
+    let mut x = [0.0; 3];
+    for (k, xk) in x.iter_mut().enumerate() {
+        let mut mk = m;
+        for i in 0..3 {
+            mk[i][k] = b[i];
+        }
+        *xk = det(mk) / d;
+    }
+    Some(x)
+}
+
 /// The state of a ν scan: the next grid index, the last defined point's dihedral mismatch
 /// and every defined point with its residual.
 #[derive(Default)]
 struct Scan {
     next: u32,
     prev: Option<(f64, f64)>,
-    defined: Vec<(f64, Solution)>,
+    defined: Vec<(f64, Solution, f64)>,
 }
 
 /// The two-parameter search of seed 003 §4 for fixed α, β, type, end geometry and crossing
 /// (the Ω of `shape` is the goal; continuation visits smaller ones).
+#[derive(Clone, Copy, Debug)]
 struct Problem {
     shape: SpaceShape,
     target: Target,
@@ -637,6 +747,125 @@ impl Problem {
         })
     }
 
+    /// The mismatch of a piece ending anywhere: its chord angle at the start less θ0, and
+    /// the end-tangent mismatch of [`Target::residual`].
+    fn residual3(&self, shot: &Shot) -> [f64; 3] {
+        let r = self.target.residual(shot);
+        [
+            Vec3::X.angle_to(shot.end.x) - self.target.theta0,
+            r[0],
+            r[1],
+        ]
+    }
+
+    /// The fallback where the cone search found nothing: the end s becomes a third unknown
+    /// beside Λ and ln ν, and the three angles θ0, θ1, θ2 of the piece from 0 to s are
+    /// matched by [`Problem::newton3`]. Eliminating s by the cone crossing has a fold where
+    /// the curve grazes the cone (|θ2| near π/2, where the first and second crossings meet)
+    /// and misses ends beyond the second crossing; the angles are smooth in all three
+    /// unknowns there. Starts: the defined points of ν scans at a few Λ on the cones of the
+    /// first three crossings, best (2-D residual) first.
+    fn attempt_free_end(&self, omega: f64) -> Option<Converged> {
+        let mut starts = Vec::new();
+        let base = self.target.theta0.min(1.4).tan().ln() - 0.5 * std::f64::consts::LN_10;
+        let cone = Cone::new(self.target.theta0, 3);
+        for lambda in FREE_END_LAMBDAS {
+            for k in 0..16 {
+                let p = Solution {
+                    lambda,
+                    ln_nu: base + f64::from(k) * 0.25 * std::f64::consts::LN_10,
+                };
+                for shot in shoot_each(&self.form(&p, omega), &cone) {
+                    let r = self.target.residual(&shot);
+                    starts.push((r[0].hypot(r[1]), p, shot.end.s));
+                }
+            }
+        }
+        starts.sort_by(|a, b| a.0.total_cmp(&b.0));
+        starts
+            .into_iter()
+            .take(FREE_END_STARTS)
+            .find_map(|(_, p, s_end)| self.newton3(p, s_end, omega))
+    }
+
+    /// Damped Newton on the three residuals of [`Problem::residual3`] in (Λ, ln ν, s), with
+    /// a forward-difference Jacobian and the safeguards of [`Problem::newton`].
+    fn newton3(&self, mut p: Solution, mut s_end: f64, omega: f64) -> Option<Converged> {
+        let eval = |p: &Solution, s: f64| {
+            integrate_to(&self.form(p, omega), s, Checkpoints::Discard)
+                .map(|shot| self.residual3(&shot))
+        };
+        let mut r = eval(&p, s_end)?;
+        let (mut slow, mut last) = (0, f64::INFINITY);
+        for _ in 0..40 {
+            let size = r.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            if size < RESIDUAL_TOLERANCE {
+                let form = self.form(&p, omega);
+                let turning = form
+                    .kappa_law()
+                    .integral(s_end)
+                    .max(form.tau_law().integral(s_end));
+                return (p.lambda >= 0.0).then_some(Converged {
+                    solution: p,
+                    turning,
+                    s_end,
+                });
+            }
+            slow = if size > 0.7 * last { slow + 1 } else { 0 };
+            if slow >= 4 {
+                return None;
+            }
+            last = size;
+            let h = [1e-7 * p.lambda.max(1e-3), 1e-7, 1e-7 * s_end];
+            let mut jac = [[0.0; 3]; 3];
+            for (k, hk) in h.iter().enumerate() {
+                let mut q = p;
+                let mut sq = s_end;
+                match k {
+                    0 => q.lambda += hk,
+                    1 => q.ln_nu += hk,
+                    _ => sq += hk,
+                }
+                let rq = eval(&q, sq)?;
+                for i in 0..3 {
+                    jac[i][k] = (rq[i] - r[i]) / hk;
+                }
+            }
+            let mut d = solve3(jac, [-r[0], -r[1], -r[2]])?;
+            // Keep steps local: ν by at most a factor e, Λ by its size plus 1, s by half.
+            let limit = (d[1].abs())
+                .max(d[0].abs() / (p.lambda + 1.0))
+                .max(d[2].abs() / (0.5 * s_end))
+                .max(1.0);
+            d = d.map(|x| x / limit);
+            let mut accepted = false;
+            for _ in 0..12 {
+                let mut lambda = p.lambda + d[0];
+                if lambda < 0.0 {
+                    lambda = 0.1 * p.lambda;
+                }
+                let q = Solution {
+                    lambda,
+                    ln_nu: p.ln_nu + d[1],
+                };
+                if let Some(rq) = eval(&q, s_end + d[2]) {
+                    if rq.iter().fold(0.0f64, |m, x| m.max(x.abs())) < size {
+                        p = q;
+                        s_end += d[2];
+                        r = rq;
+                        accepted = true;
+                        break;
+                    }
+                }
+                d = d.map(|x| 0.5 * x);
+            }
+            if !accepted {
+                return None;
+            }
+        }
+        None
+    }
+
     fn residual(&self, p: &Solution, omega: f64) -> Option<[f64; 2]> {
         self.shot(p, omega).map(|shot| self.target.residual(&shot))
     }
@@ -647,22 +876,38 @@ impl Problem {
 
     /// Solve at `omega`, directly from a near-helix start, else by continuation in Ω from
     /// 0; report the largest Ω reached when `omega` is out of reach.
-    fn solve_with_omega(&self, omega: f64) -> Result<Solution> {
-        if let Some(s) = self.attempt(omega) {
-            return Ok(s);
+    fn solve_with_omega(&self, omega: f64) -> Result<Converged> {
+        // The cone search first; where it finds nothing, or only a segment that turns by
+        // more than GENTLE_TURNING, the free-end search, and the gentler of the two.
+        let cone = self.attempt(omega);
+        if let Some(c) = cone.clone().filter(|c| c.turning <= GENTLE_TURNING) {
+            return Ok(c);
+        }
+        let free = self.attempt_free_end(omega);
+        if let Some(c) = [cone, free]
+            .into_iter()
+            .flatten()
+            .min_by(|a, b| a.turning.total_cmp(&b.turning))
+        {
+            return Ok(c);
         }
         let none = || Error::NotDrawable(NotDrawable::NoSpaceSegment { omega });
         if omega == 0.0 {
             return Err(none());
         }
-        let mut ok = self.attempt(0.0).ok_or_else(none)?;
+        let mut ok = self
+            .attempt(0.0)
+            .or_else(|| self.attempt_free_end(0.0))
+            .ok_or_else(none)?;
+        // Follow that segment's branch in Ω with the end s free (smooth through the cone's
+        // fold), to Ω or as far as it goes (to 0.1% of Ω: the Ω_max reported is a lower bound).
         let (mut reached, mut step) = (0.0, 0.25 * omega);
-        while step > 1e-6 * omega {
+        while step > 1e-3 * omega {
             let next = (reached + step).min(omega);
-            match self.newton(ok.clone(), next) {
-                Some(c) if next == omega => return Ok(c.solution),
+            match self.newton3(ok.solution, ok.s_end, next) {
+                Some(c) if next == omega => return Ok(c),
                 Some(c) => {
-                    ok = c.solution;
+                    ok = c;
                     reached = next;
                     step *= 2.0;
                 }
@@ -682,7 +927,7 @@ impl Problem {
     /// tried, then the same from Λ = 1. The ends may admit several segments; one whose
     /// tangent or binormal turns by more than [`GENTLE_TURNING`] (near the 2π guard: a
     /// loop) is kept only if no gentler one turns up among the starts.
-    fn attempt(&self, omega: f64) -> Option<Solution> {
+    fn attempt(&self, omega: f64) -> Option<Converged> {
         let mut best: Option<Converged> = None;
         for lambda in START_LAMBDAS {
             let mut scan = Scan::default();
@@ -695,18 +940,18 @@ impl Problem {
                             best = Some(c);
                         }
                         if best.as_ref().is_some_and(|b| b.turning <= GENTLE_TURNING) {
-                            return best.map(|b| b.solution);
+                            return best;
                         }
                     }
                 }
                 if pass == 0 {
                     self.scan(omega, lambda, &mut scan, ScanUntil::End);
                     scan.defined.sort_by(|a, b| a.0.total_cmp(&b.0));
-                    starts = scan.defined.drain(..).map(|(_, p)| p).take(3).collect();
+                    starts = scan.defined.drain(..).map(|(_, p, _)| p).take(3).collect();
                 }
             }
         }
-        best.map(|b| b.solution)
+        best
     }
 
     /// The ν scan at fixed Λ. The helix's axis makes the angle atan ν with the start
@@ -726,7 +971,7 @@ impl Problem {
                 continue;
             };
             let r = self.target.residual(&shot);
-            scan.defined.push((r[0].hypot(r[1]), p));
+            scan.defined.push((r[0].hypot(r[1]), p, shot.end.s));
             let d = shot.theta2.abs() - want;
             let prev = scan.prev.replace((ln_nu, d));
             if let Some((ln_prev, d_prev)) = prev {
@@ -761,6 +1006,7 @@ impl Problem {
                 return (p.lambda >= 0.0).then_some(Converged {
                     solution: p,
                     turning,
+                    s_end: shot.end.s,
                 });
             }
             // Newton converges fast near a root; steady crawling means a dead end (the
@@ -801,7 +1047,7 @@ impl Problem {
             dl /= limit;
             dn /= limit;
             let mut accepted = false;
-            for _ in 0..30 {
+            for _ in 0..12 {
                 let mut lambda = p.lambda + dl;
                 if lambda < 0.0 {
                     lambda = 0.1 * p.lambda;

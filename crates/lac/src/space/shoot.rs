@@ -81,6 +81,39 @@ pub(crate) fn end_angles(chord: Vec3, t0: Vec3, t1: Vec3) -> (f64, f64, f64) {
 /// bound of its valid range first, turns its tangent or binormal by more than 2π first (the
 /// seed's guard against looping segments), or never gets there.
 pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep: Checkpoints) -> Option<Shot> {
+    let mut found = None;
+    crossings(form, cone, keep, |shot, k| {
+        if k == cone.crossing {
+            found = Some(shot);
+            false
+        } else {
+            true
+        }
+    });
+    found
+}
+
+/// Every crossing of `cone` up to its own ([`Cone::crossing`]) in one integration, in
+/// order, each as a [`Shot`] without checkpoints: what [`shoot`] would give for each
+/// crossing number.
+pub(crate) fn shoot_each(form: &SpaceForm, cone: &Cone) -> Vec<Shot> {
+    let mut shots = Vec::new();
+    crossings(form, cone, Checkpoints::Discard, |shot, k| {
+        shots.push(shot);
+        k < cone.crossing
+    });
+    shots
+}
+
+/// Integrate `form` from 0, calling `each(shot, k)` at the k-th crossing of `cone` (from 1)
+/// until it returns false, `cone.crossing` is passed, or the curve ends (range, guard,
+/// steps).
+fn crossings(
+    form: &SpaceForm,
+    cone: &Cone,
+    keep: Checkpoints,
+    mut each: impl FnMut(Shot, u32) -> bool,
+) {
     let (_, s_max) = form.s_range();
     let mut state = State::start();
     let mut checkpoints = Vec::new();
@@ -96,7 +129,7 @@ pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep: Checkpoints) -> Option<
             h = s_max - state.s;
         }
         if h <= 1e-12 * state.s.abs().max(1.0) {
-            return None;
+            return;
         }
         if keep == Checkpoints::Keep {
             checkpoints.push(state);
@@ -113,24 +146,59 @@ pub(crate) fn shoot(form: &SpaceForm, cone: &Cone, keep: Checkpoints) -> Option<
             let outside = crossings % 2 == 1;
             if (g > 0.0) != outside {
                 crossings += 1;
-                if crossings == cone.crossing {
-                    let sigma = refine(cone, &expansion, (prev, g_prev), (sigma, g));
-                    return finish(form, &expansion, sigma, checkpoints);
+                let at = refine(cone, &expansion, (prev, g_prev), (sigma, g));
+                let shot = match keep {
+                    Checkpoints::Keep => finish(form, &expansion, at, checkpoints.clone()),
+                    Checkpoints::Discard => finish(form, &expansion, at, Vec::new()),
+                };
+                let go_on = match shot {
+                    Some(shot) => each(shot, crossings) && crossings < cone.crossing,
+                    None => false,
+                };
+                if !go_on {
+                    return;
                 }
             }
             prev = sigma;
             g_prev = g;
         }
         if last {
-            return None;
+            return;
         }
         state = expansion.state_at(h);
         if !within_guard(form, state.s) {
+            return;
+        }
+        if crossings == 0 && never_leaves(form, cone, &state) {
+            return;
+        }
+    }
+}
+
+/// Integrate `form` from s = 0 to `s_end`: the state there and, with
+/// [`Checkpoints::Keep`], the states at the starts of the steps (the same steps [`shoot`]
+/// takes). `None` when `s_end` is not inside the valid range, beyond seed 003's 2π guard,
+/// or further than [`MAX_STEPS`] steps.
+pub(crate) fn integrate_to(form: &SpaceForm, s_end: f64, keep: Checkpoints) -> Option<Shot> {
+    let (_, s_max) = form.s_range();
+    if !(s_end > 0.0 && s_end < s_max && within_guard(form, s_end)) {
+        return None;
+    }
+    let mut state = State::start();
+    let mut checkpoints = Vec::new();
+    for _ in 0..MAX_STEPS {
+        let expansion = Expansion::new(form, &state);
+        let h = expansion.step_size();
+        if h <= 1e-12 * state.s.abs().max(1.0) {
             return None;
         }
-        if cone.crossing == 1 && crossings == 0 && never_leaves(form, cone, &state) {
-            return None;
+        if keep == Checkpoints::Keep {
+            checkpoints.push(state);
         }
+        if state.s + h >= s_end {
+            return finish(form, &expansion, s_end - state.s, checkpoints);
+        }
+        state = expansion.state_at(h);
     }
     None
 }

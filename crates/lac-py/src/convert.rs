@@ -57,16 +57,27 @@ pub(crate) fn real_array(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Real> {
             obj.call_method1("astype", ("float64",))?
         }
     } else {
+        // Sequences: NumPy decides the dtype first, so that complex numbers, strings and
+        // other objects are refused by the check above rather than cast (a complex number
+        // would lose its imaginary part with only a warning).
         let numpy = py.import("numpy")?;
-        numpy
-            .call_method1("asarray", (obj, "float64"))
-            .map_err(|e| {
-                invalid(
-                    py,
-                    format!("{what} must be real numbers or sequences of them: {e}"),
-                )
-            })?
+        let array = numpy.call_method1("asarray", (obj,)).map_err(|e| {
+            invalid(
+                py,
+                format!("{what} must be real numbers or sequences of them: {e}"),
+            )
+        })?;
+        return real_array(&array, what);
     };
+    // rust-numpy panics on arrays of more than 32 dimensions (NumPy 2 allows 64): no real
+    // input has them, so they are refused before the view is taken.
+    let ndim = array.cast::<PyUntypedArray>()?.ndim();
+    if ndim > 8 {
+        return Err(invalid(
+            py,
+            format!("{what} must be an array of at most 8 dimensions, got {ndim}"),
+        ));
+    }
     let array = array.cast_into::<PyArrayDyn<f64>>()?;
     let read = array.readonly();
     let view = read.as_array();

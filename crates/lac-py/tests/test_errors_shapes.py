@@ -100,7 +100,9 @@ def test_torsion_too_large_reports_omega_max():
     ("abc", "real numbers"),
     ([(0, 0), (1, 0)], "got shape (2, 2)"),
     ([(0, 0), (1, 0), (1, 1, 1)], "real numbers"),
-    (None, "got shape ()"),
+    (None, "got dtype object"),
+    # A complex number in a list is refused, not cast to its real part.
+    ([(0, 1j), (1, 0), (1, 1)], "dtype complex128"),
 ])
 def test_wrong_shape_or_dtype_is_a_clear_value_error(points, words):
     with pytest.raises(ValueError) as info:

@@ -177,11 +177,19 @@ pub trait Curve {
     /// `n ≥ 2` points of the evolute (the locus of centres of curvature) at the arc-length
     /// samples: `P + N/κ` with N the left normal.
     fn evolute(&self, n: usize) -> Result<Vec<Point>> {
-        Ok(self
+        let centers: Vec<Point> = self
             .sample_by_arc_length(n)?
             .iter()
             .map(Sample::center_of_curvature)
-            .collect())
+            .collect();
+        // A curve near the end of double range can have its centres beyond it.
+        if centers.iter().all(|c| c.is_finite()) {
+            Ok(centers)
+        } else {
+            Err(Error::Unrepresentable {
+                what: "the evolute (a centre of curvature beyond double range)",
+            })
+        }
     }
 
     /// `n ≥ 2` points of the curvature plot equally spaced in arc length, with the exact

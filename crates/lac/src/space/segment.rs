@@ -588,9 +588,13 @@ fn planar(points: [Vec3; 4], alpha: f64, theta2: f64) -> Result<Solved> {
     let chord = p3 - p0;
     let e2 = (chord - chord.dot(e1) * e1).normalize();
     let to2 = |p: Vec3| Point::new((p - p0).dot(e1), (p - p0).dot(e2));
-    let (q3, d) = (to2(p3), to2(p3) - to2(p2));
+    // The last leg projected as a difference (exact for nearby points), not as the
+    // difference of two projections: those cancel, and a leg 1e-12 of the coordinates long
+    // would lose its direction to 1e-4 rad.
+    let leg = p3 - p2;
+    let (q3, d) = (to2(p3), kurbo::Vec2::new(leg.dot(e1), leg.dot(e2)));
     // P0 + a e1 = P3 − b d/|d|: the tangents' intersection, ahead of both ends.
-    let d = d / d.hypot();
+    let d = d / d.x.hypot(d.y);
     let cross_d = d.y; // (1, 0) × d
     let a = (q3.x * d.y - q3.y * d.x) / cross_d;
     let b = q3.y / d.y;

@@ -689,8 +689,9 @@ pub(crate) struct ServeArgs {
 /// Arguments of `lac export`.
 #[derive(Debug, Args)]
 pub(crate) struct ExportArgs {
-    /// One result of lac segment, lac compound or lac space to export ("-": standard input;
-    /// nothing, without --points: standard input when it is not a terminal)
+    /// One result of lac segment, lac compound, lac path or lac space to export ("-":
+    /// standard input; nothing, without --points or --polygon: standard input when it is
+    /// not a terminal)
     #[arg(value_name = "FILE", conflicts_with = "points")]
     pub(crate) input: Option<PathBuf>,
 
@@ -700,9 +701,42 @@ pub(crate) struct ExportArgs {
     #[arg(long, value_name = "POINTS", allow_hyphen_values = true)]
     pub(crate) points: Option<String>,
 
-    /// A segment's (or space segment's) slope of the logarithmic curvature graph
+    /// A segment's (or space segment's, or every path segment's) slope of the logarithmic
+    /// curvature graph
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub(crate) alpha: Option<f64>,
+
+    /// A path: the control polygon "x0,y0 x1,y1 …" (at least three points), with --alpha
+    /// or --alphas, and --closed, --g2 or --fractions as lac path takes them
+    #[arg(
+        long,
+        value_name = "POINTS",
+        allow_hyphen_values = true,
+        conflicts_with_all = ["points", "input"]
+    )]
+    pub(crate) polygon: Option<String>,
+
+    /// A path: one slope per segment "a1,a2,…"
+    #[arg(
+        long,
+        value_name = "LIST",
+        allow_hyphen_values = true,
+        requires = "polygon",
+        conflicts_with = "alpha"
+    )]
+    pub(crate) alphas: Option<String>,
+
+    /// A path: close the polygon
+    #[arg(long, requires = "polygon")]
+    pub(crate) closed: bool,
+
+    /// A path: solve the joints for continuous curvature (G2)
+    #[arg(long, requires = "polygon", conflicts_with = "fractions")]
+    pub(crate) g2: bool,
+
+    /// A path (G1): the fraction of each joint leg at which its joint lies "t1,t2,…"
+    #[arg(long, value_name = "LIST", requires = "polygon")]
+    pub(crate) fractions: Option<String>,
 
     /// A compound curve: the slope of the piece from the first point to the joint
     #[arg(long, value_name = "A", allow_hyphen_values = true)]

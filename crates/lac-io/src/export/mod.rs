@@ -1,4 +1,4 @@
-//! CAD export: a log-aesthetic curve (segment, compound curve, space segment) as rational
+//! CAD export: a log-aesthetic curve (segment, compound curve, path, space segment) as rational
 //! degree-3 B-splines within a tolerance, with the achieved deviation measured densely, in
 //! DXF, STEP, IGES, SVG (plain cubics) or JSON.
 //!
@@ -10,6 +10,11 @@
 //! reported is [`certify::deviation`] of the B-spline as written; when it exceeds the
 //! tolerance (the fits measure their own deviation more coarsely) the fit is repeated with
 //! a smaller target, and the export is refused when that does not help.
+//!
+//! A multi-segment path is fitted segment by segment (each segment's chain interpolates its
+//! ends, end tangents and end curvatures), so every path joint is a knot of the B-spline
+//! and the joins there are as the path is: G2 for a G2 path, G1 (curvature jumping as in
+//! the path) for a G1 path. A closed path is written as a clamped curve whose ends meet.
 
 pub mod certify;
 pub mod dxf;
@@ -22,7 +27,9 @@ pub mod svg;
 
 use serde::{Deserialize, Serialize};
 
-use lac::{Error, SpaceSegment, Tolerance, MIN_RELATIVE_TOLERANCE};
+use lac::{
+    Continuity, Curve, Error, Path, QuasiCurve, SpaceSegment, Tolerance, MIN_RELATIVE_TOLERANCE,
+};
 
 use crate::json::{ErrorBody, Solved};
 use certify::{deviation, Exact, PlaneExact, SpaceExact};
@@ -70,8 +77,21 @@ pub struct Meta {
 pub enum ExportCurve<'a> {
     /// A planar segment or compound curve.
     Plane(&'a Solved),
+    /// A multi-segment planar path.
+    Path(&'a Path),
     /// A space segment.
     Space(&'a SpaceSegment),
+}
+
+impl ExportCurve<'_> {
+    /// The planar curve, if it is one.
+    fn plane(&self) -> Option<&dyn Curve> {
+        match self {
+            ExportCurve::Plane(s) => Some(s.curve()),
+            ExportCurve::Path(p) => Some(*p),
+            ExportCurve::Space(_) => None,
+        }
+    }
 }
 
 /// How an export went: `lac export`'s report.
@@ -79,7 +99,7 @@ pub enum ExportCurve<'a> {
 pub struct ExportReport {
     /// The format written.
     pub format: Format,
-    /// `"segment"`, `"compound"` or `"space"`.
+    /// `"segment"`, `"compound"`, `"path"` or `"space"`.
     pub kind: String,
     /// Bézier pieces (knot spans).
     pub pieces: usize,
@@ -96,7 +116,8 @@ pub struct ExportReport {
     pub samples_per_piece: usize,
     /// Arc length of the exact curve.
     pub arc_length: f64,
-    /// Continuity at the joins: `"G2"` (planar) or `"C1"` (space).
+    /// Continuity at the joins: `"G2"` (planar; a G2 path), `"G1"` (a G1 path: G2 within
+    /// its segments, G1 at its joints) or `"C1"` (space).
     pub continuity: String,
     /// Every piece's curvature proven monotone (planar rational pieces); null for space
     /// curves, for which nothing is proven about curvature.
@@ -140,7 +161,13 @@ pub fn export(
                 Solved::Compound(_) => "compound",
             },
         ),
+        ExportCurve::Path(path) => (path.arc_length(), "path"),
         ExportCurve::Space(seg) => (seg.arc_length(), "space"),
+    };
+    let continuity = match curve {
+        ExportCurve::Space(_) => "C1",
+        ExportCurve::Path(p) if p.continuity() == Continuity::G1 => "G1",
+        _ => "G2",
     };
     if format == Format::Svg && matches!(curve, ExportCurve::Space(_)) {
         return Err(ErrorBody::new(
@@ -154,9 +181,10 @@ pub fn export(
     let mut reached = f64::INFINITY;
     for _ in 0..ATTEMPTS {
         let fitted = fit(curve, target, plain)?;
-        let measured = match curve {
-            ExportCurve::Plane(s) => measure(&PlaneExact(s.curve()), &fitted.nurbs)?,
-            ExportCurve::Space(s) => measure(&SpaceExact(s), &fitted.nurbs)?,
+        let measured = match (curve, curve.plane()) {
+            (ExportCurve::Space(s), _) => measure(&SpaceExact(s), &fitted.nurbs)?,
+            (_, Some(c)) => measure(&PlaneExact(c), &fitted.nurbs)?,
+            (_, None) => unreachable!("every curve but a space segment is planar"),
         };
         if measured <= tol {
             let curves = if single_spans {
@@ -174,7 +202,7 @@ pub fn export(
                 fit_deviation: fitted.fit_deviation,
                 samples_per_piece: SAMPLES_PER_PIECE,
                 arc_length: length,
-                continuity: if kind == "space" { "C1" } else { "G2" }.to_string(),
+                continuity: continuity.to_string(),
                 monotone_proven: fitted.monotone_proven,
                 polynomial: fitted.nurbs.is_polynomial(),
                 units: "mm".to_string(),
@@ -235,29 +263,45 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
         }
         .into()
     };
+    let quasi_of = |c: &dyn Curve| -> Result<QuasiCurve, ErrorBody> {
+        Ok(if plain {
+            c.to_cubics(Tolerance::Absolute(target))?
+        } else {
+            c.to_rational_cubics(Tolerance::Absolute(target))?
+        })
+    };
+    let planar = |chains: &[(QuasiCurve, f64)]| -> Result<Fitted, ErrorBody> {
+        let pieces = || chains.iter().flat_map(|(q, _)| &q.pieces);
+        let spans: Vec<Span> = pieces()
+            .map(|p| Span::from_rational_cubic(&p.curve))
+            .collect();
+        let mut breaks = vec![0.0];
+        for p in pieces() {
+            breaks.push(breaks[breaks.len() - 1] + p.curve.arc_length());
+        }
+        let nurbs = Nurbs::from_spans(&spans, &breaks, true).map_err(|_| bad())?;
+        Ok(Fitted {
+            nurbs,
+            fit_deviation: chains
+                .iter()
+                .fold(0.0f64, |m, (q, length)| m.max(q.max * length)),
+            monotone_proven: Some(pieces().all(|p| p.monotonicity.proven)),
+        })
+    };
     match curve {
         ExportCurve::Plane(solved) => {
             let c = solved.curve();
-            let quasi = if plain {
-                c.to_cubics(Tolerance::Absolute(target))?
-            } else {
-                c.to_rational_cubics(Tolerance::Absolute(target))?
-            };
-            let spans: Vec<Span> = quasi
-                .pieces
+            planar(&[(quasi_of(c)?, c.arc_length())])
+        }
+        ExportCurve::Path(path) => {
+            // Segment by segment: each chain keeps its segment's end points, tangents and
+            // curvatures, so the path's joints stay knots with the path's own continuity.
+            let chains = path
+                .pieces()
                 .iter()
-                .map(|p| Span::from_rational_cubic(&p.curve))
-                .collect();
-            let mut breaks = vec![0.0];
-            for p in &quasi.pieces {
-                breaks.push(breaks[breaks.len() - 1] + p.curve.arc_length());
-            }
-            let nurbs = Nurbs::from_spans(&spans, &breaks, true).map_err(|_| bad())?;
-            Ok(Fitted {
-                nurbs,
-                fit_deviation: quasi.max * c.arc_length(),
-                monotone_proven: Some(quasi.pieces.iter().all(|p| p.monotonicity.proven)),
-            })
+                .map(|seg| Ok((quasi_of(seg)?, seg.arc_length())))
+                .collect::<Result<Vec<_>, ErrorBody>>()?;
+            planar(&chains)
         }
         ExportCurve::Space(seg) => {
             let cubics = seg.to_cubics(Tolerance::Absolute(target))?;

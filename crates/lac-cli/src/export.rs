@@ -3,8 +3,6 @@
 //! tolerance, with the deviation achieved measured on what was written
 //! ([`lac_io::export`]).
 
-use std::time::{SystemTime, UNIX_EPOCH};
-
 use lac::Tolerance;
 use lac_io::export::{export, ExportCurve, Format, Meta, DEFAULT_TOLERANCE};
 use lac_io::json::{
@@ -73,18 +71,14 @@ pub(crate) fn run(args: &ExportArgs, limits: Limits) -> Result<(), ErrorBody> {
         let text = read_document(args.input.as_deref(), limits.document(), HINT)?;
         parse_document(&text)?
     };
-    let meta = Meta {
-        name: args
-            .file
+    let meta = Meta::now(
+        args.file
             .as_deref()
             .and_then(|p| p.file_stem())
             .and_then(|s| s.to_str())
             .filter(|s| *s != "-")
-            .unwrap_or("lac-curve")
-            .to_string(),
-        timestamp: timestamp(SystemTime::now()),
-        version: env!("CARGO_PKG_VERSION").to_string(),
-    };
+            .unwrap_or("lac-curve"),
+    );
     let exported = match &input {
         Input::Plane(c) => {
             let solved: Solved = c.solve()?;
@@ -220,44 +214,5 @@ fn from_arguments(args: &ExportArgs) -> Result<Input, ErrorBody> {
             "give --alpha for a segment, --alpha0 and --alpha1 (and --ratio for three points) \
              for a compound curve, or --alpha and --beta for a space segment",
         )),
-    }
-}
-
-/// `YYYY-MM-DDTHH:MM:SS` (UTC) of `time`.
-fn timestamp(time: SystemTime) -> String {
-    let secs = time
-        .duration_since(UNIX_EPOCH)
-        .map(|d| d.as_secs())
-        .unwrap_or(0);
-    let (days, rest) = ((secs / 86_400) as i64, secs % 86_400);
-    // Days to civil date (proleptic Gregorian), after H. Hinnant's `civil_from_days`.
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let day = doy - (153 * mp + 2) / 5 + 1;
-    let month = if mp < 10 { mp + 3 } else { mp - 9 };
-    let year = yoe + era * 400 + i64::from(month <= 2);
-    format!(
-        "{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}",
-        rest / 3600,
-        rest % 3600 / 60,
-        rest % 60
-    )
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use std::time::Duration;
-
-    #[test]
-    fn timestamps_are_utc_calendar_dates() {
-        let at = |s| timestamp(UNIX_EPOCH + Duration::from_secs(s));
-        assert_eq!(at(0), "1970-01-01T00:00:00");
-        assert_eq!(at(951_782_400), "2000-02-29T00:00:00");
-        assert_eq!(at(1_795_000_000), "2026-11-18T11:06:40");
     }
 }

@@ -152,15 +152,17 @@ pub(crate) enum Command {
                                 [--samples N] [--format json|csv|svg] [-o FILE|-] [--comb] [--evolute]"
     )]
     Path(PathArgs),
-    /// Export a segment, compound curve or space segment for CAD: rational degree-3
+    /// Export a segment, compound curve, path or space segment for CAD: rational degree-3
     /// B-splines within a tolerance (DXF, STEP, IGES, JSON) or plain cubic Béziers (SVG), with
     /// the achieved deviation measured densely
     ///
     /// The curve is given as for lac segment, lac compound or lac space (--points with
     /// --alpha; --alpha0, --alpha1 and --ratio; or four 3-D points with --alpha and --beta), or
-    /// as one result of those commands in FILE or on standard input. Planar curves become the
-    /// quasi-aesthetic rational cubics of lac quasi (joined G2, each piece's curvature proven
-    /// monotone), space curves cubic Hermite pieces (joined C1); the pieces are written as one
+    /// as one result of those commands in FILE or on standard input; or a path (--polygon with
+    /// --alpha or --alphas, --closed, --g2 or --fractions, as lac path takes them, or lac
+    /// path's result). Planar curves become the quasi-aesthetic rational cubics of lac quasi
+    /// (joined G2, each piece's curvature proven monotone; a path segment by segment, its
+    /// joints knots with the path's continuity, G2 or G1), space curves cubic Hermite pieces (joined C1); the pieces are written as one
     /// clamped B-spline (interior knots of multiplicity 3), or with --pieces as one curve per
     /// piece. Lengths are in model units, declared as millimetres in DXF, STEP and IGES.
     ///
@@ -174,8 +176,10 @@ pub(crate) enum Command {
                                 --relative-tolerance R] [--pieces] -o FILE \
                                 --points … --alpha A [--alpha0 A --alpha1 B [--ratio R]] [--beta B \
                                 --omega W --type 1|2]\n       \
+                                lac export --format … -o FILE --polygon … (--alpha A | \
+                                --alphas …) [--closed] [--g2 | --fractions …]\n       \
                                 lac export [FILE|-] --format … -o FILE      \
-                                # a lac segment, compound or space result"
+                                # a lac segment, compound, path or space result"
     )]
     Export(ExportArgs),
     /// Start the interactive editor: a local web server with the editor's page (embedded,

@@ -14,7 +14,8 @@ Each format is written by the `lac` binary and read by a reader that is not lac:
 
 Every curve a reader evaluates is compared with the exact curve, both ways: the exact curve's
 points (`lac segment|compound|space --format json`, 401 samples equally spaced in arc
-length) are projected onto the reader's curve, and the reader's points onto the exact curve
+length; for a path, each of its segments solved again by `lac segment` from the control
+triangle `lac path` reports, so that no interpolation interval straddles a joint) are projected onto the reader's curve, and the reader's points onto the exact curve
 (a cubic Hermite interpolant of those samples with their exact tangents, whose own error is
 below 1e-13 at this spacing). The largest distance must be within the tolerance asked. At
 the joins, the curvature vector the reader evaluates on either side must agree (G2) for
@@ -40,7 +41,14 @@ CURVES = [
     ("space", "space",
      ["--points", "0,0,0 3,0,0 3,3,1.5 0,3,3", "--alpha", "0.5", "--beta", "0",
       "--omega", "0.3"]),
+    # Multi-segment paths (lac path): an open G2 path of three segments and a closed G2
+    # path of five, on a convex polygon.
+    ("path", "path", ["--polygon", "0,0 3,0 4,2 2,4 -1,2", "--alpha", "1", "--g2"]),
+    ("closed", "path",
+     ["--polygon", "0,0 3,0 4,2 2,4 -1,2", "--alpha", "0.5", "--closed", "--g2"]),
 ]
+# A G1 path (curvature jumps at its joints): read back, G1 at the joints, not G2.
+G1_PATH = ("g1path", "path", ["--polygon", "0,0 3,0 4,2 2,4 -1,2", "--alphas", "1,0.5,0.8"])
 PLANAR = [c for c in CURVES if c[0] != "space"]
 SAMPLES = 401
 TOLERANCES = [1e-6, 1e-9]
@@ -70,7 +78,40 @@ def export(tmp_path, curve, fmt, tolerance, pieces=False):
     return path, report
 
 
-class Exact:
+def Exact(curve):
+    """The exact curve: a path is the chain of its segments, anything else one curve."""
+    if curve[1] == "path":
+        return ExactChain(curve)
+    return ExactOne(curve)
+
+
+class ExactChain:
+    """A path's segments end to end, each an `ExactOne` of its control triangle and slope."""
+
+    def __init__(self, curve):
+        report = json.loads(run(["path", *curve[2], "--samples", "2"]).stdout)
+        self.parts = []
+        for seg in report["segments"]:
+            points = " ".join(f"{x!r},{y!r}" for x, y in seg["control_points"])
+            self.parts.append(ExactOne(("seg", "segment",
+                                        ["--points", points, "--alpha", repr(seg["alpha"])])))
+        self.starts = np.cumsum([0.0] + [p.length for p in self.parts])
+        self.length = self.starts[-1]
+        assert abs(self.length - report["arc_length"]) < 1e-12 * self.length
+        self.p = np.concatenate([p.p for p in self.parts])
+
+    def __call__(self, s):
+        s = np.clip(np.atleast_1d(np.asarray(s, dtype=float)), 0.0, self.length)
+        k = np.clip(np.searchsorted(self.starts, s, side="right") - 1, 0, len(self.parts) - 1)
+        out = np.empty((len(s), 3))
+        for i, part in enumerate(self.parts):
+            sel = k == i
+            if sel.any():
+                out[sel] = part(s[sel] - self.starts[i])
+        return out
+
+
+class ExactOne:
     """The exact curve from lac's own samples: a cubic Hermite interpolant in arc length."""
 
     def __init__(self, curve):
@@ -344,10 +385,11 @@ def test_geomdl_evaluates_the_json_within_tolerance_with_g2_joins(tmp_path, curv
     knots = sorted(set(c.knotvector))[1:-1]
     span = c.knotvector[-1] - c.knotvector[0]
     for k in knots:
-        eps = 1e-7 * span
+        # Across the gap of 2 eps the tangent turns by κ 2 eps and the curvature changes by
+        # about |dκ/ds| 2 eps: far below the bounds below for curves up to ~10 units long.
+        eps = 1e-9 * span
         left = c.derivatives(k - eps, order=2)
         right = c.derivatives(k + eps, order=2)
-        # Curvature changes by about |dκ/ds| eps across the gap: far below 1e-6.
         ka, kb = curvature_vector(left[1], left[2]), curvature_vector(right[1], right[2])
         ta = np.asarray(left[1]) / np.linalg.norm(left[1])
         tb = np.asarray(right[1]) / np.linalg.norm(right[1])
@@ -378,9 +420,10 @@ def test_svgpathtools_reads_plain_cubics_within_tolerance(tmp_path, curve):
     def f(ts):
         pts = [svg_path.point(float(np.clip(t, 0.0, 1.0))) for t in np.atleast_1d(ts)]
         return np.array([[p.real, p.imag, 0.0] for p in pts])
-    d = two_sided(Exact(curve), [f_piece(seg) for seg in svg_path])
+    exact = Exact(curve)
+    d = two_sided(exact, [f_piece(seg) for seg in svg_path])
     assert d <= tolerance, f"the SVG path is {d:.3e} from the exact one"
-    assert n >= 1 and f(np.array([0.0]))[0][0] == 0.0
+    assert n >= 1 and np.linalg.norm(f(np.array([0.0]))[0] - exact.p[0]) < 1e-12
 
 
 def f_piece(seg):
@@ -419,3 +462,72 @@ def test_a_solved_result_on_standard_input_exports_the_same_file(tmp_path):
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
     assert json.loads(a.read_text())["curves"] == json.loads(b.read_text())["curves"]
+
+
+# ------------------------------------------------------------------------------- paths
+
+
+@pytest.mark.parametrize("fmt", ["step", "iges", "dxf", "json", "svg"])
+def test_a_g1_path_reads_back_within_tolerance_g1_at_its_joints(tmp_path, fmt):
+    tolerance = 1e-7
+    path, report = export(tmp_path, G1_PATH, fmt, tolerance)
+    assert report["kind"] == "path" and report["continuity"] == "G1"
+    exact = Exact(G1_PATH)
+    if fmt in ("step", "iges"):
+        curves = [occ_eval(c) for c in occ_edges(path)]
+    elif fmt == "dxf":
+        curves = [ezdxf_eval(s) for s in ezdxf_splines(path)]
+    elif fmt == "json":
+        curves = [geomdl_eval(c) for c in geomdl_curves(path)[1]]
+    else:
+        from svgpathtools import parse_path
+        ns = {"svg": "http://www.w3.org/2000/svg"}
+        group = ET.parse(path).getroot().find("svg:g", ns)
+        curves = [f_piece(seg) for seg in parse_path(group.find("svg:path", ns).get("d"))]
+    d = two_sided(exact, curves)
+    assert d <= tolerance, f"the {fmt} reader's curve is {d:.3e} from the exact path"
+
+
+def test_a_g1_path_keeps_its_curvature_jumps_and_its_tangents_at_the_joints(tmp_path):
+    path, _ = export(tmp_path, G1_PATH, "json", 1e-9)
+    doc, curves = geomdl_curves(path)
+    c = curves[0]
+    joints = json.loads(run(["path", *G1_PATH[2], "--samples", "2"]).stdout)["joints"]
+    written = np.array(sorted(set(doc["curves"][0]["knots"])))
+    for j in joints:
+        i = np.argmin(abs(written - j["s"]))
+        assert abs(written[i] - j["s"]) < 1e-6, "every joint is a knot"
+        # geomdl normalises the knot vector to [0, 1].
+        k = (written[i] - written[0]) / (written[-1] - written[0])
+        eps = 1e-9
+        left, right = c.derivatives(k - eps, order=2), c.derivatives(k + eps, order=2)
+        ta = np.asarray(left[1]) / np.linalg.norm(left[1])
+        tb = np.asarray(right[1]) / np.linalg.norm(right[1])
+        assert np.linalg.norm(ta - tb) < 1e-6
+        # The signed curvature on either side is the path's, jump and all.
+        for (d1, d2), kappa in zip([left[1:], right[1:]], j["curvature"]):
+            d1, d2 = np.asarray(d1), np.asarray(d2)
+            signed = (d1[0] * d2[1] - d1[1] * d2[0]) / np.linalg.norm(d1) ** 3
+            assert abs(signed - kappa) < 1e-5 * (1 + abs(kappa)), (signed, kappa)
+
+
+def test_a_closed_path_ends_where_it_starts_in_every_reader(tmp_path):
+    curve = CURVES[5]
+    path, _ = export(tmp_path, curve, "step", 1e-8)
+    edges = occ_edges(path)
+    ordered = sorted(edges, key=lambda c: c.FirstParameter())
+    a, b = ordered[0], ordered[-1]
+    assert a.Value(a.FirstParameter()).Distance(b.Value(b.LastParameter())) < 1e-12
+    # And the seam is G2 as the path is: tangent and curvature vector equal there.
+    assert_g2(occ_d2(b, b.LastParameter()), occ_d2(a, a.FirstParameter()), True, 1.0)
+
+
+def test_lac_paths_result_on_standard_input_exports_the_same_file(tmp_path):
+    _, sub, args = CURVES[4]
+    result = run([sub, *args]).stdout
+    a, b = tmp_path / "a.dxf", tmp_path / "b.dxf"
+    run(["export", *args, "-o", str(a)])
+    proc = subprocess.run([lac_bin(), "export", "-", "-o", str(b)], input=result,
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    assert a.read_text() == b.read_text()

@@ -152,15 +152,17 @@ pub(crate) enum Command {
                                 [--samples N] [--format json|csv|svg] [-o FILE|-] [--comb] [--evolute]"
     )]
     Path(PathArgs),
-    /// Export a segment, compound curve or space segment for CAD: rational degree-3
+    /// Export a segment, compound curve, path or space segment for CAD: rational degree-3
     /// B-splines within a tolerance (DXF, STEP, IGES, JSON) or plain cubic Béziers (SVG), with
     /// the achieved deviation measured densely
     ///
     /// The curve is given as for lac segment, lac compound or lac space (--points with
     /// --alpha; --alpha0, --alpha1 and --ratio; or four 3-D points with --alpha and --beta), or
-    /// as one result of those commands in FILE or on standard input. Planar curves become the
-    /// quasi-aesthetic rational cubics of lac quasi (joined G2, each piece's curvature proven
-    /// monotone), space curves cubic Hermite pieces (joined C1); the pieces are written as one
+    /// as one result of those commands in FILE or on standard input; or a path (--polygon with
+    /// --alpha or --alphas, --closed, --g2 or --fractions, as lac path takes them, or lac
+    /// path's result). Planar curves become the quasi-aesthetic rational cubics of lac quasi
+    /// (joined G2, each piece's curvature proven monotone; a path segment by segment, its
+    /// joints knots with the path's continuity, G2 or G1), space curves cubic Hermite pieces (joined C1); the pieces are written as one
     /// clamped B-spline (interior knots of multiplicity 3), or with --pieces as one curve per
     /// piece. Lengths are in model units, declared as millimetres in DXF, STEP and IGES.
     ///
@@ -174,8 +176,10 @@ pub(crate) enum Command {
                                 --relative-tolerance R] [--pieces] -o FILE \
                                 --points … --alpha A [--alpha0 A --alpha1 B [--ratio R]] [--beta B \
                                 --omega W --type 1|2]\n       \
+                                lac export --format … -o FILE --polygon … (--alpha A | \
+                                --alphas …) [--closed] [--g2 | --fractions …]\n       \
                                 lac export [FILE|-] --format … -o FILE      \
-                                # a lac segment, compound or space result"
+                                # a lac segment, compound, path or space result"
     )]
     Export(ExportArgs),
     /// Start the interactive editor: a local web server with the editor's page (embedded,
@@ -689,8 +693,9 @@ pub(crate) struct ServeArgs {
 /// Arguments of `lac export`.
 #[derive(Debug, Args)]
 pub(crate) struct ExportArgs {
-    /// One result of lac segment, lac compound or lac space to export ("-": standard input;
-    /// nothing, without --points: standard input when it is not a terminal)
+    /// One result of lac segment, lac compound, lac path or lac space to export ("-":
+    /// standard input; nothing, without --points or --polygon: standard input when it is
+    /// not a terminal)
     #[arg(value_name = "FILE", conflicts_with = "points")]
     pub(crate) input: Option<PathBuf>,
 
@@ -700,9 +705,42 @@ pub(crate) struct ExportArgs {
     #[arg(long, value_name = "POINTS", allow_hyphen_values = true)]
     pub(crate) points: Option<String>,
 
-    /// A segment's (or space segment's) slope of the logarithmic curvature graph
+    /// A segment's (or space segment's, or every path segment's) slope of the logarithmic
+    /// curvature graph
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub(crate) alpha: Option<f64>,
+
+    /// A path: the control polygon "x0,y0 x1,y1 …" (at least three points), with --alpha
+    /// or --alphas, and --closed, --g2 or --fractions as lac path takes them
+    #[arg(
+        long,
+        value_name = "POINTS",
+        allow_hyphen_values = true,
+        conflicts_with_all = ["points", "input"]
+    )]
+    pub(crate) polygon: Option<String>,
+
+    /// A path: one slope per segment "a1,a2,…"
+    #[arg(
+        long,
+        value_name = "LIST",
+        allow_hyphen_values = true,
+        requires = "polygon",
+        conflicts_with = "alpha"
+    )]
+    pub(crate) alphas: Option<String>,
+
+    /// A path: close the polygon
+    #[arg(long, requires = "polygon")]
+    pub(crate) closed: bool,
+
+    /// A path: solve the joints for continuous curvature (G2)
+    #[arg(long, requires = "polygon", conflicts_with = "fractions")]
+    pub(crate) g2: bool,
+
+    /// A path (G1): the fraction of each joint leg at which its joint lies "t1,t2,…"
+    #[arg(long, value_name = "LIST", requires = "polygon")]
+    pub(crate) fractions: Option<String>,
 
     /// A compound curve: the slope of the piece from the first point to the joint
     #[arg(long, value_name = "A", allow_hyphen_values = true)]

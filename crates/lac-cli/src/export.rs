@@ -1,13 +1,14 @@
-//! `lac export`: a segment, compound curve or space segment written for CAD systems as
+//! `lac export`: a segment, compound curve, path or space segment written for CAD systems as
 //! rational degree-3 B-splines (DXF, STEP, IGES, JSON) or plain cubics (SVG) within a
 //! tolerance, with the deviation achieved measured on what was written
 //! ([`lac_io::export`]).
 
-use std::time::{SystemTime, UNIX_EPOCH};
-
 use lac::Tolerance;
 use lac_io::export::{export, ExportCurve, Format, Meta, DEFAULT_TOLERANCE};
-use lac_io::json::{to_line, CurveInput, ErrorBody, LcgInput, SegmentInput, Solved, SpaceInput};
+use lac_io::json::{
+    to_line, CurveInput, ErrorBody, LcgInput, PathInput, PathReport, SegmentInput, Solved,
+    SpaceInput,
+};
 
 use crate::cli::{ExportArgs, ExportFormat};
 use crate::compound;
@@ -15,15 +16,18 @@ use crate::errors;
 use crate::input::read_document;
 use crate::limits::Limits;
 use crate::output::write_document;
+use crate::path::path_input;
 use crate::points::{parse_points, parse_space_points};
 
 /// What to give when there is nothing to read.
-const HINT: &str = "give --points with --alpha (and --alpha0/--alpha1/--ratio or --beta), or a \
-                    FILE with a lac segment, compound or space result, or pipe one in";
+const HINT: &str = "give --points with --alpha (and --alpha0/--alpha1/--ratio or --beta), \
+                    --polygon with --alpha or --alphas, or a FILE with a lac segment, \
+                    compound, path or space result, or pipe one in";
 
 /// What the arguments ask to export.
 enum Input {
     Plane(CurveInput),
+    Path(PathInput),
     Space(SpaceInput),
 }
 
@@ -38,7 +42,21 @@ pub(crate) fn run(args: &ExportArgs, limits: Limits) -> Result<(), ErrorBody> {
         (Some(t), None) => Tolerance::Absolute(t),
         (None, None) => Tolerance::Absolute(DEFAULT_TOLERANCE),
     };
-    let input = if args.points.is_some() {
+    let input = if let Some(polygon) = &args.polygon {
+        if args.alpha0.is_some() || args.alpha1.is_some() || args.beta.is_some() {
+            return Err(errors::usage(
+                "a path takes --alpha or --alphas: drop --alpha0, --alpha1 and --beta",
+            ));
+        }
+        Input::Path(path_input(
+            polygon,
+            args.alpha,
+            args.alphas.as_deref(),
+            args.closed,
+            args.g2,
+            args.fractions.as_deref(),
+        )?)
+    } else if args.points.is_some() {
         from_arguments(args)?
     } else {
         if args.alpha.is_some()
@@ -46,37 +64,36 @@ pub(crate) fn run(args: &ExportArgs, limits: Limits) -> Result<(), ErrorBody> {
             || args.beta.is_some()
             || args.alpha1.is_some()
         {
-            return Err(errors::usage("the curve's parameters need --points"));
+            return Err(errors::usage(
+                "the curve's parameters need --points (or --polygon for a path)",
+            ));
         }
         let text = read_document(args.input.as_deref(), limits.document(), HINT)?;
-        match LcgInput::parse(&text)? {
-            LcgInput::Curve(c) => Input::Plane(c),
-            LcgInput::Space(s) => Input::Space(s),
-            LcgInput::Pieces(_) => {
-                return Err(ErrorBody::invalid_input(
-                    "lac export needs the exact curve (a lac segment, compound or space \
-                     result), not Bézier pieces",
-                ))
-            }
-        }
+        parse_document(&text)?
     };
-    let meta = Meta {
-        name: args
-            .file
+    let meta = Meta::now(
+        args.file
             .as_deref()
             .and_then(|p| p.file_stem())
             .and_then(|s| s.to_str())
             .filter(|s| *s != "-")
-            .unwrap_or("lac-curve")
-            .to_string(),
-        timestamp: timestamp(SystemTime::now()),
-        version: env!("CARGO_PKG_VERSION").to_string(),
-    };
+            .unwrap_or("lac-curve"),
+    );
     let exported = match &input {
         Input::Plane(c) => {
             let solved: Solved = c.solve()?;
             export(
                 &ExportCurve::Plane(&solved),
+                format,
+                tolerance,
+                args.pieces,
+                &meta,
+            )?
+        }
+        Input::Path(p) => {
+            let path = p.solve()?;
+            export(
+                &ExportCurve::Path(&path),
                 format,
                 tolerance,
                 args.pieces,
@@ -97,6 +114,36 @@ pub(crate) fn run(args: &ExportArgs, limits: Limits) -> Result<(), ErrorBody> {
     write_document(args.file.as_deref(), exported.document.as_bytes())?;
     eprintln!("{}", to_line(&exported.report));
     Ok(())
+}
+
+/// A document to export: `lac path`'s result (told by its `"segments"` and `"joints"`), a
+/// path's input (`{"points":[…],"alpha"|"alphas":…,"closed"|"g2"|"fractions":…}`), or what
+/// [`LcgInput`] reads (a segment, compound or space result).
+fn parse_document(text: &str) -> Result<Input, ErrorBody> {
+    let value: Option<serde_json::Value> = serde_json::from_str(text).ok();
+    let has = |key: &str| value.as_ref().is_some_and(|v| v.get(key).is_some());
+    if has("segments") && has("joints") {
+        let report: PathReport = serde_json::from_str(text)
+            .map_err(|e| ErrorBody::invalid_input(format!("a lac path result: {e}")))?;
+        return Ok(Input::Path(report.input()));
+    }
+    if ["alphas", "closed", "g2", "fractions"]
+        .iter()
+        .any(|k| has(k))
+    {
+        let input: PathInput = serde_json::from_str(text).map_err(|e| {
+            ErrorBody::invalid_input(format!("a path: {e}; expected {}", PathInput::SHAPE))
+        })?;
+        return Ok(Input::Path(input));
+    }
+    match LcgInput::parse(text)? {
+        LcgInput::Curve(c) => Ok(Input::Plane(c)),
+        LcgInput::Space(s) => Ok(Input::Space(s)),
+        LcgInput::Pieces(_) => Err(ErrorBody::invalid_input(
+            "lac export needs the exact curve (a lac segment, compound, path or space \
+             result), not Bézier pieces",
+        )),
+    }
 }
 
 /// `--format`, or the format named by the extension of `-o`.
@@ -167,44 +214,5 @@ fn from_arguments(args: &ExportArgs) -> Result<Input, ErrorBody> {
             "give --alpha for a segment, --alpha0 and --alpha1 (and --ratio for three points) \
              for a compound curve, or --alpha and --beta for a space segment",
         )),
-    }
-}
-
-/// `YYYY-MM-DDTHH:MM:SS` (UTC) of `time`.
-fn timestamp(time: SystemTime) -> String {
-    let secs = time
-        .duration_since(UNIX_EPOCH)
-        .map(|d| d.as_secs())
-        .unwrap_or(0);
-    let (days, rest) = ((secs / 86_400) as i64, secs % 86_400);
-    // Days to civil date (proleptic Gregorian), after H. Hinnant's `civil_from_days`.
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let day = doy - (153 * mp + 2) / 5 + 1;
-    let month = if mp < 10 { mp + 3 } else { mp - 9 };
-    let year = yoe + era * 400 + i64::from(month <= 2);
-    format!(
-        "{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}",
-        rest / 3600,
-        rest % 3600 / 60,
-        rest % 60
-    )
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use std::time::Duration;
-
-    #[test]
-    fn timestamps_are_utc_calendar_dates() {
-        let at = |s| timestamp(UNIX_EPOCH + Duration::from_secs(s));
-        assert_eq!(at(0), "1970-01-01T00:00:00");
-        assert_eq!(at(951_782_400), "2000-02-29T00:00:00");
-        assert_eq!(at(1_795_000_000), "2026-11-18T11:06:40");
     }
 }

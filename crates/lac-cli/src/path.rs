@@ -17,29 +17,14 @@ pub(crate) fn run(args: &PathArgs, limits: Limits) -> Result<(), ErrorBody> {
     let output = &args.output;
     check_output(output, false)?;
     let samples = limits.samples(output.samples as usize, "--samples")?;
-    let points: Vec<Xy> = parse_polygon(&args.polygon, 3, lac::MAX_POLYGON_POINTS)?;
-    let alphas = args
-        .alphas
-        .as_deref()
-        .map(|t| numbers(t, "--alphas"))
-        .transpose()?;
-    if args.alpha.is_none() && alphas.is_none() {
-        return Err(errors::usage(
-            "give --alpha A (every segment) or --alphas \"a1,a2,…\"",
-        ));
-    }
-    let input = PathInput {
-        points,
-        closed: args.closed,
-        alpha: args.alpha,
-        alphas,
-        g2: args.g2,
-        fractions: args
-            .fractions
-            .as_deref()
-            .map(|t| numbers(t, "--fractions"))
-            .transpose()?,
-    };
+    let input = path_input(
+        &args.polygon,
+        args.alpha,
+        args.alphas.as_deref(),
+        args.closed,
+        args.g2,
+        args.fractions.as_deref(),
+    )?;
     let path = input.solve()?;
     let document = match output.format {
         CurveFormat::Json => to_line(&PathReport::new(&path, samples)?) + "\n",
@@ -60,6 +45,38 @@ pub(crate) fn run(args: &PathArgs, limits: Limits) -> Result<(), ErrorBody> {
         }
     };
     write_document(output.file.as_deref(), document.as_bytes())
+}
+
+/// The path of the arguments `--polygon`, `--alpha`/`--alphas`, `--closed`, `--g2`,
+/// `--fractions` (`lac path`'s, also taken by `lac export`).
+pub(crate) fn path_input(
+    polygon: &str,
+    alpha: Option<f64>,
+    alphas: Option<&str>,
+    closed: bool,
+    g2: bool,
+    fractions: Option<&str>,
+) -> Result<PathInput, ErrorBody> {
+    let points: Vec<Xy> = parse_polygon(polygon, 3, lac::MAX_POLYGON_POINTS)?;
+    let alphas = alphas.map(|t| numbers(t, "--alphas")).transpose()?;
+    if alpha.is_none() && alphas.is_none() {
+        return Err(errors::usage(
+            "give --alpha A (every segment) or --alphas \"a1,a2,…\"",
+        ));
+    }
+    if g2 && fractions.is_some() {
+        return Err(errors::usage(
+            "--fractions place the joints of a G1 path; --g2 solves them: drop one",
+        ));
+    }
+    Ok(PathInput {
+        points,
+        closed,
+        alpha,
+        alphas,
+        g2,
+        fractions: fractions.map(|t| numbers(t, "--fractions")).transpose()?,
+    })
 }
 
 /// Numbers separated by commas, spaces or semicolons.

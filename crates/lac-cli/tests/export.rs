@@ -153,3 +153,117 @@ fn refusals_say_why_and_leave_an_existing_file_alone() {
     let run = lac_with_input(&["export", "--format", "json"], quasi.stdout.as_bytes());
     assert_failure(&run, 2, "invalid_input");
 }
+
+/// A convex polygon, so that a G2 path exists (the turning keeps its direction).
+const POLYGON: &str = "0,0 3,0 4,2 2,4 -1,2";
+
+#[test]
+fn a_path_exports_from_its_arguments_or_from_lac_paths_result_with_its_joints_as_knots() {
+    for (extra, continuity) in [
+        (vec!["--alpha", "1", "--g2"], "G2"),
+        (vec!["--alphas", "1,0.5,0.8"], "G1"),
+    ] {
+        let mut curve = vec!["--polygon", POLYGON];
+        curve.extend_from_slice(&extra);
+        let direct = lac(&args(&curve, &["--format", "json", "--tolerance", "1e-8"]));
+        assert_eq!(direct.code, 0, "{}", direct.stderr);
+        let doc: serde_json::Value = serde_json::from_str(&direct.stdout).unwrap();
+        assert_eq!(doc["kind"], "path");
+        assert_eq!(doc["continuity"], continuity);
+        assert_eq!(doc["monotone_proven"], true);
+        assert!(doc["max_deviation"].as_f64().unwrap() <= 1e-8);
+        // lac path's JSON, piped in, is the same path and the same file.
+        let mut path = vec!["path"];
+        path.extend_from_slice(&curve);
+        let solved = lac(&path);
+        assert_eq!(solved.code, 0, "{}", solved.stderr);
+        let piped = lac_with_input(
+            &["export", "--format", "json", "--tolerance", "1e-8"],
+            solved.stdout.as_bytes(),
+        );
+        assert_eq!(piped.code, 0, "{}", piped.stderr);
+        assert_eq!(piped.stdout, direct.stdout);
+        // Every joint of the path is a knot of the B-spline (the knots are the pieces'
+        // cumulative arc lengths: within the tolerance's effect on length).
+        let report: serde_json::Value = serde_json::from_str(&solved.stdout).unwrap();
+        let knots: Vec<f64> = doc["curves"][0]["knots"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|k| k.as_f64().unwrap())
+            .collect();
+        for joint in report["joints"].as_array().unwrap() {
+            let s = joint["s"].as_f64().unwrap();
+            let near = knots
+                .iter()
+                .fold(f64::INFINITY, |m, k| m.min((k - s).abs()));
+            assert!(near < 1e-6, "joint at s = {s}: nearest knot {near} away");
+        }
+        assert!(
+            doc["pieces"].as_u64().unwrap() >= 3,
+            "one chain per segment at least"
+        );
+    }
+}
+
+#[test]
+fn a_closed_path_is_a_curve_whose_ends_meet() {
+    for g in [&["--g2"][..], &[][..]] {
+        let mut curve = vec!["--polygon", POLYGON, "--alpha", "0.5", "--closed"];
+        curve.extend_from_slice(g);
+        let run = lac(&args(&curve, &["--format", "json"]));
+        assert_eq!(run.code, 0, "{}", run.stderr);
+        let doc: serde_json::Value = serde_json::from_str(&run.stdout).unwrap();
+        let points = doc["curves"][0]["control_points"].as_array().unwrap();
+        let (first, last) = (&points[0], &points[points.len() - 1]);
+        for k in 0..2 {
+            let d = first[k].as_f64().unwrap() - last[k].as_f64().unwrap();
+            assert!(d.abs() < 1e-12, "{first} vs {last}");
+        }
+        assert_eq!(doc["continuity"], if g.is_empty() { "G1" } else { "G2" });
+    }
+}
+
+#[test]
+fn path_refusals() {
+    // Path flags need --polygon; a path takes no compound or space slopes.
+    assert_failure(
+        &lac(&args(&SEGMENT, &["--alphas", "1,2", "--format", "json"])),
+        2,
+        "usage",
+    );
+    assert_failure(
+        &lac(&[
+            "export",
+            "--polygon",
+            POLYGON,
+            "--alpha0",
+            "1",
+            "--alpha1",
+            "2",
+            "--format",
+            "json",
+        ]),
+        2,
+        "usage",
+    );
+    assert_failure(
+        &lac(&["export", "--polygon", POLYGON, "--format", "json"]),
+        2,
+        "usage",
+    );
+    // A polygon whose turning changes direction has no G2 path: the solver's refusal.
+    let run = lac(&[
+        "export",
+        "--polygon",
+        "0,0 1,0 2,1 3,0",
+        "--alpha",
+        "1",
+        "--g2",
+        "--format",
+        "dxf",
+    ]);
+    assert_ne!(run.code, 0);
+    assert!(run.stderr.contains("no_g2_path"), "{}", run.stderr);
+    assert!(run.stdout.is_empty());
+}

@@ -2191,6 +2191,21 @@ impl PathReport {
     pub fn to_csv(&self) -> String {
         samples_csv(&self.samples)
     }
+
+    /// What solves this path again: its polygon, closure, the segments' slopes, and a G2
+    /// solve or (G1) the joints' leg fractions. (Numbers are printed to round trip, so the
+    /// path solved again is the one reported.)
+    pub fn input(&self) -> PathInput {
+        let g2 = self.continuity == "g2";
+        PathInput {
+            points: self.points.clone(),
+            closed: self.closed,
+            alpha: None,
+            alphas: Some(self.segments.iter().map(|g| g.alpha).collect()),
+            g2,
+            fractions: (!g2).then(|| self.joints.iter().map(|j| j.fraction).collect()),
+        }
+    }
 }
 
 impl Report for PathReport {

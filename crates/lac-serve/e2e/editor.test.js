@@ -348,6 +348,48 @@ test('a shared link reproduces a design with typed values exactly', async () => 
   await context.close();
 });
 
+test('CAD export: the menu downloads the STEP, DXF, IGES and NURBS JSON that lac export writes', async () => {
+  /** Choose `format` in the CAD menu; the downloaded file's name and text. */
+  async function cad(page, format) {
+    const download = page.waitForEvent('download');
+    await page.selectOption('#export-cad', format);
+    const d = await download;
+    return { name: d.suggestedFilename(), text: readFileSync(await d.path(), 'utf8') };
+  }
+  const { page, context, errors } = await openEditor('#mode=segment');
+  const step = await cad(page, 'step');
+  assert.equal(step.name, 'lac-segment.step');
+  assert.ok(step.text.startsWith('ISO-10303-21;'), step.text.slice(0, 40));
+  assert.match(step.text, /RATIONAL_B_SPLINE_CURVE/);
+  assert.ok(step.text.trimEnd().endsWith('END-ISO-10303-21;'));
+  assert.equal(await page.inputValue('#export-cad'), '', 'the menu goes back to its title');
+  // DXF carries no timestamp: the page's file is lac export's, byte for byte.
+  const dxf = await cad(page, 'dxf');
+  assert.equal(dxf.name, 'lac-segment.dxf');
+  const d = (await editorState(page)).design;
+  const cli = execFileSync(LAC_BIN, ['export', pointsArg(d.points), '--alpha', String(d.alpha), '--format', 'dxf', '--tolerance', '1e-6', '-o', '-'], { encoding: 'utf8' });
+  assert.equal(dxf.text, cli);
+  await context.close();
+
+  // A space curve as IGES: 80-column records, the Start section first.
+  const space = await openEditor('#mode=space');
+  const iges = await cad(space.page, 'iges');
+  assert.equal(iges.name, 'lac-space.igs');
+  const lines = iges.text.split('\n').filter((l) => l.length > 0);
+  assert.ok(lines.every((l) => l.replace(/\r$/, '').length === 80));
+  assert.equal(lines[0][72], 'S');
+  await space.context.close();
+
+  // Quasi mode exports its exact segment (not the Bézier pieces): NURBS JSON within 1e-6.
+  const quasi = await openEditor('#mode=quasi');
+  const json = JSON.parse((await cad(quasi.page, 'json')).text);
+  assert.equal(json.kind, 'segment');
+  assert.equal(json.curves[0].degree, 3);
+  assert.ok(json.max_deviation <= 1e-6);
+  await quasi.context.close();
+  assert.deepEqual([...errors, ...space.errors, ...quasi.errors], []);
+});
+
 test('on a narrow touch screen the points drag with a finger', async () => {
   const { page, context, errors } = await openEditor('#mode=compound', {
     viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true, deviceScaleFactor: 2,

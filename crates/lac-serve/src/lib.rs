@@ -60,6 +60,7 @@ pub fn router_with(limits: Limits) -> Router {
         .route("/api/region", post(api::region))
         .route("/api/region/point", post(api::point_region))
         .route("/api/space", post(api::space))
+        .route("/api/export", post(api::export))
         .fallback(error::not_found)
         .method_not_allowed_fallback(error::method_not_allowed)
         .with_state(app)

@@ -31,6 +31,9 @@ pub struct Limits {
     pub timeout: Duration,
     /// Canonical region maps kept (they depend only on α, or α0, α1 and the ratio).
     pub cached_regions: usize,
+    /// The smallest export tolerance, relative to the arc length (`/api/export`): tighter
+    /// ones take many pieces (space curves: error ∝ h⁴) and seconds of work.
+    pub min_export_relative_tolerance: f64,
 }
 
 impl Default for Limits {
@@ -47,6 +50,7 @@ impl Default for Limits {
             in_flight: 256,
             timeout: Duration::from_secs(10),
             cached_regions: 32,
+            min_export_relative_tolerance: 1e-10,
         }
     }
 }

@@ -625,3 +625,163 @@ fn number_spans(text: &[u8]) -> Vec<(usize, usize)> {
     }
     spans
 }
+
+/// The header `name` of `answer` as text.
+fn header<'a>(answer: &'a common::Answer, name: &str) -> &'a str {
+    answer
+        .headers
+        .get(name)
+        .unwrap_or_else(|| panic!("no {name} header"))
+        .to_str()
+        .unwrap()
+}
+
+#[tokio::test]
+async fn export_answers_the_cad_file_with_its_type_name_and_report() {
+    // The page's own bodies (with its "samples", ignored) plus a format and a tolerance.
+    let cases = [
+        (
+            r#"{"points":[[-1,0],[-0.2,0.8],[1,0]],"alpha":0.5,"samples":201,"format":"step"}"#,
+            "model/step",
+            "lac-curve.step",
+            "ISO-10303-21;",
+            "segment",
+        ),
+        (
+            r#"{"points":[[0,0],[2,0],[2.6,1.2]],"alpha0":-1,"alpha1":2,"ratio":0.5,"format":"dxf","tolerance":1e-8,"name":"valley"}"#,
+            "image/vnd.dxf",
+            "valley.dxf",
+            "  0\nSECTION",
+            "compound",
+        ),
+        (
+            r#"{"points":[[0,0,0],[3,0,0],[3,3,1.5],[0,3,3]],"alpha":0.5,"beta":0,"omega":0.3,"type":1,"format":"iges","pieces":true}"#,
+            "model/iges",
+            "lac-curve.igs",
+            "",
+            "space",
+        ),
+        (
+            r#"{"points":[[0,0],[3,0],[4,2],[2,4],[-1,2]],"alpha":0.5,"closed":true,"g2":true,"format":"json","relative_tolerance":1e-7}"#,
+            "application/json",
+            "lac-curve.json",
+            "{\"curves\":",
+            "path",
+        ),
+        (
+            r#"{"points":[[0,0],[3,0],[4,1.5]],"alpha":-1,"format":"svg"}"#,
+            "image/svg+xml",
+            "lac-curve.svg",
+            "<?xml",
+            "segment",
+        ),
+    ];
+    for (body, content_type, file, start, kind) in cases {
+        let answer = post(&app(), "/api/export", body).await;
+        assert_eq!(answer.status, StatusCode::OK, "{}", answer.text);
+        assert_eq!(answer.content_type, content_type);
+        assert_eq!(
+            header(&answer, "content-disposition"),
+            format!("attachment; filename=\"{file}\"")
+        );
+        assert!(
+            answer.text.starts_with(start),
+            "{file}: {}",
+            &answer.text[..40]
+        );
+        let report: Value = serde_json::from_str(header(&answer, "x-lac-export")).unwrap();
+        assert_eq!(report["kind"], kind);
+        assert!(f(&report["max_deviation"]) <= f(&report["tolerance"]));
+        assert!(report["pieces"].as_u64().unwrap() >= 1);
+    }
+}
+
+#[tokio::test]
+async fn export_writes_what_lac_io_writes() {
+    // DXF carries no timestamp: the answer is lac_io's document byte for byte.
+    let body = r#"{"points":[[0,0],[3,0],[4.2,1.9]],"alpha":0.5,"format":"dxf","tolerance":1e-7}"#;
+    let answer = post(&app(), "/api/export", body).await;
+    assert_eq!(answer.status, StatusCode::OK, "{}", answer.text);
+    let input: SegmentInput =
+        serde_json::from_str(r#"{"points":[[0,0],[3,0],[4.2,1.9]],"alpha":0.5}"#).unwrap();
+    let solved = lac_io::json::Solved::Segment(input.solve().unwrap());
+    let expected = lac_io::export::export(
+        &lac_io::export::ExportCurve::Plane(&solved),
+        lac_io::export::Format::Dxf,
+        lac::Tolerance::Absolute(1e-7),
+        false,
+        &lac_io::export::Meta::now("x"),
+    )
+    .unwrap();
+    assert_eq!(answer.text, expected.document);
+}
+
+#[tokio::test]
+async fn export_refusals_are_json_4xx() {
+    let segment = r#""points":[[-1,0],[-0.2,0.8],[1,0]],"alpha":0.5"#;
+    for (extra, status, kind) in [
+        ("", StatusCode::BAD_REQUEST, "invalid_input"),
+        (
+            r#","format":"pdf""#,
+            StatusCode::BAD_REQUEST,
+            "invalid_input",
+        ),
+        (
+            r#","format":"step","tolerance":1e-6,"relative_tolerance":1e-6"#,
+            StatusCode::BAD_REQUEST,
+            "invalid_input",
+        ),
+        (
+            r#","format":"step","tolerance":0"#,
+            StatusCode::BAD_REQUEST,
+            "out_of_range",
+        ),
+        // Finer than the server's limit (1e-10 of the arc length, about 2.3).
+        (
+            r#","format":"step","tolerance":1e-11"#,
+            StatusCode::BAD_REQUEST,
+            "limit",
+        ),
+        (
+            r#","format":"step","name":"../etc/passwd""#,
+            StatusCode::BAD_REQUEST,
+            "invalid_input",
+        ),
+    ] {
+        let answer = post(&app(), "/api/export", &format!("{{{segment}{extra}}}")).await;
+        assert_eq!(answer.status, status, "{extra}: {}", answer.text);
+        assert_eq!(answer.content_type, "application/json");
+        assert_eq!(answer.kind(), kind, "{extra}: {}", answer.text);
+    }
+    let space = r#"{"points":[[0,0,0],[3,0,0],[3,3,1.5],[0,3,3]],"alpha":0.5,"beta":0,"omega":0.3,"format":"svg"}"#;
+    let answer = post(&app(), "/api/export", space).await;
+    assert_eq!(answer.status, StatusCode::BAD_REQUEST);
+    assert_eq!(answer.kind(), "usage");
+    // Not drawable: 422, as /api/segment answers it.
+    let answer = post(
+        &app(),
+        "/api/export",
+        r#"{"points":[[0,0],[1,0],[1.01,2]],"alpha":3,"format":"dxf"}"#,
+    )
+    .await;
+    assert_eq!(
+        answer.status,
+        StatusCode::UNPROCESSABLE_ENTITY,
+        "{}",
+        answer.text
+    );
+    // A path without a G2 solution: 422 with the solver's kind.
+    let answer = post(
+        &app(),
+        "/api/export",
+        r#"{"points":[[0,0],[1,0],[2,1],[3,0]],"alpha":1,"g2":true,"format":"dxf"}"#,
+    )
+    .await;
+    assert_eq!(
+        answer.status,
+        StatusCode::UNPROCESSABLE_ENTITY,
+        "{}",
+        answer.text
+    );
+    assert_eq!(answer.kind(), "no_g2_path");
+}

@@ -56,6 +56,16 @@ fn templates() -> Vec<(&'static str, Value)> {
             json!({"points": [[0, 0, 0], [1, 0, 0], [1.5, 0.8, 0.2], [1.6, 1.6, 0.6]],
                    "alpha": 0.5, "beta": 0.5, "omega": 0.1}),
         ),
+        (
+            "/api/export",
+            json!({"points": [[-1, 0], [-0.2, 0.8], [1, 0]], "alpha": 0.5, "format": "step",
+                   "tolerance": 1e-4}),
+        ),
+        (
+            "/api/export",
+            json!({"points": [[0, 0], [3, 0], [4, 2], [2, 4], [-1, 2]], "alpha": 0.5,
+                   "closed": true, "g2": true, "format": "dxf", "relative_tolerance": 1e-5}),
+        ),
     ]
 }
 

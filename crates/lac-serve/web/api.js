@@ -31,3 +31,46 @@ export async function post(path, body) {
     : { kind: 'internal', message: `the server answered ${response.status} without a report` };
   return { error, status: response.status };
 }
+
+/** POST `body` as JSON to `path`, whose answer is a file: {ok: {text, type, name, report}}
+ * (`report` from the X-Lac-Export header, or null) or {error: {kind, message}, status}. */
+export async function postFile(path, body) {
+  let response;
+  try {
+    response = await fetch(path, {
+      method: 'POST',
+      headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify(body),
+    });
+  } catch (e) {
+    return {
+      error: {
+        kind: 'network',
+        message: `the server did not answer (${e.message}); is lac serve still running?`,
+      },
+      status: 0,
+    };
+  }
+  const text = await response.text();
+  if (!response.ok) {
+    let error = null;
+    try {
+      error = JSON.parse(text).error;
+    } catch {
+      // Not JSON: reported below.
+    }
+    return {
+      error: error || { kind: 'internal', message: `the server answered ${response.status}` },
+      status: response.status,
+    };
+  }
+  const disposition = response.headers.get('Content-Disposition') || '';
+  const name = (disposition.match(/filename="([^"]+)"/) || [])[1] || 'lac-curve';
+  let report = null;
+  try {
+    report = JSON.parse(response.headers.get('X-Lac-Export'));
+  } catch {
+    // No report: the file is still good.
+  }
+  return { ok: { text, type: response.headers.get('Content-Type') || '', name, report } };
+}

@@ -1,5 +1,6 @@
-// Export: the current curve as an SVG drawing (in the design's own coordinates) and the design
-// file as JSON; and saving text to a file in the browser.
+// Export: the current curve as an SVG drawing (in the design's own coordinates), the design
+// file as JSON, the request of a CAD file (/api/export: DXF, STEP, IGES, NURBS JSON); and
+// saving text to a file in the browser.
 
 import { geometry, COLORS } from './draw.js';
 import { bounds } from './view.js';
@@ -87,4 +88,14 @@ export function download(name, text, type) {
   a.click();
   a.remove();
   setTimeout(() => URL.revokeObjectURL(url), 1000);
+}
+
+/** The /api/export request for `design` in `mode`: the exact curve's fields (quasi mode
+ * exports its exact segment, not its Bézier pieces, so its relative `tolerance` and `cubic`
+ * go), the format, and 1e-6 model units. */
+export function cadRequest(mode, design, format) {
+  const body = JSON.parse(JSON.stringify(design));
+  delete body.tolerance;
+  delete body.cubic;
+  return { ...body, format, tolerance: 1e-6, name: `lac-${mode}` };
 }

@@ -1,7 +1,7 @@
 // The editor: state, the panel, dragging, the update loop (request, solve, response, redraw),
 // the drawable region, undo/redo, the URL fragment, import and export.
 
-import { post } from './api.js';
+import { post, postFile } from './api.js';
 import {
   MODES, DEFAULT_SHOW, REGION_CHOICES, defaultDesigns, clone, request,
   toFragment, fromFragment, toFile, fromFile, History,
@@ -10,7 +10,7 @@ import { View, bounds, similarity } from './view.js';
 import { drawPlane, regionImage, geometry } from './draw.js';
 import { linePlot } from './plots.js';
 import { SpaceViews, combTips } from './space.js';
-import { planeSvg, spaceSvg, download } from './export.js';
+import { planeSvg, spaceSvg, download, cadRequest } from './export.js';
 
 /** Samples of a curve (and points of its curvature plot, at the same arc lengths). */
 const SAMPLES = 257;
@@ -880,6 +880,19 @@ function wire() {
   $('export-json').addEventListener('click', () => {
     const report = isStale() ? null : state.answer;
     download(`lac-${state.mode}.json`, toFile(state.mode, design(), report), 'application/json');
+  });
+  $('export-cad').addEventListener('change', async (e) => {
+    const format = e.target.value;
+    e.target.value = '';
+    if (!format) return;
+    if (isStale()) return toast('Fix the curve first: this design has no curve to export');
+    const result = await postFile('/api/export', cadRequest(state.mode, design(), format));
+    if (result.error) return toast(`Export failed: ${result.error.message}`);
+    const { text, type, name, report } = result.ok;
+    download(name, text, type);
+    if (report) {
+      toast(`${format.toUpperCase()}: ${report.pieces} pieces, deviation ${report.max_deviation.toExponential(1)} (≤ ${report.tolerance.toExponential(0)})`);
+    }
   });
   $('import').addEventListener('change', async (e) => {
     const file = e.target.files[0];

@@ -1,4 +1,4 @@
-//! CAD export: a log-aesthetic curve (segment, compound curve, space segment) as rational
+//! CAD export: a log-aesthetic curve (segment, compound curve, path, space segment) as rational
 //! degree-3 B-splines within a tolerance, with the achieved deviation measured densely, in
 //! DXF, STEP, IGES, SVG (plain cubics) or JSON.
 //!
@@ -10,6 +10,11 @@
 //! reported is [`certify::deviation`] of the B-spline as written; when it exceeds the
 //! tolerance (the fits measure their own deviation more coarsely) the fit is repeated with
 //! a smaller target, and the export is refused when that does not help.
+//!
+//! A multi-segment path is fitted segment by segment (each segment's chain interpolates its
+//! ends, end tangents and end curvatures), so every path joint is a knot of the B-spline
+//! and the joins there are as the path is: G2 for a G2 path, G1 (curvature jumping as in
+//! the path) for a G1 path. A closed path is written as a clamped curve whose ends meet.
 
 pub mod certify;
 pub mod dxf;
@@ -20,9 +25,13 @@ pub mod nurbs;
 pub mod step;
 pub mod svg;
 
+use std::time::{SystemTime, UNIX_EPOCH};
+
 use serde::{Deserialize, Serialize};
 
-use lac::{Error, SpaceSegment, Tolerance, MIN_RELATIVE_TOLERANCE};
+use lac::{
+    Continuity, Curve, Error, Path, QuasiCurve, SpaceSegment, Tolerance, MIN_RELATIVE_TOLERANCE,
+};
 
 use crate::json::{ErrorBody, Solved};
 use certify::{deviation, Exact, PlaneExact, SpaceExact};
@@ -66,12 +75,61 @@ pub struct Meta {
     pub version: String,
 }
 
+impl Meta {
+    /// The file named `name`, written now by this version of lac.
+    pub fn now(name: impl Into<String>) -> Meta {
+        Meta {
+            name: name.into(),
+            timestamp: timestamp(SystemTime::now()),
+            version: env!("CARGO_PKG_VERSION").to_string(),
+        }
+    }
+}
+
+/// `YYYY-MM-DDTHH:MM:SS` (UTC) of `time`.
+pub fn timestamp(time: SystemTime) -> String {
+    let secs = time
+        .duration_since(UNIX_EPOCH)
+        .map(|d| d.as_secs())
+        .unwrap_or(0);
+    let (days, rest) = ((secs / 86_400) as i64, secs % 86_400);
+    // Days to civil date (proleptic Gregorian), after H. Hinnant's `civil_from_days`.
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    format!(
+        "{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}",
+        rest / 3600,
+        rest % 3600 / 60,
+        rest % 60
+    )
+}
+
 /// The curve to export.
 pub enum ExportCurve<'a> {
     /// A planar segment or compound curve.
     Plane(&'a Solved),
+    /// A multi-segment planar path.
+    Path(&'a Path),
     /// A space segment.
     Space(&'a SpaceSegment),
+}
+
+impl ExportCurve<'_> {
+    /// The planar curve, if it is one.
+    fn plane(&self) -> Option<&dyn Curve> {
+        match self {
+            ExportCurve::Plane(s) => Some(s.curve()),
+            ExportCurve::Path(p) => Some(*p),
+            ExportCurve::Space(_) => None,
+        }
+    }
 }
 
 /// How an export went: `lac export`'s report.
@@ -79,7 +137,7 @@ pub enum ExportCurve<'a> {
 pub struct ExportReport {
     /// The format written.
     pub format: Format,
-    /// `"segment"`, `"compound"` or `"space"`.
+    /// `"segment"`, `"compound"`, `"path"` or `"space"`.
     pub kind: String,
     /// Bézier pieces (knot spans).
     pub pieces: usize,
@@ -96,7 +154,8 @@ pub struct ExportReport {
     pub samples_per_piece: usize,
     /// Arc length of the exact curve.
     pub arc_length: f64,
-    /// Continuity at the joins: `"G2"` (planar) or `"C1"` (space).
+    /// Continuity at the joins: `"G2"` (planar; a G2 path), `"G1"` (a G1 path: G2 within
+    /// its segments, G1 at its joints) or `"C1"` (space).
     pub continuity: String,
     /// Every piece's curvature proven monotone (planar rational pieces); null for space
     /// curves, for which nothing is proven about curvature.
@@ -140,7 +199,13 @@ pub fn export(
                 Solved::Compound(_) => "compound",
             },
         ),
+        ExportCurve::Path(path) => (path.arc_length(), "path"),
         ExportCurve::Space(seg) => (seg.arc_length(), "space"),
+    };
+    let continuity = match curve {
+        ExportCurve::Space(_) => "C1",
+        ExportCurve::Path(p) if p.continuity() == Continuity::G1 => "G1",
+        _ => "G2",
     };
     if format == Format::Svg && matches!(curve, ExportCurve::Space(_)) {
         return Err(ErrorBody::new(
@@ -154,9 +219,10 @@ pub fn export(
     let mut reached = f64::INFINITY;
     for _ in 0..ATTEMPTS {
         let fitted = fit(curve, target, plain)?;
-        let measured = match curve {
-            ExportCurve::Plane(s) => measure(&PlaneExact(s.curve()), &fitted.nurbs)?,
-            ExportCurve::Space(s) => measure(&SpaceExact(s), &fitted.nurbs)?,
+        let measured = match (curve, curve.plane()) {
+            (ExportCurve::Space(s), _) => measure(&SpaceExact(s), &fitted.nurbs)?,
+            (_, Some(c)) => measure(&PlaneExact(c), &fitted.nurbs)?,
+            (_, None) => unreachable!("every curve but a space segment is planar"),
         };
         if measured <= tol {
             let curves = if single_spans {
@@ -174,7 +240,7 @@ pub fn export(
                 fit_deviation: fitted.fit_deviation,
                 samples_per_piece: SAMPLES_PER_PIECE,
                 arc_length: length,
-                continuity: if kind == "space" { "C1" } else { "G2" }.to_string(),
+                continuity: continuity.to_string(),
                 monotone_proven: fitted.monotone_proven,
                 polynomial: fitted.nurbs.is_polynomial(),
                 units: "mm".to_string(),
@@ -235,29 +301,45 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
         }
         .into()
     };
+    let quasi_of = |c: &dyn Curve| -> Result<QuasiCurve, ErrorBody> {
+        Ok(if plain {
+            c.to_cubics(Tolerance::Absolute(target))?
+        } else {
+            c.to_rational_cubics(Tolerance::Absolute(target))?
+        })
+    };
+    let planar = |chains: &[(QuasiCurve, f64)]| -> Result<Fitted, ErrorBody> {
+        let pieces = || chains.iter().flat_map(|(q, _)| &q.pieces);
+        let spans: Vec<Span> = pieces()
+            .map(|p| Span::from_rational_cubic(&p.curve))
+            .collect();
+        let mut breaks = vec![0.0];
+        for p in pieces() {
+            breaks.push(breaks[breaks.len() - 1] + p.curve.arc_length());
+        }
+        let nurbs = Nurbs::from_spans(&spans, &breaks, true).map_err(|_| bad())?;
+        Ok(Fitted {
+            nurbs,
+            fit_deviation: chains
+                .iter()
+                .fold(0.0f64, |m, (q, length)| m.max(q.max * length)),
+            monotone_proven: Some(pieces().all(|p| p.monotonicity.proven)),
+        })
+    };
     match curve {
         ExportCurve::Plane(solved) => {
             let c = solved.curve();
-            let quasi = if plain {
-                c.to_cubics(Tolerance::Absolute(target))?
-            } else {
-                c.to_rational_cubics(Tolerance::Absolute(target))?
-            };
-            let spans: Vec<Span> = quasi
-                .pieces
+            planar(&[(quasi_of(c)?, c.arc_length())])
+        }
+        ExportCurve::Path(path) => {
+            // Segment by segment: each chain keeps its segment's end points, tangents and
+            // curvatures, so the path's joints stay knots with the path's own continuity.
+            let chains = path
+                .pieces()
                 .iter()
-                .map(|p| Span::from_rational_cubic(&p.curve))
-                .collect();
-            let mut breaks = vec![0.0];
-            for p in &quasi.pieces {
-                breaks.push(breaks[breaks.len() - 1] + p.curve.arc_length());
-            }
-            let nurbs = Nurbs::from_spans(&spans, &breaks, true).map_err(|_| bad())?;
-            Ok(Fitted {
-                nurbs,
-                fit_deviation: quasi.max * c.arc_length(),
-                monotone_proven: Some(quasi.pieces.iter().all(|p| p.monotonicity.proven)),
-            })
+                .map(|seg| Ok((quasi_of(seg)?, seg.arc_length())))
+                .collect::<Result<Vec<_>, ErrorBody>>()?;
+            planar(&chains)
         }
         ExportCurve::Space(seg) => {
             let cubics = seg.to_cubics(Tolerance::Absolute(target))?;
@@ -312,5 +394,19 @@ fn write(
             };
             crate::json::to_line(&document) + "\n"
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::time::Duration;
+
+    #[test]
+    fn timestamps_are_utc_calendar_dates() {
+        let at = |s| timestamp(UNIX_EPOCH + Duration::from_secs(s));
+        assert_eq!(at(0), "1970-01-01T00:00:00");
+        assert_eq!(at(951_782_400), "2000-02-29T00:00:00");
+        assert_eq!(at(1_795_000_000), "2026-11-18T11:06:40");
     }
 }

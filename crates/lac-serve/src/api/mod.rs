@@ -6,6 +6,7 @@
 //! slot, blocking thread, status).
 
 mod curve;
+mod export;
 mod quasi;
 mod region;
 mod request;
@@ -46,8 +47,21 @@ impl App {
 type Endpoint = fn(&App, &str) -> Result<String, ApiError>;
 
 /// Read the body, wait for a compute slot, run `endpoint` on the blocking pool (holding the
-/// slot until it returns, even if the client has gone), and answer.
+/// slot until it returns, even if the client has gone), and answer its JSON.
 async fn answer(app: Arc<App>, request: Request, endpoint: Endpoint) -> Response {
+    answer_with(app, request, endpoint, |json| {
+        json_response(StatusCode::OK, json)
+    })
+    .await
+}
+
+/// [`answer`] for any kind of answer `T`, made a response by `respond`.
+async fn answer_with<T: Send + 'static>(
+    app: Arc<App>,
+    request: Request,
+    endpoint: fn(&App, &str) -> Result<T, ApiError>,
+    respond: fn(T) -> Response,
+) -> Response {
     let (parts, body) = request.into_parts();
     let bytes = match body::read_json(&parts.headers, body, app.limits.body_bytes).await {
         Ok(bytes) => bytes,
@@ -70,7 +84,7 @@ async fn answer(app: Arc<App>, request: Request, endpoint: Endpoint) -> Response
     })
     .await;
     match result {
-        Ok(Ok(json)) => json_response(StatusCode::OK, json),
+        Ok(Ok(answer)) => respond(answer),
         Ok(Err(err)) => axum::response::IntoResponse::into_response(err),
         Err(err) => internal(&format!("the solver stopped: {err}")),
     }
@@ -119,6 +133,11 @@ pub(crate) async fn space(State(app): State<Arc<App>>, request: Request) -> Resp
     answer(app, request, space::space).await
 }
 
+/// `POST /api/export`: the curve as a CAD file.
+pub(crate) async fn export(State(app): State<Arc<App>>, request: Request) -> Response {
+    answer_with(app, request, export::export, export::File::into_response).await
+}
+
 /// `GET /api/version`: who answers, and the limits a client must respect.
 #[derive(Serialize)]
 struct Version {
@@ -138,6 +157,7 @@ struct LimitsRow {
     max_region_size: usize,
     max_point_region_size: usize,
     timeout_ms: u128,
+    min_export_relative_tolerance: f64,
 }
 
 /// `GET /api/version`.
@@ -155,6 +175,7 @@ pub(crate) async fn version(State(app): State<Arc<App>>) -> Response {
             max_region_size: l.max_region_size,
             max_point_region_size: l.max_point_region_size,
             timeout_ms: l.timeout.as_millis(),
+            min_export_relative_tolerance: l.min_export_relative_tolerance,
         },
     };
     json_response(StatusCode::OK, lac_io::json::to_line(&version))

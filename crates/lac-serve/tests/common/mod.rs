@@ -13,6 +13,7 @@ use tower::ServiceExt;
 pub struct Answer {
     pub status: StatusCode,
     pub content_type: String,
+    pub headers: axum::http::HeaderMap,
     pub json: Value,
     pub text: String,
 }
@@ -54,6 +55,7 @@ pub async fn send(
         .get(header::CONTENT_TYPE)
         .map(|v| v.to_str().unwrap().to_string())
         .unwrap_or_default();
+    let headers = response.headers().clone();
     let bytes = axum::body::to_bytes(response.into_body(), usize::MAX)
         .await
         .unwrap();
@@ -62,6 +64,7 @@ pub async fn send(
     Answer {
         status,
         content_type,
+        headers,
         json,
         text,
     }

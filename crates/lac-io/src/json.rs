@@ -1939,6 +1939,25 @@ pub struct PathJointRow {
     pub tangent_jump: f64,
 }
 
+/// The straight piece of a G2 path on a leg where its turning changes direction (an
+/// inflection: the segments on either side reach zero curvature at its ends).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PathStraightRow {
+    /// The leg it lies on.
+    pub leg: usize,
+    /// Fractions of the leg from P_leg where it starts and ends.
+    pub fractions: [f64; 2],
+    /// Where it starts and ends.
+    pub points: [Xy; 2],
+    /// Arc length from the path's start to its start.
+    pub s: f64,
+    /// Its length (0 when the segments meet).
+    pub length: f64,
+    /// Signed curvature of the segments at its ends (zero within 1e-9 of the path's
+    /// largest |κ|).
+    pub curvature: [f64; 2],
+}
+
 /// A solved path: `lac path`'s JSON.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct PathReport {
@@ -1956,6 +1975,9 @@ pub struct PathReport {
     pub segments: Vec<PathSegmentRow>,
     /// The joints in order.
     pub joints: Vec<PathJointRow>,
+    /// The straight pieces on inflection legs, in order (G2 paths only).
+    #[serde(default)]
+    pub straight_pieces: Vec<PathStraightRow>,
     /// Samples equally spaced in arc length over the whole path.
     pub samples: Vec<SampleRow>,
 }
@@ -1967,7 +1989,7 @@ impl PathReport {
         let polygon = path.polygon();
         let triangles = path.control_triangles();
         let segments = path
-            .pieces()
+            .segments()
             .iter()
             .enumerate()
             .map(|(k, seg)| PathSegmentRow {
@@ -2007,6 +2029,19 @@ impl PathReport {
             points: polygon.points().iter().map(|&p| xy(p)).collect(),
             segments,
             joints,
+            straight_pieces: path
+                .straight_pieces()
+                .iter()
+                .zip(path.straight_pieces_s())
+                .map(|(p, s)| PathStraightRow {
+                    leg: p.leg,
+                    fractions: p.fractions,
+                    points: [xy(p.from), xy(p.to)],
+                    s,
+                    length: p.length(),
+                    curvature: [p.curvature_before, p.curvature_after],
+                })
+                .collect(),
             samples: samples.iter().map(SampleRow::from).collect(),
         }
         .checked()
@@ -2043,6 +2078,11 @@ impl Report for PathReport {
                     j.gap,
                     j.tangent_jump,
                 ])
+            })
+            && self.straight_pieces.iter().all(|p| {
+                all_finite([p.s, p.length, p.curvature[0], p.curvature[1]])
+                    && all_finite(p.fractions)
+                    && all_finite(p.points.iter().flatten().copied())
             })
             && self.samples.iter().all(|s| all_finite(s.values()))
     }

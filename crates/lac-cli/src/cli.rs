@@ -142,9 +142,14 @@ pub(crate) enum Command {
     /// "continuity", "closed", "arc_length", "max_curvature_jump", "points", "segments"
     /// [{vertex, alpha, lambda, control_points, arc_length, curvature:[start,end]}], "joints"
     /// [{leg, fraction, point, s, curvature:[before,after], curvature_jump, gap,
-    /// tangent_jump}] and "samples" [{s,x,y,theta,kappa}]. When no G2 path is found the
-    /// error (kind no_g2_path, exit code 3) names the joint's leg, says why, and gives the
-    /// fractions of the nearest G1 path (pass them as --fractions without --g2).
+    /// tangent_jump}], "straight_pieces" [{leg, fractions, points, s, length,
+    /// curvature:[before,after]}] and "samples" [{s,x,y,theta,kappa}]. Where the polygon's
+    /// turning changes direction, a G2 path passes through zero curvature: the segments on
+    /// either side (alpha < 0) end at their inflection points and a straight piece on that
+    /// leg joins them (the leg must be long: such a segment's inflection-side leg is 2-5
+    /// times its other). When no G2 path is found the error (kind no_g2_path, exit code 3)
+    /// names the joint's leg, says why, and gives the fractions of the nearest G1 path (pass
+    /// them as --fractions without --g2).
     #[command(
         override_usage = "lac path --polygon \"x0,y0 x1,y1 x2,y2 …\" (--alpha A | --alphas \"a1,a2,…\") \
                                 [--closed] [--g2 | --fractions \"t1,t2,…\"]\n                \

@@ -51,6 +51,10 @@ pub enum G2Failure {
         /// The vertex.
         vertex: usize,
     },
+    /// A spline's span whose end tangents leave the chord on the same side (or whose
+    /// curvature would change sign at a point): it would need an inflection, which splines
+    /// do not pass through yet.
+    SpanInflects,
     /// The two segments that reach zero curvature on this leg need more than its length:
     /// they overlap by `overlap` (a share of the leg).
     InflectionLegTooShort {
@@ -87,6 +91,12 @@ impl fmt::Display for G2Failure {
                 "the polygon's turning changes direction on both legs of vertex {vertex}: \
                  its segment would need zero curvature at both ends; add a vertex that turns \
                  the same way next to it"
+            ),
+            G2Failure::SpanInflects => write!(
+                f,
+                "this span (from this point to the next) would have to inflect: the \
+                 curvature changes sign along it or at its ends, and splines through points \
+                 do not pass through inflections yet (G2 paths from a control polygon do)"
             ),
             G2Failure::InflectionLegTooShort { overlap } => write!(
                 f,

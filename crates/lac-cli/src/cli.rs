@@ -156,10 +156,66 @@ pub(crate) enum Command {
                                 [--samples N] [--format json|csv|svg] [-o FILE|-] [--comb] [--evolute]"
     )]
     Path(PathArgs),
+    /// Draw a G2 spline of log-aesthetic segments through points: one segment per span,
+    /// the tangent angles at the points solved so that the curvature is continuous
+    ///
+    /// Open splines take their end tangents from --start-angle/--end-angle (radians) or from
+    /// the circles through the first and last three points. The JSON has "closed", "alpha",
+    /// "arc_length", "max_curvature_jump", "points", "angles", "spans" [{control_points,
+    /// arc_length, curvature:[start,end]}], "curvature_jumps" (at each joint) and "samples".
+    /// A span that would have to inflect, or where no continuous curvature is reached, is
+    /// named in the error (kind no_g2_path, exit code 3); a span whose segment cannot be
+    /// drawn, likewise. Inflections are not supported in splines yet (see `lac path --g2`).
+    #[command(
+        override_usage = "lac spline --through \"x0,y0 x1,y1 x2,y2 …\" --alpha A [--closed] \
+                                [--start-angle R --end-angle R]\n                \
+                                [--samples N] [--format json|csv|svg] [-o FILE|-] [--comb] [--evolute]"
+    )]
+    Spline(SplineArgs),
     /// Start the interactive editor: a local web server with the editor's page (embedded,
     /// works offline) and its JSON API; prints the URL and serves until interrupted
     #[command(override_usage = "lac serve [--port P] [--open] [--host ADDR --allow-remote]")]
     Serve(ServeArgs),
+}
+
+/// Arguments of `lac spline`.
+#[derive(Args, Debug)]
+pub(crate) struct SplineArgs {
+    /// The points to pass through "x0,y0 x1,y1 …" (at least three), separated by spaces
+    /// and/or semicolons
+    #[arg(long, value_name = "POINTS", allow_hyphen_values = true)]
+    pub(crate) through: String,
+
+    /// The slope of every segment
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub(crate) alpha: f64,
+
+    /// A closed spline (the last point joins the first)
+    #[arg(long)]
+    pub(crate) closed: bool,
+
+    /// Open splines: the tangent direction at the first point, radians
+    #[arg(
+        long,
+        value_name = "R",
+        allow_hyphen_values = true,
+        requires = "end_angle",
+        conflicts_with = "closed"
+    )]
+    pub(crate) start_angle: Option<f64>,
+
+    /// Open splines: the tangent direction at the last point, radians
+    #[arg(
+        long,
+        value_name = "R",
+        allow_hyphen_values = true,
+        requires = "start_angle"
+    )]
+    pub(crate) end_angle: Option<f64>,
+
+    /// What to print and where.
+    #[command(flatten)]
+    pub(crate) output: CurveOutput,
 }
 
 /// Arguments of `lac segment`.

@@ -36,6 +36,7 @@ mod region;
 mod segment;
 mod serve;
 mod space;
+mod spline;
 mod svg;
 
 use std::io::Write;
@@ -74,6 +75,7 @@ fn main() -> ExitCode {
         Command::Lcg(args) => lcg::run(args, limits),
         Command::Space(args) => space::run(args, limits),
         Command::Path(args) => path::run(args, limits),
+        Command::Spline(args) => spline::run(args, limits),
         Command::Serve(args) => serve::run(args),
     };
     match result {

@@ -48,6 +48,7 @@ pub struct Spline {
     points: Vec<Point>,
     closed: bool,
     angles: Vec<f64>,
+    triangles: Vec<[Point; 3]>,
     segments: Vec<Segment>,
     jumps: Vec<f64>,
 }
@@ -120,6 +121,7 @@ impl Spline {
             points,
             closed,
             angles: Vec::new(),
+            triangles: Vec::new(),
             segments: Vec::new(),
             jumps: Vec::new(),
         };
@@ -343,11 +345,16 @@ impl Spline {
             });
         }
         // The checked segments, and the joints measured on them.
-        let segments = (0..self.spans())
+        let triangles = (0..self.spans())
             .map(|i| {
-                let t = self
-                    .triangle(&phi, i)
-                    .map_err(|reason| Error::NoG2Path { leg: i, reason })?;
+                self.triangle(&phi, i)
+                    .map_err(|reason| Error::NoG2Path { leg: i, reason })
+            })
+            .collect::<Result<Vec<_>>>()?;
+        let segments = triangles
+            .iter()
+            .enumerate()
+            .map(|(i, &t)| {
                 Segment::from_control_points(t, alpha).map_err(|e| Error::PathSegment {
                     vertex: i,
                     source: Box::new(e),
@@ -383,6 +390,7 @@ impl Spline {
             jumps.push(jump);
         }
         self.angles = phi;
+        self.triangles = triangles;
         self.segments = segments;
         self.jumps = jumps;
         Ok(())
@@ -401,6 +409,12 @@ impl Spline {
     /// The tangent direction at each point, radians.
     pub fn angles(&self) -> &[f64] {
         &self.angles
+    }
+
+    /// The control triangle of each span as solved: (its first point, the intersection of
+    /// its end tangents, its last point), the points exactly as given.
+    pub fn control_triangles(&self) -> &[[Point; 3]] {
+        &self.triangles
     }
 
     /// The relative curvature jump measured at each joint (the interior points; every

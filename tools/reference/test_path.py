@@ -9,7 +9,7 @@ and at every joint the reference's curvatures on the two sides must agree to 1e-
 import json
 import subprocess
 
-from mpmath import mp, mpc, mpf
+from mpmath import atan2, cos, mp, mpc, mpf, quad, sin
 
 from lac_cli import lac_bin, require
 from segment_mpmath import solve_segment
@@ -62,3 +62,110 @@ def test_g2_path_joints_are_continuous_in_the_mpmath_reference():
     print(f"{checked} joints: largest curvature jump in the reference {float(worst):.2e}, "
           f"largest end-curvature error of lac {float(worst_self):.2e}")
     assert checked >= 30
+
+
+# Polygons whose turning changes direction (G2 through inflections: the segments next to an
+# inflection leg reach zero curvature at the ends of a straight piece on it).
+INFLECTION_CASES = [
+    ("0,0 1,0 2,0.5 5,2.5 6,3 7,3", False, [-1.0, -0.75, -0.5, -0.25]),
+    ("-1.5,1 1.5,-1 3,-1.8 4.5,-1 4.5,1 3,1.8 1.5,1 -1.5,-1 -3,-1.8 -4.5,-1 -4.5,1 -3,1.8",
+     True, [-1.0, -0.5]),
+]
+
+
+def inflection_segment(tri, alpha, at_start):
+    """The reference for a segment with one end at (or a hair before) its inflection: from
+    the inflection point a log-aesthetic curve of slope alpha < 0 has κ ∝ d^(1/|α|) (d the
+    arc length from it), so up to similarity θ(d) = d^p with p = 1 + 1/|α| (SPEC §2,
+    ρ^α linear in s and zero at the inflection). The piece [d0, D] turning by the triangle's
+    angle whose tangent triangle has the reported leg ratio is found by bisection in
+    w = −log10(d0 / D); returns (κ at the inflection end, κ at the other end), signed, in
+    the caller's units."""
+    p = 1 + 1 / abs(mpf(alpha))
+    q0, pv, q1 = (mpc(*map(mpf, pt)) for pt in tri)
+    infl_leg, other_leg = (abs(pv - q0), abs(q1 - pv)) if at_start else (abs(q1 - pv), abs(pv - q0))
+    want = infl_leg / other_leg
+    v1, v2 = pv - q0, q1 - pv
+    turn = v1.real * v2.imag - v1.imag * v2.real
+    theta_d = abs(atan2(turn, (v1.conjugate() * v2).real))
+    sign = 1 if turn > 0 else -1
+    # (κ's sign: left turn positive; the inflection end's sign is the other end's.)
+
+    def piece(d0):
+        big_d = (d0 ** p + theta_d) ** (1 / p)
+        x = quad(lambda t: cos(t ** p), [d0, big_d])
+        y = quad(lambda t: sin(t ** p), [d0, big_d])
+        e0, e1 = mpc(cos(d0 ** p), sin(d0 ** p)), mpc(cos(big_d ** p), sin(big_d ** p))
+        cr = lambda a, b: a.real * b.imag - a.imag * b.real
+        chord = mpc(x, y)
+        u = cr(chord, e1) / cr(e0, e1)  # the leg at d0 (inflection side)
+        v = cr(e0, chord) / cr(e0, e1)
+        return big_d, u / v, abs(chord)
+
+    big_d, ratio_at_zero, _ = piece(mpf(0))
+    assert ratio_at_zero >= want, "the reported triangle is past its inflection"
+    lo, hi = mpf(0), mpf(60)  # w: d0 = D 10^-w; large w is near the inflection
+    for _ in range(50):
+        mid = (lo + hi) / 2
+        _, ratio, _ = piece(big_d * mpf(10) ** -mid)
+        if ratio > want:
+            hi = mid  # too close to the inflection
+        else:
+            lo = mid
+    d0 = big_d * mpf(10) ** -((lo + hi) / 2)
+    big_d, _, chord = piece(d0)
+    scale = abs(q1 - q0) / chord
+    kappa = lambda d: sign * p * d ** (p - 1) / scale
+    return kappa(d0), kappa(big_d)
+
+
+def test_g2_path_inflections_reach_zero_curvature_in_the_reference():
+    """The segments next to a straight piece checked against the closed-form shape of a
+    log-aesthetic curve from its inflection point (mpmath quadrature, 30 digits): their
+    curvature there is zero to 1e-9 of their other end's, and every joint (those ends
+    included) is continuous to 1e-9 in the reference; the other segments by the mpmath
+    segment reference."""
+    require("path")
+    mp.dps = 30
+    inflections, worst_zero, worst_jump = 0, mpf(0), mpf(0)
+    for polygon, closed, alphas in INFLECTION_CASES:
+        for alpha in alphas:
+            report = run_path(polygon, closed, alpha)
+            assert report["continuity"] == "g2"
+            lines = report["straight_pieces"]
+            assert lines
+            segs = report["segments"]
+            n = len(segs)
+            ends_on_line = {tuple(line["points"][0]) for line in lines}
+            starts_on_line = {tuple(line["points"][1]) for line in lines}
+            refs = []
+            for seg in segs:
+                tri = seg["control_points"]
+                if tuple(tri[0]) in starts_on_line:
+                    k_infl, k_other = inflection_segment(tri, seg["alpha"], at_start=True)
+                    refs.append((k_infl, k_other))
+                elif tuple(tri[2]) in ends_on_line:
+                    k_infl, k_other = inflection_segment(tri, seg["alpha"], at_start=False)
+                    refs.append((k_other, k_infl))
+                else:
+                    pa, pb, pc = (mpc(*map(mpf, pt)) for pt in tri)
+                    ref = solve_segment(pa, pb, pc, seg["alpha"], [0, 1])
+                    refs.append((ref["curvature_start"], ref["curvature_end"]))
+            pairs = n if closed else n - 1
+            for k in range(pairs):
+                before, after = refs[k][1], refs[(k + 1) % n][0]
+                if tuple(segs[k]["control_points"][2]) in ends_on_line:
+                    zero = max(abs(before) / abs(refs[k][0]),
+                               abs(after) / abs(refs[(k + 1) % n][1]))
+                    assert zero <= mpf("1e-9"), (polygon, alpha, k, zero)
+                    assert before * after <= 0  # the curvature changes sign across it
+                    worst_zero = max(worst_zero, zero)
+                    inflections += 1
+                else:
+                    jump = abs(before - after) / max(abs(before), abs(after))
+                    assert jump <= JUMP, (polygon, alpha, k, jump)
+                    worst_jump = max(worst_jump, jump)
+    print(f"{inflections} inflections: largest |κ| there in the reference "
+          f"{float(worst_zero):.2e} of the segment's other end; other joints' largest "
+          f"jump {float(worst_jump):.2e}")
+    assert inflections == 4 + 2 * 2

@@ -143,9 +143,14 @@ pub(crate) enum Command {
     /// "continuity", "closed", "arc_length", "max_curvature_jump", "points", "segments"
     /// [{vertex, alpha, lambda, control_points, arc_length, curvature:[start,end]}], "joints"
     /// [{leg, fraction, point, s, curvature:[before,after], curvature_jump, gap,
-    /// tangent_jump}] and "samples" [{s,x,y,theta,kappa}]. When no G2 path is found the
-    /// error (kind no_g2_path, exit code 3) names the joint's leg, says why, and gives the
-    /// fractions of the nearest G1 path (pass them as --fractions without --g2).
+    /// tangent_jump}], "straight_pieces" [{leg, fractions, points, s, length,
+    /// curvature:[before,after]}] and "samples" [{s,x,y,theta,kappa}]. Where the polygon's
+    /// turning changes direction, a G2 path passes through zero curvature: the segments on
+    /// either side (alpha < 0) end at their inflection points and a straight piece on that
+    /// leg joins them (the leg must be long: such a segment's inflection-side leg is 2-5
+    /// times its other). When no G2 path is found the error (kind no_g2_path, exit code 3)
+    /// names the joint's leg, says why, and gives the fractions of the nearest G1 path (pass
+    /// them as --fractions without --g2).
     #[command(
         override_usage = "lac path --polygon \"x0,y0 x1,y1 x2,y2 …\" (--alpha A | --alphas \"a1,a2,…\") \
                                 [--closed] [--g2 | --fractions \"t1,t2,…\"]\n                \
@@ -182,10 +187,66 @@ pub(crate) enum Command {
                                 # a lac segment, compound, path or space result"
     )]
     Export(ExportArgs),
+    /// Draw a G2 spline of log-aesthetic segments through points: one segment per span,
+    /// the tangent angles at the points solved so that the curvature is continuous
+    ///
+    /// Open splines take their end tangents from --start-angle/--end-angle (radians) or from
+    /// the circles through the first and last three points. The JSON has "closed", "alpha",
+    /// "arc_length", "max_curvature_jump", "points", "angles", "spans" [{control_points,
+    /// arc_length, curvature:[start,end]}], "curvature_jumps" (at each joint) and "samples".
+    /// A span that would have to inflect, or where no continuous curvature is reached, is
+    /// named in the error (kind no_g2_path, exit code 3); a span whose segment cannot be
+    /// drawn, likewise. Inflections are not supported in splines yet (see `lac path --g2`).
+    #[command(
+        override_usage = "lac spline --through \"x0,y0 x1,y1 x2,y2 …\" --alpha A [--closed] \
+                                [--start-angle R --end-angle R]\n                \
+                                [--samples N] [--format json|csv|svg] [-o FILE|-] [--comb] [--evolute]"
+    )]
+    Spline(SplineArgs),
     /// Start the interactive editor: a local web server with the editor's page (embedded,
     /// works offline) and its JSON API; prints the URL and serves until interrupted
     #[command(override_usage = "lac serve [--port P] [--open] [--host ADDR --allow-remote]")]
     Serve(ServeArgs),
+}
+
+/// Arguments of `lac spline`.
+#[derive(Args, Debug)]
+pub(crate) struct SplineArgs {
+    /// The points to pass through "x0,y0 x1,y1 …" (at least three), separated by spaces
+    /// and/or semicolons
+    #[arg(long, value_name = "POINTS", allow_hyphen_values = true)]
+    pub(crate) through: String,
+
+    /// The slope of every segment
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub(crate) alpha: f64,
+
+    /// A closed spline (the last point joins the first)
+    #[arg(long)]
+    pub(crate) closed: bool,
+
+    /// Open splines: the tangent direction at the first point, radians
+    #[arg(
+        long,
+        value_name = "R",
+        allow_hyphen_values = true,
+        requires = "end_angle",
+        conflicts_with = "closed"
+    )]
+    pub(crate) start_angle: Option<f64>,
+
+    /// Open splines: the tangent direction at the last point, radians
+    #[arg(
+        long,
+        value_name = "R",
+        allow_hyphen_values = true,
+        requires = "start_angle"
+    )]
+    pub(crate) end_angle: Option<f64>,
+
+    /// What to print and where.
+    #[command(flatten)]
+    pub(crate) output: CurveOutput,
 }
 
 /// Arguments of `lac segment`.

@@ -45,6 +45,7 @@ pub(crate) fn run(args: &CompoundArgs, limits: Limits) -> Result<(), ErrorBody> 
                     .then(|| curve.sample_by_arc_length(samples))
                     .transpose()?,
                 evolute: output.evolute,
+                closed: false,
             };
             svg::render(curve.pieces(), &kurbo_points(&input.points), extras)?
         }

@@ -37,6 +37,7 @@ mod region;
 mod segment;
 mod serve;
 mod space;
+mod spline;
 mod svg;
 
 use std::io::Write;
@@ -76,6 +77,7 @@ fn main() -> ExitCode {
         Command::Space(args) => space::run(args, limits),
         Command::Path(args) => path::run(args, limits),
         Command::Export(args) => export::run(args, limits),
+        Command::Spline(args) => spline::run(args, limits),
         Command::Serve(args) => serve::run(args),
     };
     match result {

@@ -1,7 +1,6 @@
 //! `lac path`: a log-aesthetic path from a control polygon (`--polygon`, `--alpha` or
 //! `--alphas`, `--closed`, `--g2` or `--fractions`).
 
-use lac::Curve;
 use lac_io::json::{to_line, ErrorBody, PathInput, PathReport, Xy};
 
 use crate::cli::{CurveFormat, PathArgs};
@@ -36,12 +35,13 @@ pub(crate) fn run(args: &PathArgs, limits: Limits) -> Result<(), ErrorBody> {
                     .then(|| path.sample_by_arc_length(samples))
                     .transpose()?,
                 evolute: output.evolute,
+                closed: input.closed,
             };
             let mut polygon = kurbo_points(&input.points);
             if input.closed {
                 polygon.push(polygon[0]);
             }
-            svg::render(path.pieces(), &polygon, extras)?
+            svg::render(path.segments(), &polygon, extras)?
         }
     };
     write_document(output.file.as_deref(), document.as_bytes())

@@ -45,6 +45,7 @@ pub(crate) fn run(args: &SegmentArgs, limits: Limits) -> Result<(), ErrorBody> {
                     .then(|| segment.sample_by_arc_length(samples))
                     .transpose()?,
                 evolute: output.evolute,
+                closed: false,
             };
             svg::render(
                 std::slice::from_ref(&segment),

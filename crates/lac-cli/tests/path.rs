@@ -131,3 +131,55 @@ fn a_failed_g2_names_the_joint_and_offers_the_nearest_g1_path() {
     let run = lac(&["path", "--polygon", POLYGON, "--alphas", "0.5,0.5"]);
     assert_failure(&run, 2, "out_of_range");
 }
+
+#[test]
+fn s_shaped_g2_path_reports_its_straight_piece_and_samples_through_it() {
+    let polygon = "0,0 1,0 2,0.5 5,2.5 6,3 7,3";
+    let run = lac(&["path", "--polygon", polygon, "--alpha", "-1", "--g2"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let v = json(&run);
+    assert_eq!(v["continuity"], "g2");
+    let lines = v["straight_pieces"].as_array().unwrap();
+    assert_eq!(lines.len(), 1);
+    let line = &lines[0];
+    assert_eq!(line["leg"], 2);
+    let scale = v["segments"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|s| [f(&s["curvature"][0]).abs(), f(&s["curvature"][1]).abs()])
+        .fold(0.0, f64::max);
+    for k in [f(&line["curvature"][0]), f(&line["curvature"][1])] {
+        assert!(k.abs() <= 1e-9 * scale, "{line}");
+    }
+    // The segments on either side end exactly where the straight piece does.
+    let segs = v["segments"].as_array().unwrap();
+    assert_eq!(segs[1]["control_points"][2], line["points"][0]);
+    assert_eq!(segs[2]["control_points"][0], line["points"][1]);
+    // The arc length counts it, and the samples on it have zero curvature.
+    let total: f64 = segs.iter().map(|s| f(&s["arc_length"])).sum::<f64>() + f(&line["length"]);
+    assert!((f(&v["arc_length"]) - total).abs() < 1e-12);
+    let (s0, s1) = (f(&line["s"]), f(&line["s"]) + f(&line["length"]));
+    let on_line: Vec<&Value> = v["samples"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|p| f(&p["s"]) > s0 && f(&p["s"]) < s1)
+        .collect();
+    assert!(on_line.len() > 10);
+    assert!(on_line.iter().all(|p| f(&p["kappa"]) == 0.0));
+    // The SVG draws it and names it in the caption.
+    let run = lac(&[
+        "path",
+        "--polygon",
+        polygon,
+        "--alpha",
+        "-1",
+        "--g2",
+        "--format",
+        "svg",
+        "--comb",
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert!(run.stdout.contains("straight s = "), "{}", run.stdout);
+}

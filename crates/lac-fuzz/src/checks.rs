@@ -389,7 +389,7 @@ fn check_samples(samples: &[Sample], tol: f64, len: f64) -> Result<(), String> {
 /// chords between tangents); consecutive segments (and the last and first of a closed path)
 /// meet with continuous position and tangent, and curvature too in G2; the whole is finite.
 fn check_path(path: &Path, closed: bool, g2: bool) -> Result<(), String> {
-    let pieces = path.pieces();
+    let pieces = path.segments();
     let triangles = path.control_triangles();
     if pieces.len() != triangles.len() || pieces.is_empty() {
         return Err(format!(
@@ -411,6 +411,21 @@ fn check_path(path: &Path, closed: bool, g2: bool) -> Result<(), String> {
     let all: Vec<Point> = triangles.iter().flatten().copied().collect();
     let size = path.arc_length();
     let tol = bounds::POSITION * size + rounding(&all);
+    // The whole path sampled: finite everywhere.
+    for q in path
+        .sample_by_arc_length(65)
+        .map_err(|e| format!("sampling a solved path failed: {e}"))?
+    {
+        finite(
+            "path sample",
+            &[q.s, q.point.x, q.point.y, q.theta, q.kappa],
+        )?;
+    }
+    // Segments meet one another directly only where no straight piece (an inflection leg)
+    // lies between them; those joints are the path's own check (its joints list).
+    if !path.straight_pieces().is_empty() {
+        return Ok(());
+    }
     let pairs = pieces.len() - usize::from(!closed);
     let kmax = pieces
         .iter()

@@ -2114,6 +2114,110 @@ pub struct PathJointRow {
     pub tangent_jump: f64,
 }
 
+/// The straight piece of a G2 path on a leg where its turning changes direction (an
+/// inflection: the segments on either side reach zero curvature at its ends).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PathStraightRow {
+    /// The leg it lies on.
+    pub leg: usize,
+    /// Fractions of the leg from P_leg where it starts and ends.
+    pub fractions: [f64; 2],
+    /// Where it starts and ends.
+    pub points: [Xy; 2],
+    /// Arc length from the path's start to its start.
+    pub s: f64,
+    /// Its length (0 when the segments meet).
+    pub length: f64,
+    /// Signed curvature of the segments at its ends (zero within 1e-9 of the path's
+    /// largest |κ|).
+    pub curvature: [f64; 2],
+}
+
+/// One span of a spline through points.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SplineSpanRow {
+    /// Its control triangle: the point it starts at, the tangents' intersection, the point
+    /// it ends at.
+    pub control_points: [Xy; 3],
+    /// Λ of its standard-form piece.
+    pub lambda: f64,
+    /// Arc length.
+    pub arc_length: f64,
+    /// Signed curvature at its start and end.
+    pub curvature: [f64; 2],
+}
+
+/// A solved G2 spline through points: `lac spline`'s JSON.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SplineReport {
+    /// Whether it is closed.
+    pub closed: bool,
+    /// The slope of every segment.
+    pub alpha: f64,
+    /// Arc length of the whole spline.
+    pub arc_length: f64,
+    /// The largest relative curvature jump at a joint.
+    pub max_curvature_jump: f64,
+    /// The points it passes through.
+    pub points: Vec<Xy>,
+    /// The tangent direction at each point, radians.
+    pub angles: Vec<f64>,
+    /// The spans in order.
+    pub spans: Vec<SplineSpanRow>,
+    /// The relative curvature jump measured at each joint.
+    pub curvature_jumps: Vec<f64>,
+    /// Samples equally spaced in arc length over the whole spline.
+    pub samples: Vec<SampleRow>,
+}
+
+impl SplineReport {
+    /// The report of `spline` with `n` samples.
+    pub fn new(spline: &lac::Spline, alpha: f64, n: usize) -> Result<Self, ErrorBody> {
+        let samples = spline.sample_by_arc_length(n)?;
+        SplineReport {
+            closed: spline.is_closed(),
+            alpha,
+            arc_length: spline.arc_length(),
+            max_curvature_jump: spline.max_curvature_jump(),
+            points: spline.points().iter().map(|&p| xy(p)).collect(),
+            angles: spline.angles().to_vec(),
+            spans: spline
+                .pieces()
+                .iter()
+                .zip(spline.control_triangles())
+                .map(|(seg, tri)| SplineSpanRow {
+                    control_points: tri.map(xy),
+                    lambda: seg.lambda(),
+                    arc_length: seg.arc_length(),
+                    curvature: [seg.curvature_start(), seg.curvature_end()],
+                })
+                .collect(),
+            curvature_jumps: spline.curvature_jumps().to_vec(),
+            samples: samples.iter().map(SampleRow::from).collect(),
+        }
+        .checked()
+    }
+
+    /// The samples as CSV (`s,x,y,theta,kappa`).
+    pub fn to_csv(&self) -> String {
+        samples_csv(&self.samples)
+    }
+}
+
+impl Report for SplineReport {
+    fn is_finite(&self) -> bool {
+        all_finite([self.arc_length, self.max_curvature_jump, self.alpha])
+            && all_finite(self.points.iter().flatten().copied())
+            && all_finite(self.angles.iter().copied())
+            && all_finite(self.curvature_jumps.iter().copied())
+            && self.spans.iter().all(|g| {
+                all_finite([g.lambda, g.arc_length, g.curvature[0], g.curvature[1]])
+                    && all_finite(g.control_points.iter().flatten().copied())
+            })
+            && self.samples.iter().all(|s| all_finite(s.values()))
+    }
+}
+
 /// A solved path: `lac path`'s JSON.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct PathReport {
@@ -2131,6 +2235,9 @@ pub struct PathReport {
     pub segments: Vec<PathSegmentRow>,
     /// The joints in order.
     pub joints: Vec<PathJointRow>,
+    /// The straight pieces on inflection legs, in order (G2 paths only).
+    #[serde(default)]
+    pub straight_pieces: Vec<PathStraightRow>,
     /// Samples equally spaced in arc length over the whole path.
     pub samples: Vec<SampleRow>,
 }
@@ -2142,7 +2249,7 @@ impl PathReport {
         let polygon = path.polygon();
         let triangles = path.control_triangles();
         let segments = path
-            .pieces()
+            .segments()
             .iter()
             .enumerate()
             .map(|(k, seg)| PathSegmentRow {
@@ -2182,6 +2289,19 @@ impl PathReport {
             points: polygon.points().iter().map(|&p| xy(p)).collect(),
             segments,
             joints,
+            straight_pieces: path
+                .straight_pieces()
+                .iter()
+                .zip(path.straight_pieces_s())
+                .map(|(p, s)| PathStraightRow {
+                    leg: p.leg,
+                    fractions: p.fractions,
+                    points: [xy(p.from), xy(p.to)],
+                    s,
+                    length: p.length(),
+                    curvature: [p.curvature_before, p.curvature_after],
+                })
+                .collect(),
             samples: samples.iter().map(SampleRow::from).collect(),
         }
         .checked()
@@ -2233,6 +2353,11 @@ impl Report for PathReport {
                     j.gap,
                     j.tangent_jump,
                 ])
+            })
+            && self.straight_pieces.iter().all(|p| {
+                all_finite([p.s, p.length, p.curvature[0], p.curvature[1]])
+                    && all_finite(p.fractions)
+                    && all_finite(p.points.iter().flatten().copied())
             })
             && self.samples.iter().all(|s| all_finite(s.values()))
     }

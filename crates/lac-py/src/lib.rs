@@ -12,6 +12,7 @@ mod batch;
 mod convert;
 mod curve;
 mod errors;
+mod path;
 mod quasi;
 mod region;
 mod space;
@@ -35,6 +36,7 @@ fn _lac(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<quasi::MonotonicityReport>()?;
     m.add_class::<quasi::QuasiPiece>()?;
     m.add_class::<quasi::PyQuasiCurve>()?;
+    m.add_class::<path::PyPath>()?;
     m.add_class::<space::PySpaceSegment>()?;
     m.add_class::<space::Frames>()?;
     m.add_class::<space::Graph>()?;

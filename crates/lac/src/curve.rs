@@ -288,8 +288,9 @@ pub(crate) fn check_visible_ends(pieces: &[Segment]) -> Result<()> {
     Ok(())
 }
 
-/// Any run of consecutive pieces, as a curve.
-pub(crate) struct Chain<'a>(pub(crate) &'a [Segment]);
+/// Any run of consecutive segments (each starting where the last ends, as those of a
+/// compound curve or a path between straight pieces do), as a curve.
+pub struct Chain<'a>(pub &'a [Segment]);
 
 impl Curve for Chain<'_> {
     fn pieces(&self) -> &[Segment] {

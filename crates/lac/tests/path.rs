@@ -3,32 +3,57 @@
 //! both sides of each joint (not by the solver's own report).
 
 use kurbo::Point;
-use lac::{Alphas, Continuity, ControlPolygon, Curve, Error, G2Failure, Path};
+use lac::{Alphas, Continuity, ControlPolygon, Curve, Error, G2Failure, Path, INFLECTION_LIMIT};
 
 fn pts(list: &[(f64, f64)]) -> Vec<Point> {
     list.iter().map(|&(x, y)| Point::new(x, y)).collect()
 }
 
 /// Position, tangent and curvature on both sides of every joint, from the curve's own
-/// evaluation: returns the largest (gap / size, tangent jump, relative curvature jump).
+/// evaluation: returns the largest (gap / size, tangent jump, relative curvature jump). On
+/// an inflection leg the segments meet the straight piece there: their ends must lie on it,
+/// their tangents be the leg's, and their curvatures be zero (relative to the largest |κ|
+/// at any segment end, counted as the curvature jump).
 fn continuity(path: &Path) -> (f64, f64, f64) {
     let (mut gap, mut tan, mut curv) = (0.0f64, 0.0f64, 0.0f64);
-    let pieces = path.pieces();
+    let pieces = path.segments();
     let n = pieces.len();
-    let pairs = if path.polygon().is_closed() { n } else { n - 1 };
+    let closed = path.polygon().is_closed();
+    let pairs = if closed { n } else { n - 1 };
+    let wrap = |d: f64| (d - std::f64::consts::TAU * (d / std::f64::consts::TAU).round()).abs();
+    let scale = pieces
+        .iter()
+        .flat_map(|p| [p.curvature_start().abs(), p.curvature_end().abs()])
+        .fold(0.0, f64::max);
     for i in 0..pairs {
         let (a, b) = (&pieces[i], &pieces[(i + 1) % n]);
         let la = a.arc_length();
         let pa = a.point_at_s(la).unwrap();
         let pb = b.point_at_s(0.0).unwrap();
-        gap = gap.max((pa - pb).hypot());
-        let d = a.theta_at_s(la).unwrap() - b.theta_at_s(0.0).unwrap();
-        let d = d - std::f64::consts::TAU * (d / std::f64::consts::TAU).round();
-        tan = tan.max(d.abs());
+        let (ta, tb) = (a.theta_at_s(la).unwrap(), b.theta_at_s(0.0).unwrap());
         let (ka, kb) = (
             a.curvature_at_s(la).unwrap(),
             b.curvature_at_s(0.0).unwrap(),
         );
+        let leg = if closed { i } else { i + 1 };
+        if let Some(line) = path.straight_pieces().iter().find(|p| p.leg == leg) {
+            gap = gap
+                .max((pa - line.from).hypot())
+                .max((pb - line.to).hypot());
+            let (p, q) = (
+                path.polygon().points()[leg],
+                path.polygon().points()[(leg + 1) % path.polygon().points().len()],
+            );
+            let dir = (q - p).atan2();
+            tan = tan.max(wrap(ta - dir)).max(wrap(tb - dir));
+            if line.length() > 0.0 {
+                tan = tan.max(wrap((line.to - line.from).atan2() - dir));
+            }
+            curv = curv.max(ka.abs().max(kb.abs()) / scale);
+            continue;
+        }
+        gap = gap.max((pa - pb).hypot());
+        tan = tan.max(wrap(ta - tb));
         curv = curv.max((ka - kb).abs() / ka.abs().max(kb.abs()));
     }
     (gap, tan, curv)
@@ -46,7 +71,7 @@ fn g1_path_joins_at_the_leg_midpoints_with_matching_tangents() {
     .unwrap();
     let path = Path::g1(&poly, &Alphas::One(0.5), None).unwrap();
     assert_eq!(path.continuity(), Continuity::G1);
-    assert_eq!(path.pieces().len(), 3);
+    assert_eq!(path.segments().len(), 3);
     assert_eq!(path.joint_fractions(), vec![0.5, 0.5]);
     let (gap, tan, _) = continuity(&path);
     assert!(gap < 1e-13 && tan < 1e-13, "{gap} {tan}");
@@ -159,8 +184,8 @@ fn per_segment_alphas_are_used_in_order() {
     let poly =
         ControlPolygon::open(&pts(&[(0.0, 0.0), (2.0, 0.0), (3.0, 1.5), (3.0, 3.0)])).unwrap();
     let path = Path::g2(&poly, &Alphas::PerSegment(vec![0.0, 2.0]), None).unwrap();
-    assert_eq!(path.pieces()[0].alpha(), 0.0);
-    assert_eq!(path.pieces()[1].alpha(), 2.0);
+    assert_eq!(path.segments()[0].alpha(), 0.0);
+    assert_eq!(path.segments()[1].alpha(), 2.0);
     let err = Path::g2(&poly, &Alphas::PerSegment(vec![0.5]), None).unwrap_err();
     assert!(matches!(err, Error::OutOfRange { .. }));
 }
@@ -187,6 +212,124 @@ fn failures_name_the_vertex_or_the_leg() {
     assert!(ControlPolygon::open(&pts(&[(0.0, 0.0), (1.0, 0.0)])).is_err());
     assert!(ControlPolygon::open(&pts(&[(0.0, 0.0), (0.0, 0.0), (1.0, 1.0)])).is_err());
     assert!(ControlPolygon::open(&pts(&[(0.0, f64::NAN), (1.0, 0.0), (1.0, 1.0)])).is_err());
+}
+
+#[test]
+fn s_shaped_g2_path_passes_through_zero_curvature_on_a_straight_piece() {
+    // Turns left at P1, P2, then right at P3, P4: one inflection leg (P2–P3).
+    // (A segment from an inflection point is flat there: its leg on the inflection side is
+    // about 2–5 times its other leg, so the inflection leg is long.)
+    let poly = ControlPolygon::open(&pts(&[
+        (0.0, 0.0),
+        (1.0, 0.0),
+        (2.0, 0.5),
+        (5.0, 2.5),
+        (6.0, 3.0),
+        (7.0, 3.0),
+    ]))
+    .unwrap();
+    for alpha in [-1.0, -0.75, -0.5, -0.25] {
+        let path =
+            Path::g2(&poly, &Alphas::One(alpha), None).unwrap_or_else(|e| panic!("α {alpha}: {e}"));
+        assert_eq!(path.continuity(), Continuity::G2);
+        let lines = path.straight_pieces();
+        assert_eq!(lines.len(), 1);
+        assert_eq!(lines[0].leg, 2);
+        assert!(lines[0].fractions[0] <= lines[0].fractions[1]);
+        let (gap, tan, curv) = continuity(&path);
+        assert!(gap < 1e-12 && tan < 1e-12, "α {alpha}: {gap} {tan}");
+        assert!(curv <= INFLECTION_LIMIT, "α {alpha}: {curv}");
+        // The curvature changes sign across the straight piece, and the samples run
+        // through it with κ = 0 and an unbroken tangent.
+        let k = path.segments();
+        assert!(k[1].curvature_end() > 0.0 && k[2].curvature_start() < 0.0);
+        let samples = path.sample_by_arc_length(400).unwrap();
+        assert!((samples[399].s - path.arc_length()).abs() < 1e-12);
+        assert!((samples[399].point - Point::new(7.0, 3.0)).hypot() < 1e-12);
+        for w in samples.windows(2) {
+            assert!((w[1].theta - w[0].theta).abs() < 0.1);
+            let chord = (w[1].point - w[0].point).hypot();
+            assert!((chord - (w[1].s - w[0].s)).abs() < 1e-3 * (w[1].s - w[0].s));
+        }
+        // The warm start reproduces it.
+        let again = Path::g2(&poly, &Alphas::One(alpha), Some(&path.joint_fractions())).unwrap();
+        assert!((again.arc_length() - path.arc_length()).abs() < 1e-9);
+    }
+    // α ≥ 0 next to the inflection: refused with the G1 path (unchanged).
+    let outcome = Path::g2_or_nearest_g1(&poly, &Alphas::One(0.5), None).unwrap();
+    assert!(matches!(
+        outcome.failure,
+        Some(Error::NoG2Path {
+            leg: 2,
+            reason: G2Failure::Inflection { .. }
+        })
+    ));
+    // α too steep to resolve its zero curvature: refused, naming the leg.
+    let steep = Alphas::PerSegment(vec![0.5, -3.0, -3.0, 0.5]);
+    let err = Path::g2(&poly, &steep, None).unwrap_err();
+    assert!(
+        matches!(
+            err,
+            Error::NoG2Path {
+                leg: 2,
+                reason: G2Failure::InflectionUnresolved { .. }
+            }
+        ),
+        "{err:?}"
+    );
+    // A zigzag: both legs of one vertex inflect.
+    let zig = ControlPolygon::open(&pts(&[
+        (0.0, 0.0),
+        (2.0, 0.0),
+        (3.0, 1.0),
+        (4.0, 1.0),
+        (5.0, 2.0),
+    ]))
+    .unwrap();
+    let err = Path::g2(&zig, &Alphas::One(-1.0), None).unwrap_err();
+    assert!(
+        matches!(
+            err,
+            Error::NoG2Path {
+                reason: G2Failure::InflectionsAtOneVertex { vertex: 2 },
+                ..
+            }
+        ),
+        "{err:?}"
+    );
+}
+
+#[test]
+fn closed_figure_eight_has_two_straight_pieces() {
+    // Two loops turning opposite ways, joined by two long crossing legs.
+    let poly = ControlPolygon::closed(&pts(&[
+        (-1.5, 1.0),
+        (1.5, -1.0),
+        (3.0, -1.8),
+        (4.5, -1.0),
+        (4.5, 1.0),
+        (3.0, 1.8),
+        (1.5, 1.0),
+        (-1.5, -1.0),
+        (-3.0, -1.8),
+        (-4.5, -1.0),
+        (-4.5, 1.0),
+        (-3.0, 1.8),
+    ]))
+    .unwrap();
+    for alpha in [-1.0, -0.5] {
+        let path = Path::g2(&poly, &Alphas::One(alpha), None).unwrap();
+        assert_eq!(path.straight_pieces().len(), 2);
+        let (gap, tan, curv) = continuity(&path);
+        assert!(
+            gap < 1e-12 && tan < 1e-12 && curv <= INFLECTION_LIMIT,
+            "{gap} {tan} {curv}"
+        );
+        // A figure eight turns by 0 in all.
+        assert!(path.turning().abs() < 1e-9, "{}", path.turning());
+        let samples = path.sample_by_arc_length(200).unwrap();
+        assert!((samples[199].point - samples[0].point).hypot() < 1e-12);
+    }
 }
 
 mod properties {
@@ -312,5 +455,78 @@ fn share_of_random_polygons_with_a_g2_path() {
                 assert!(solved * 2 > total, "α {alpha}: {solved}");
             }
         }
+    }
+}
+
+/// The share of seeded random polygons with inflections (runs of two or more vertices
+/// turning the same way, the direction changing between runs) that have a G2 path, per α
+/// (printed with `--nocapture`; every solved path verified).
+#[test]
+fn share_of_random_polygons_with_inflections_with_a_g2_path() {
+    let mut state = 0x1F1E_u64;
+    let mut next = move || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for (alpha, long) in [-1.5, -1.0, -0.75, -0.5, -0.25]
+        .into_iter()
+        .flat_map(|a| [(a, 1.0), (a, 3.0)])
+    {
+        let (mut solved, mut worst, mut lines) = (0, 0.0f64, 0);
+        let mut reasons = std::collections::BTreeMap::new();
+        let total = 200;
+        for _ in 0..total {
+            // 6 interior vertices in runs of 2 or 3 (2 + 2 + 2, 3 + 3, 2 + 4 ...).
+            let mut turns = Vec::new();
+            let mut sign = if next() < 0.5 { 1.0 } else { -1.0 };
+            while turns.len() < 6 {
+                let run = 2 + (next() * 2.0) as usize;
+                for _ in 0..run.min(6 - turns.len()).max(1) {
+                    turns.push(sign * (0.3 + 0.6 * next()));
+                }
+                sign = -sign;
+            }
+            // Legs 0.7–1.3, inflection legs `long` times that.
+            let mut p = vec![Point::ZERO];
+            let mut dir = 0.0f64;
+            let mut before = 0.0f64;
+            for &t in turns.iter().chain([&0.0]) {
+                let last = *p.last().unwrap();
+                let inflection = before * t < 0.0;
+                let len = (0.7 + 0.6 * next()) * if inflection { long } else { 1.0 };
+                p.push(last + kurbo::Vec2::from_angle(dir) * len);
+                dir += t;
+                before = t;
+            }
+            let Ok(poly) = ControlPolygon::open(&p) else {
+                continue;
+            };
+            match Path::g2(&poly, &Alphas::One(alpha), None) {
+                Ok(path) => {
+                    solved += 1;
+                    lines += path.straight_pieces().len();
+                    let (gap, tan, curv) = continuity(&path);
+                    assert!(gap < 1e-11 && tan < 1e-11, "{gap} {tan}");
+                    worst = worst.max(curv);
+                }
+                Err(Error::NoG2Path { reason, .. }) => {
+                    let name = format!("{reason:?}");
+                    let name = name.split([' ', '{']).next().unwrap().to_string();
+                    *reasons.entry(name).or_insert(0) += 1;
+                }
+                Err(e) => {
+                    *reasons
+                        .entry(format!("{e}").chars().take(60).collect())
+                        .or_insert(0) += 1
+                }
+            }
+        }
+        println!(
+            "inflections (legs ×{long}) α = {alpha}: G2 solved {solved}/{total} ({lines} straight pieces), \
+             largest curvature jump or |κ| at an inflection {worst:.1e}; failures {reasons:?}"
+        );
+        assert!(worst <= 1e-9);
     }
 }

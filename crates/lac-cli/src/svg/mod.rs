@@ -59,6 +59,9 @@ pub(crate) struct Extras {
     pub(crate) comb: Option<Vec<Sample>>,
     /// Draw the evolute.
     pub(crate) evolute: bool,
+    /// The pieces form a closed path (the last one returns to the first's start, along a
+    /// straight piece when they do not meet).
+    pub(crate) closed: bool,
 }
 
 /// The layers of a drawing, in drawing coordinates.
@@ -81,7 +84,7 @@ pub(crate) fn render(
     extras: Extras,
 ) -> Result<String, ErrorBody> {
     let layers = Layers::new(pieces, points, &extras)?;
-    let caption = caption(pieces, &layers, extras.evolute);
+    let caption = caption(pieces, &layers, &extras);
     let view = View::fit(layers.bounds(), &caption);
     let mut svg = String::new();
     open(&mut svg, &view, pieces);
@@ -100,10 +103,21 @@ impl Layers {
             let samples = piece.sample_adaptive(tolerance)?;
             if i > 0 {
                 // Where this piece starts, the previous one ended: draw that point once.
+                // (A path's pieces may be apart along a straight piece between them, drawn
+                // as the chord from one to the other, both ends marked.)
+                if gap(&pieces[i - 1], piece) > 0.0 {
+                    joints.push(pieces[i - 1].end_point());
+                } else {
+                    curve.pop();
+                }
                 joints.push(samples[0].point);
-                curve.pop();
             }
             curve.extend(samples.iter().map(|s| s.point));
+        }
+        if extras.closed && gap(&pieces[pieces.len() - 1], &pieces[0]) > 0.0 {
+            joints.push(pieces[pieces.len() - 1].end_point());
+            joints.push(pieces[0].start_point());
+            curve.push(pieces[0].start_point());
         }
         let base = bounding_box(points).union(bounding_box(&curve));
         let size = drawing_size(&base);
@@ -298,7 +312,20 @@ fn dot(svg: &mut String, p: Point, colour: &str) {
 /// The caption: the curve's numbers, "α = …", "Λ = …", "arc length = …" (a compound curve:
 /// "α0 = …", "α1 = …", "Λ = …", "joint s = …", "arc length = …"), and on a line of its own
 /// the colour key of the comb and the evolute.
-fn caption(pieces: &[Segment], layers: &Layers, evolute: bool) -> Block {
+/// The distance from the end of `a` to the start of `b` (0 when they meet: a path's
+/// straight piece when they do not).
+fn gap(a: &Segment, b: &Segment) -> f64 {
+    let d = (b.start_point() - a.end_point()).hypot();
+    // (Rounding apart: a joint's two ends agree to about 1e-15 of the pieces' size.)
+    if d > 1e-9 * (a.arc_length() + b.arc_length()) {
+        d
+    } else {
+        0.0
+    }
+}
+
+fn caption(pieces: &[Segment], layers: &Layers, extras: &Extras) -> Block {
+    let evolute = extras.evolute;
     let mut facts: Vec<Entry> = slopes(pieces)
         .into_iter()
         .map(|text| Entry::plain(CURVE, text))
@@ -308,14 +335,26 @@ fn caption(pieces: &[Segment], layers: &Layers, evolute: bool) -> Block {
         format!("Λ = {}", short(pieces[0].lambda())),
     ));
     let mut s = 0.0;
-    for piece in &pieces[..pieces.len() - 1] {
+    for (i, piece) in pieces[..pieces.len() - 1].iter().enumerate() {
         s += piece.arc_length();
-        facts.push(Entry::keyed(
-            Key::Dot(JOINT),
-            format!("joint s = {}", short(s)),
-        ));
+        let line = gap(piece, &pieces[i + 1]);
+        if line > 0.0 {
+            facts.push(Entry::keyed(
+                Key::Dot(JOINT),
+                format!("straight s = {} to {}", short(s), short(s + line)),
+            ));
+            s += line;
+        } else {
+            facts.push(Entry::keyed(
+                Key::Dot(JOINT),
+                format!("joint s = {}", short(s)),
+            ));
+        }
     }
-    let length: f64 = pieces.iter().map(Segment::arc_length).sum();
+    let mut length = s + pieces[pieces.len() - 1].arc_length();
+    if extras.closed {
+        length += gap(&pieces[pieces.len() - 1], &pieces[0]);
+    }
     facts.push(Entry::plain(
         CURVE,
         format!("arc length = {}", short(length)),

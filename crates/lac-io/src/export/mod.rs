@@ -30,7 +30,8 @@ use std::time::{SystemTime, UNIX_EPOCH};
 use serde::{Deserialize, Serialize};
 
 use lac::{
-    Continuity, Curve, Error, Path, QuasiCurve, SpaceSegment, Tolerance, MIN_RELATIVE_TOLERANCE,
+    Chain, Continuity, Curve, Error, Path, QuasiCurve, SpaceSegment, Tolerance,
+    MIN_RELATIVE_TOLERANCE,
 };
 
 use crate::json::{ErrorBody, Solved};
@@ -122,11 +123,12 @@ pub enum ExportCurve<'a> {
 }
 
 impl ExportCurve<'_> {
-    /// The planar curve, if it is one.
-    fn plane(&self) -> Option<&dyn Curve> {
+    /// The planar curve, if it is one (a path's segments as one chain: paths with straight
+    /// pieces are refused before this is asked).
+    fn plane(&self) -> Option<Box<dyn Curve + '_>> {
         match self {
-            ExportCurve::Plane(s) => Some(s.curve()),
-            ExportCurve::Path(p) => Some(*p),
+            ExportCurve::Plane(s) => Some(Box::new(Chain(s.curve().pieces()))),
+            ExportCurve::Path(p) => Some(Box::new(Chain(p.segments()))),
             ExportCurve::Space(_) => None,
         }
     }
@@ -221,7 +223,7 @@ pub fn export(
         let fitted = fit(curve, target, plain)?;
         let measured = match (curve, curve.plane()) {
             (ExportCurve::Space(s), _) => measure(&SpaceExact(s), &fitted.nurbs)?,
-            (_, Some(c)) => measure(&PlaneExact(c), &fitted.nurbs)?,
+            (_, Some(c)) => measure(&PlaneExact(&*c), &fitted.nurbs)?,
             (_, None) => unreachable!("every curve but a space segment is planar"),
         };
         if measured <= tol {
@@ -332,10 +334,16 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
             planar(&[(quasi_of(c)?, c.arc_length())])
         }
         ExportCurve::Path(path) => {
+            if !path.straight_pieces().is_empty() {
+                return Err(ErrorBody::invalid_input(
+                    "a path through an inflection (with straight pieces) is not exported yet; \
+                     export the paths on either side of it",
+                ));
+            }
             // Segment by segment: each chain keeps its segment's end points, tangents and
             // curvatures, so the path's joints stay knots with the path's own continuity.
             let chains = path
-                .pieces()
+                .segments()
                 .iter()
                 .map(|seg| Ok((quasi_of(seg)?, seg.arc_length())))
                 .collect::<Result<Vec<_>, ErrorBody>>()?;

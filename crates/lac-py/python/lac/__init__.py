@@ -12,6 +12,7 @@ Rust library `lac`:
 * `RationalCubic` and `QuasiCurve`: rational cubic Beziers with a proven curvature
   monotonicity verdict (seed 001);
 * `SpaceSegment`: log-aesthetic space curves (seed 003);
+* `Path`: G1/G2 paths from a control polygon, through inflections (issue 15);
 * `drawable_region`, `drawable_region_compound`: drawable-region maps (seed 000 Fig. 9);
 * `solve_segments`: many segments in one call, on all cores, with per-curve errors.
 
@@ -32,6 +33,7 @@ from ._lac import (
     LogCurvatureGraph,
     MonotonicityReport,
     NotDrawable,
+    Path,
     QuasiCurve,
     QuasiPiece,
     RationalCubic,
@@ -64,6 +66,7 @@ __all__ = [
     "LogCurvatureGraph",
     "MonotonicityReport",
     "NotDrawable",
+    "Path",
     "QuasiCurve",
     "QuasiPiece",
     "RationalCubic",

@@ -38,6 +38,29 @@ pub enum G2Failure {
         /// The slopes of the segments before and after the leg.
         alphas: [f64; 2],
     },
+    /// A segment next to this inflection leg has α < 0, but its zero-curvature end cannot
+    /// be resolved in double precision (the curvature there falls like d^(1/|α|) with the
+    /// distance d from the inflection point: for α below about −1.7 not to 1e-10).
+    InflectionUnresolved {
+        /// The segment's slope.
+        alpha: f64,
+    },
+    /// The polygon's turning changes direction on both legs of one vertex: its segment would
+    /// need zero curvature at both ends, which a monotone-curvature segment cannot have.
+    InflectionsAtOneVertex {
+        /// The vertex.
+        vertex: usize,
+    },
+    /// A spline's span whose end tangents leave the chord on the same side (or whose
+    /// curvature would change sign at a point): it would need an inflection, which splines
+    /// do not pass through yet.
+    SpanInflects,
+    /// The two segments that reach zero curvature on this leg need more than its length:
+    /// they overlap by `overlap` (a share of the leg).
+    InflectionLegTooShort {
+        /// How much of the leg is missing, as a share of it.
+        overlap: f64,
+    },
 }
 
 impl fmt::Display for G2Failure {
@@ -53,9 +76,34 @@ impl fmt::Display for G2Failure {
                 f,
                 "the polygon's turning changes direction on this leg, so the curvature must \
                  pass through zero; the segments there have alpha = {} and {}, and a \
-                 log-aesthetic segment reaches zero curvature only for alpha < 0 (and that \
-                 is not supported yet): add a vertex or use the G1 path",
+                 log-aesthetic segment reaches zero curvature only for alpha < 0: use \
+                 alpha < 0 for the segments next to this leg or use the G1 path",
                 alphas[0], alphas[1]
+            ),
+            G2Failure::InflectionUnresolved { alpha } => write!(
+                f,
+                "the polygon's turning changes direction on this leg; a segment with alpha = \
+                 {alpha} next to it cannot be brought to zero curvature in double precision \
+                 (use alpha between -1.5 and 0 next to inflections)"
+            ),
+            G2Failure::InflectionsAtOneVertex { vertex } => write!(
+                f,
+                "the polygon's turning changes direction on both legs of vertex {vertex}: \
+                 its segment would need zero curvature at both ends; add a vertex that turns \
+                 the same way next to it"
+            ),
+            G2Failure::SpanInflects => write!(
+                f,
+                "this span (from this point to the next) would have to inflect: the \
+                 curvature changes sign along it or at its ends, and splines through points \
+                 do not pass through inflections yet (G2 paths from a control polygon do)"
+            ),
+            G2Failure::InflectionLegTooShort { overlap } => write!(
+                f,
+                "the polygon's turning changes direction on this leg, and the two segments \
+                 that reach zero curvature there need {:.1}% more than its length; make the \
+                 leg longer or its neighbours shorter",
+                100.0 * overlap
             ),
         }
     }
@@ -86,8 +134,10 @@ struct Eval {
 struct State {
     /// Logit of each joint's fraction.
     x: Vec<f64>,
-    /// Fraction of every leg.
+    /// Fraction of every leg where a segment starts.
     t: Vec<f64>,
+    /// Fraction of every leg where a segment ends (differs on inflection legs).
+    t_end: Vec<f64>,
     evals: Vec<Eval>,
     /// ln|κ⁻| − ln|κ⁺| at each joint.
     residual: Vec<f64>,
@@ -112,18 +162,133 @@ fn logistic(x: f64) -> f64 {
     }
 }
 
-/// The segments and joint residuals at logit fractions `x`, or the segment that fails.
-fn evaluate(polygon: &ControlPolygon, alphas: &[f64], x: Vec<f64>) -> Result<State> {
-    let fractions: Vec<f64> = x.iter().map(|&x| logistic(x)).collect();
-    if fractions.iter().any(|&t| !(t > 0.0 && t < 1.0)) {
+/// The inflection legs of a polygon and the fixed leg ratios of the segments next to them.
+pub(super) struct Inflections {
+    /// The joint legs that are unknowns (not inflection legs).
+    unknown: Vec<usize>,
+    /// The inflection legs.
+    legs: Vec<usize>,
+    /// Per segment: the ratio (inflection leg / other leg) when its start leg is an
+    /// inflection leg.
+    at_start: Vec<Option<f64>>,
+    /// Per segment: the same when its end leg is one.
+    at_end: Vec<Option<f64>>,
+}
+
+impl Inflections {
+    /// Whether segment `k`'s shape is fixed (it ends at an inflection).
+    fn fixed(&self, k: usize) -> bool {
+        self.at_start[k].is_some() || self.at_end[k].is_some()
+    }
+}
+
+/// The inflections of `polygon`, or the leg and why no G2 path can pass through one.
+fn inflections(
+    polygon: &ControlPolygon,
+    alphas: &[f64],
+) -> std::result::Result<Inflections, (usize, G2Failure)> {
+    let legs = polygon.inflection_legs();
+    let m = polygon.segment_count();
+    let (mut at_start, mut at_end) = (vec![None; m], vec![None; m]);
+    for &leg in &legs {
+        let (before, after) = polygon.segments_at_leg(leg);
+        if alphas[before] >= 0.0 || alphas[after] >= 0.0 {
+            return Err((
+                leg,
+                G2Failure::Inflection {
+                    alphas: [alphas[before], alphas[after]],
+                },
+            ));
+        }
+        for (k, slot) in [(before, &mut at_end), (after, &mut at_start)] {
+            let turning = {
+                let [a, p, b] = polygon.control_points(
+                    &vec![0.5; polygon.leg_count()],
+                    &vec![0.5; polygon.leg_count()],
+                    k,
+                );
+                let (u, v) = (p - a, b - p);
+                u.cross(v).abs().atan2(u.dot(v))
+            };
+            match super::inflection::leg_ratio(alphas[k], turning) {
+                Some((q, _)) => slot[k] = Some(q),
+                None => {
+                    return Err((leg, G2Failure::InflectionUnresolved { alpha: alphas[k] }));
+                }
+            }
+        }
+    }
+    for k in 0..m {
+        if at_start[k].is_some() && at_end[k].is_some() {
+            let (sl, _) = polygon.legs_of_segment(k);
+            return Err((
+                sl,
+                G2Failure::InflectionsAtOneVertex {
+                    vertex: polygon.vertex_of_segment(k),
+                },
+            ));
+        }
+    }
+    let unknown = polygon
+        .joint_legs()
+        .into_iter()
+        .filter(|l| !legs.contains(l))
+        .collect();
+    Ok(Inflections {
+        unknown,
+        legs,
+        at_start,
+        at_end,
+    })
+}
+
+/// The fractions where segments start and end on every leg for logit fractions `x` of the
+/// unknown joints: on an inflection leg, each neighbouring segment's fixed leg ratio places
+/// its end from its other leg.
+fn fractions_of(
+    polygon: &ControlPolygon,
+    infl: &Inflections,
+    x: &[f64],
+) -> Result<(Vec<f64>, Vec<f64>)> {
+    let mut joint = vec![0.5; polygon.joint_legs().len()];
+    let legs = polygon.joint_legs();
+    for (&leg, &x) in infl.unknown.iter().zip(x) {
+        let i = legs.iter().position(|&l| l == leg).expect("a joint leg");
+        joint[i] = logistic(x);
+    }
+    if joint.iter().any(|&t| !(t > 0.0 && t < 1.0)) {
         return Err(Error::NumericalFailure {
             what: "a joint fraction (it reached an end of its leg)",
         });
     }
-    let t = polygon.leg_fractions(&fractions);
+    let mut t = polygon.leg_fractions(&joint);
+    let mut t_end = t.clone();
+    for &leg in &infl.legs {
+        let (before, after) = polygon.segments_at_leg(leg);
+        let length = polygon.leg_length(leg);
+        let (sl, _) = polygon.legs_of_segment(before);
+        let a = (1.0 - t[sl]) * polygon.leg_length(sl);
+        t_end[leg] = infl.at_end[before].expect("fixed") * a / length;
+        let (_, el) = polygon.legs_of_segment(after);
+        let b = t_end[el] * polygon.leg_length(el);
+        // (Beyond the leg's far end while iterating: the triangle stays valid on the leg's
+        // line, and the overlap is checked on the answer.)
+        t[leg] = 1.0 - infl.at_start[after].expect("fixed") * b / length;
+    }
+    Ok((t, t_end))
+}
+
+/// The segments and joint residuals at logit fractions `x`, or the segment that fails.
+fn evaluate(
+    polygon: &ControlPolygon,
+    alphas: &[f64],
+    infl: &Inflections,
+    x: Vec<f64>,
+) -> Result<State> {
+    let (t, t_end) = fractions_of(polygon, infl, &x)?;
     let evals = (0..polygon.segment_count())
         .map(|k| {
-            let points = polygon.control_points(&t, k);
+            let points = polygon.control_points(&t, &t_end, k);
             end_curvatures_of(points, alphas[k])
                 .map(|kappa| Eval {
                     points,
@@ -136,10 +301,10 @@ fn evaluate(polygon: &ControlPolygon, alphas: &[f64], x: Vec<f64>) -> Result<Sta
                 })
         })
         .collect::<Result<Vec<_>>>()?;
-    let residual = polygon
-        .joint_legs()
-        .into_iter()
-        .map(|leg| {
+    let residual = infl
+        .unknown
+        .iter()
+        .map(|&leg| {
             let (before, after) = polygon.segments_at_leg(leg);
             let k1 = evals[before].kappa.1;
             let k0 = evals[after].kappa.0;
@@ -149,6 +314,7 @@ fn evaluate(polygon: &ControlPolygon, alphas: &[f64], x: Vec<f64>) -> Result<Sta
     Ok(State {
         x,
         t,
+        t_end,
         evals,
         residual,
     })
@@ -156,7 +322,11 @@ fn evaluate(polygon: &ControlPolygon, alphas: &[f64], x: Vec<f64>) -> Result<Sta
 
 /// dG0/d ln r and dG1/d ln r of segment `k` by a forward difference: its end point moved
 /// toward its vertex by the factor e^{−h} (backwards when that is not drawable).
-fn slopes(alphas: &[f64], state: &State, k: usize) -> Option<[f64; 2]> {
+fn slopes(alphas: &[f64], infl: &Inflections, state: &State, k: usize) -> Option<[f64; 2]> {
+    if infl.fixed(k) {
+        // Its leg ratio is fixed: its G0, G1 do not change.
+        return Some([0.0, 0.0]);
+    }
     let eval = &state.evals[k];
     let [q0, p, q1] = eval.points;
     let (k0, k1) = eval.kappa;
@@ -206,9 +376,40 @@ fn balanced_start(polygon: &ControlPolygon) -> Vec<f64> {
         .collect()
 }
 
+/// Logit fractions `x` of the unknown joints moved so that each segment that ends at an
+/// inflection takes at most 45% of its inflection leg: its other leg is short enough (a
+/// segment from an inflection point is long and flat there, its inflection-side leg several
+/// times its other leg), so that Newton's method starts where every segment fits.
+fn room_for_inflections(polygon: &ControlPolygon, infl: &Inflections, mut x: Vec<f64>) -> Vec<f64> {
+    const SHARE: f64 = 0.45;
+    let logit = |t: f64| (t / (1.0 - t)).ln();
+    for &leg in &infl.legs {
+        let length = polygon.leg_length(leg);
+        let (before, after) = polygon.segments_at_leg(leg);
+        let (sl, _) = polygon.legs_of_segment(before);
+        if let Some(u) = infl.unknown.iter().position(|&l| l == sl) {
+            let q = infl.at_end[before].expect("fixed");
+            let lowest = 1.0 - SHARE * length / (q * polygon.leg_length(sl));
+            if lowest > 0.0 {
+                x[u] = x[u].max(logit(lowest.min(0.95)));
+            }
+        }
+        let (_, el) = polygon.legs_of_segment(after);
+        if let Some(u) = infl.unknown.iter().position(|&l| l == el) {
+            let q = infl.at_start[after].expect("fixed");
+            let highest = SHARE * length / (q * polygon.leg_length(el));
+            if highest < 1.0 {
+                x[u] = x[u].min(logit(highest.max(0.05)));
+            }
+        }
+    }
+    x
+}
+
 /// Newton's method (damped; chord steps while they converge fast) on the joint equations
 /// from `state`, returning the last iterate.
-fn newton(polygon: &ControlPolygon, alphas: &[f64], legs: &[usize], mut state: State) -> State {
+fn newton(polygon: &ControlPolygon, alphas: &[f64], infl: &Inflections, mut state: State) -> State {
+    let legs = &infl.unknown;
     let n = legs.len();
     let cyclic = polygon.is_closed();
     let mut refresh = true;
@@ -222,7 +423,7 @@ fn newton(polygon: &ControlPolygon, alphas: &[f64], legs: &[usize], mut state: S
         // method otherwise; the chain-rule factors are always current).
         if refresh {
             for k in 0..state.evals.len() {
-                state.evals[k].slope = slopes(alphas, &state, k);
+                state.evals[k].slope = slopes(alphas, infl, &state, k);
             }
             slopes_now = state.evals.iter().map(|e| e.slope).collect();
         } else {
@@ -276,7 +477,7 @@ fn newton(polygon: &ControlPolygon, alphas: &[f64], legs: &[usize], mut state: S
                 .zip(&dx)
                 .map(|(x, d)| x + lambda * d)
                 .collect();
-            if let Ok(s) = evaluate(polygon, alphas, x) {
+            if let Ok(s) = evaluate(polygon, alphas, infl, x) {
                 if s.norm() < norm * (1.0 - 1e-4 * lambda) {
                     next = Some(s);
                     break;
@@ -306,45 +507,61 @@ pub(super) fn solve(
 ) -> Result<G2Outcome> {
     let legs = polygon.joint_legs();
     let n = legs.len();
-    // An inflection leg: the curvature would have to change sign at the joint.
-    for &leg in &legs {
-        let (before, after) = polygon.segments_at_leg(leg);
-        let (vb, va) = (
-            polygon.vertex_of_segment(before),
-            polygon.vertex_of_segment(after),
-        );
-        if polygon.turn_at(vb) != polygon.turn_at(va) {
-            let failure = Error::NoG2Path {
-                leg,
-                reason: G2Failure::Inflection {
-                    alphas: [alphas[before], alphas[after]],
-                },
+    // Inflection legs: the curvature passes through zero on a straight piece there, between
+    // two segments of fixed shape.
+    let infl = match inflections(polygon, alphas) {
+        Ok(infl) => infl,
+        Err((leg, reason)) => {
+            let failure = Error::NoG2Path { leg, reason };
+            // (When not even the midpoint G1 path can be drawn, the reason G2 failed is
+            // the more useful error.)
+            let Ok(path) = Path::g1(polygon, &super::Alphas::PerSegment(alphas.to_vec()), None)
+            else {
+                return Err(failure);
             };
-            let path = Path::g1(polygon, &super::Alphas::PerSegment(alphas.to_vec()), None)?;
             return Ok(G2Outcome {
                 path,
                 failure: Some(failure),
             });
         }
-    }
+    };
+    // Only the joints on other legs are unknowns.
+    let unknowns = |x: Vec<f64>| -> Vec<f64> {
+        legs.iter()
+            .zip(x)
+            .filter(|(l, _)| infl.unknown.contains(l))
+            .map(|(_, x)| x)
+            .collect()
+    };
     let warm: Option<Vec<f64>> = match warm {
         Some(w) if w.len() == n && w.iter().all(|t| *t > 0.0 && *t < 1.0) => {
-            Some(w.iter().map(|t| (t / (1.0 - t)).ln()).collect())
+            Some(unknowns(w.iter().map(|t| (t / (1.0 - t)).ln()).collect()))
         }
         _ => None,
     };
     // Starts in order: the warm start, fractions that make each segment's legs alike (the
     // isosceles triangle is a circular arc, drawable for every α), the midpoints.
-    let starts = warm
-        .into_iter()
-        .chain([balanced_start(polygon), vec![0.0; n]]);
+    // With inflections, the same moved to give the segments there room first.
+    let plain = [
+        unknowns(balanced_start(polygon)),
+        vec![0.0; infl.unknown.len()],
+    ];
+    let roomy: Vec<Vec<f64>> = if infl.legs.is_empty() {
+        Vec::new()
+    } else {
+        plain
+            .iter()
+            .map(|x| room_for_inflections(polygon, &infl, x.clone()))
+            .collect()
+    };
+    let starts = warm.into_iter().chain(roomy).chain(plain);
     // Newton from each start that can be evaluated, until one converges; otherwise the
     // best iterate reached (smallest residual) is the nearest G1 path.
     let mut first_error = None;
     let mut best: Option<State> = None;
     for start in starts {
-        let state = match evaluate(polygon, alphas, start) {
-            Ok(s) => newton(polygon, alphas, &legs, s),
+        let state = match evaluate(polygon, alphas, &infl, start) {
+            Ok(s) => newton(polygon, alphas, &infl, s),
             Err(e) => {
                 first_error.get_or_insert(e);
                 continue;
@@ -361,19 +578,43 @@ pub(super) fn solve(
     let Some(state) = best else {
         return Err(first_error.expect("at least one start was tried"));
     };
-    let fractions: Vec<f64> = legs.iter().map(|&leg| state.t[leg]).collect();
+    let fractions: Vec<f64> = legs
+        .iter()
+        .map(|&leg| (0.5 * (state.t[leg] + state.t_end[leg])).clamp(0.05, 0.95))
+        .collect();
     let segments = (0..polygon.segment_count())
-        .map(|k| segment(polygon, alphas, &state.t, k))
+        .map(|k| segment(polygon, alphas, &state.t, &state.t_end, k))
         .collect::<Result<Vec<Segment>>>()?;
     let jump_ok = state
         .residual
         .iter()
         .all(|r| r.abs() <= 0.5 * super::G2_JUMP_LIMIT);
+    // Each straight piece must fit on its leg.
+    let overlap = infl
+        .legs
+        .iter()
+        .map(|&leg| (leg, state.t_end[leg] - state.t[leg]))
+        .find(|(_, o)| *o > 0.0);
+    if let (true, Some((leg, overlap))) = (jump_ok, overlap) {
+        let failure = Error::NoG2Path {
+            leg,
+            reason: G2Failure::InflectionLegTooShort { overlap },
+        };
+        let path = Path::g1(
+            polygon,
+            &super::Alphas::PerSegment(alphas.to_vec()),
+            Some(&fractions),
+        )?;
+        return Ok(G2Outcome {
+            path,
+            failure: Some(failure),
+        });
+    }
     if jump_ok {
         let path = Path::assemble(
             polygon.clone(),
             alphas.to_vec(),
-            state.t,
+            [state.t, state.t_end],
             segments,
             Continuity::G2,
         )?;
@@ -391,7 +632,7 @@ pub(super) fn solve(
             |(i, m), (j, r)| if r.abs() > m { (j, r.abs()) } else { (i, m) },
         );
     let failure = Error::NoG2Path {
-        leg: legs[worst],
+        leg: infl.unknown[worst],
         reason: G2Failure::NoConvergence { jump },
     };
     let path = Path::g1(

@@ -24,20 +24,36 @@
 //! whose derivatives follow from dG/d ln r (one extra segment solve per segment, by a
 //! forward difference) and d ln r / dx = −t (start leg), −(1 − t) (end leg).
 //!
+//! Inflections. Where the polygon's turning changes direction (an *inflection leg*), a G2
+//! path's curvature passes through zero: the segments on either side (α < 0 only) end at
+//! their inflection end, and a [`StraightPiece`] runs along the leg between them. Such a
+//! segment is fixed up to scale by α and its turning angle, so the ratio of its legs is
+//! fixed (solved once, see `inflection.rs`); the joints on the other legs stay the
+//! unknowns, and the straight piece must fit on its leg (its length is whatever the chains
+//! on either side leave; a zero length is the exception). A vertex whose two legs both
+//! inflect has no G2 path (its segment would need zero curvature at both ends). The
+//! segments stop where |κ| is 1e-12 of their other end's (`Segment` has no station at
+//! ρ = ∞), which the checks hold to [`INFLECTION_LIMIT`] of the path's curvature scale.
+//!
 //! Every result is checked before it is returned: position, tangent and (in G2) curvature
-//! continuity at every joint ([`Joint`]).
+//! continuity at every joint ([`Joint`]), and on every straight piece its ends, the tangents
+//! of its neighbours and their zero curvature ([`StraightPiece`]).
 
 mod banded;
 mod g2;
+mod inflection;
+mod spline;
 
 use kurbo::Point;
 
 use crate::curve::Curve;
 use crate::error::{finite, Error, Result};
+use crate::segment::Sample;
 use crate::segment::{check_alpha, Segment};
 use crate::turn::Turn;
 
 pub use g2::{G2Failure, G2Outcome, G2_TOLERANCE};
+pub use spline::Spline;
 
 /// The largest relative curvature jump a G2 path may have at a joint,
 /// |κ⁻ − κ⁺| / max(|κ⁻|, |κ⁺|).
@@ -196,11 +212,32 @@ impl ControlPolygon {
         }
     }
 
-    /// The control triangle of segment `k` for leg fractions `t`.
-    fn control_points(&self, t: &[f64], k: usize) -> [Point; 3] {
+    /// The control triangle of segment `k` when the segments starting on each leg start at
+    /// fraction `start[leg]` and those ending on it end at `end[leg]` (the same but on an
+    /// inflection leg, where a straight piece runs between them).
+    fn control_points(&self, start: &[f64], end: &[f64], k: usize) -> [Point; 3] {
         let (sl, el) = self.legs_of_segment(k);
         let v = self.vertex_of_segment(k);
-        [self.at(sl, t[sl]), self.points[v], self.at(el, t[el])]
+        [self.at(sl, start[sl]), self.points[v], self.at(el, end[el])]
+    }
+
+    /// Length of leg `i`.
+    fn leg_length(&self, i: usize) -> f64 {
+        let (a, b) = self.leg(i);
+        (b - a).hypot()
+    }
+
+    /// The joint legs where the turning direction changes (the curvature must pass through
+    /// zero there).
+    fn inflection_legs(&self) -> Vec<usize> {
+        self.joint_legs()
+            .into_iter()
+            .filter(|&leg| {
+                let (before, after) = self.segments_at_leg(leg);
+                self.turn_at(self.vertex_of_segment(before))
+                    != self.turn_at(self.vertex_of_segment(after))
+            })
+            .collect()
     }
 
     /// The turning direction at vertex `v` (`None` when the legs are collinear).
@@ -310,16 +347,52 @@ pub struct Joint {
     pub curvature_jump: f64,
 }
 
+/// The straight piece of a path on a leg where its turning changes direction: it runs along
+/// the leg from where the segment before it ends to where the segment after it starts, both
+/// of them at their inflection end (curvature within [`INFLECTION_LIMIT`] of zero).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StraightPiece {
+    /// The polygon leg it lies on.
+    pub leg: usize,
+    /// Fractions of the leg from P_leg where it starts and ends.
+    pub fractions: [f64; 2],
+    /// Where it starts (the end of the segment before it).
+    pub from: Point,
+    /// Where it ends (the start of the segment after it).
+    pub to: Point,
+    /// Signed curvature at the end of the segment before it.
+    pub curvature_before: f64,
+    /// Signed curvature at the start of the segment after it.
+    pub curvature_after: f64,
+    /// Distance between each neighbouring segment's end and the piece's end, caller's units.
+    pub gap: f64,
+    /// Largest angle between a neighbouring segment's tangent and the leg, radians.
+    pub tangent_jump: f64,
+}
+
+impl StraightPiece {
+    /// Its length (0 when the segments meet).
+    pub fn length(&self) -> f64 {
+        (self.to - self.from).hypot()
+    }
+}
+
+/// The largest |κ| at a path's inflection, relative to the largest |κ| at any segment end of
+/// the path (a G2 path's straight piece has κ = 0).
+pub const INFLECTION_LIMIT: f64 = 1e-9;
+
 /// A log-aesthetic path: one [`Segment`] per interior vertex of a [`ControlPolygon`], joined
 /// at points on the legs with continuous position and tangent (G1), and curvature too when
 /// solved by [`Path::g2`]. See the module documentation for the construction.
 ///
-/// It is a [`Curve`]: arc length runs from the start of the first segment (P0 when open; the
-/// joint on the last leg when closed) through the segments in order.
+/// Arc length runs from the start of the first segment (P0 when open; the joint on the last
+/// leg when closed) through the segments and straight pieces in order. A path is not a
+/// [`Curve`] (whose pieces are all segments): each of its [`Path::segments`] is, and
+/// [`Path::sample_by_arc_length`] samples the whole path, straight pieces included.
 ///
 /// ```
 /// use kurbo::Point;
-/// use lac::{Alphas, ControlPolygon, Curve, Path};
+/// use lac::{Alphas, ControlPolygon, Path};
 ///
 /// let polygon = ControlPolygon::open(&[
 ///     Point::new(0.0, 0.0), Point::new(2.0, 0.0), Point::new(3.0, 1.5), Point::new(3.0, 3.0),
@@ -334,10 +407,15 @@ pub struct Joint {
 pub struct Path {
     polygon: ControlPolygon,
     alphas: Vec<f64>,
-    /// Fraction of every leg (0 and 1 on an open polygon's end legs).
+    /// Fraction of every leg where the segment starting on it starts (0 and 1 on an open
+    /// polygon's end legs).
     fractions: Vec<f64>,
+    /// Fraction of every leg where the segment ending on it ends (differs on inflection
+    /// legs).
+    fractions_end: Vec<f64>,
     segments: Vec<Segment>,
     joints: Vec<Joint>,
+    straight: Vec<StraightPiece>,
     continuity: Continuity,
 }
 
@@ -380,9 +458,15 @@ impl Path {
         };
         let t = polygon.leg_fractions(&fractions);
         let segments = (0..polygon.segment_count())
-            .map(|k| segment(polygon, &alphas, &t, k))
+            .map(|k| segment(polygon, &alphas, &t, &t, k))
             .collect::<Result<Vec<_>>>()?;
-        Path::assemble(polygon.clone(), alphas, t, segments, Continuity::G1)
+        Path::assemble(
+            polygon.clone(),
+            alphas,
+            [t.clone(), t],
+            segments,
+            Continuity::G1,
+        )
     }
 
     /// The G2 path: the joints placed so that the curvature is continuous at every one
@@ -413,17 +497,43 @@ impl Path {
     }
 
     /// Check every joint and build the path: positions within 1e-10 of the polygon's size,
-    /// tangents within 1e-10 rad, and in G2 the curvature jump within [`G2_JUMP_LIMIT`].
+    /// tangents within 1e-10 rad, and in G2 the curvature jump within [`G2_JUMP_LIMIT`]; a
+    /// leg whose start and end fractions differ carries a straight piece, whose neighbours'
+    /// curvatures must be within [`INFLECTION_LIMIT`] of zero.
     fn assemble(
         polygon: ControlPolygon,
         alphas: Vec<f64>,
-        fractions: Vec<f64>,
+        [fractions, fractions_end]: [Vec<f64>; 2],
         segments: Vec<Segment>,
         continuity: Continuity,
     ) -> Result<Path> {
         let size = polygon.size();
+        let scale = segments
+            .iter()
+            .map(|s| {
+                let (a, b) = s.end_curvatures();
+                a.abs().max(b.abs())
+            })
+            .fold(0.0, f64::max);
         let mut joints = Vec::new();
+        let mut straight = Vec::new();
         for leg in polygon.joint_legs() {
+            if fractions[leg] != fractions_end[leg] {
+                let piece = straight_piece(&polygon, &segments, &fractions, &fractions_end, leg)?;
+                let ok = piece.gap <= G1_LIMIT * size
+                    && piece.tangent_jump <= G1_LIMIT
+                    && fractions_end[leg] <= fractions[leg]
+                    && piece.curvature_before.abs() <= INFLECTION_LIMIT * scale
+                    && piece.curvature_after.abs() <= INFLECTION_LIMIT * scale;
+                if !ok {
+                    return Err(Error::NumericalFailure {
+                        what: "the path's inflection check (a straight piece's ends, tangents \
+                               or zero curvature do not match)",
+                    });
+                }
+                straight.push(piece);
+                continue;
+            }
             let (before, after) = polygon.segments_at_leg(leg);
             let (a, b) = (&segments[before], &segments[after]);
             let kb = a.end_curvatures().1;
@@ -462,8 +572,10 @@ impl Path {
             polygon,
             alphas,
             fractions,
+            fractions_end,
             segments,
             joints,
+            straight,
             continuity,
         })
     }
@@ -479,9 +591,24 @@ impl Path {
     }
 
     /// The fraction of each joint leg at which its joint lies (the order of
-    /// [`ControlPolygon::joint_legs`]): the warm start for [`Path::g2`].
+    /// [`ControlPolygon::joint_legs`]; on an inflection leg, where its straight piece
+    /// starts): the warm start for [`Path::g2`].
     pub fn joint_fractions(&self) -> Vec<f64> {
-        self.joints.iter().map(|j| j.fraction).collect()
+        self.polygon
+            .joint_legs()
+            .into_iter()
+            .map(|leg| self.fractions_end[leg])
+            .collect()
+    }
+
+    /// The straight pieces on the inflection legs of a G2 path (empty when it turns one way).
+    pub fn straight_pieces(&self) -> &[StraightPiece] {
+        &self.straight
+    }
+
+    /// The segments in order from the path's start.
+    pub fn segments(&self) -> &[Segment] {
+        &self.segments
     }
 
     /// The fraction of every leg (an open polygon's first leg 0, its last 1: the path
@@ -494,7 +621,10 @@ impl Path {
     /// end joint), the joints exactly shared by consecutive segments.
     pub fn control_triangles(&self) -> Vec<[Point; 3]> {
         (0..self.segments.len())
-            .map(|k| self.polygon.control_points(&self.fractions, k))
+            .map(|k| {
+                self.polygon
+                    .control_points(&self.fractions, &self.fractions_end, k)
+            })
             .collect()
     }
 
@@ -507,13 +637,118 @@ impl Path {
     /// a closed path's last joint is at its full length).
     pub fn joints_s(&self) -> Vec<f64> {
         let mut s = 0.0;
-        self.segments[..self.joints.len()]
-            .iter()
-            .map(|seg| {
-                s += seg.arc_length();
-                s
-            })
-            .collect()
+        let mut out = Vec::new();
+        for item in self.items() {
+            s += self.item_length(&item);
+            if let Item::Segment(k) = item {
+                let (_, el) = self.polygon.legs_of_segment(k);
+                if self.joints.iter().any(|j| j.leg == el) {
+                    out.push(s);
+                }
+            }
+        }
+        out
+    }
+
+    /// The arc length from the path's start to the start of each straight piece (the order
+    /// of [`Path::straight_pieces`]).
+    pub fn straight_pieces_s(&self) -> Vec<f64> {
+        let mut s = 0.0;
+        let mut out = Vec::new();
+        for item in self.items() {
+            if let Item::Line(_) = item {
+                out.push(s);
+            }
+            s += self.item_length(&item);
+        }
+        out
+    }
+
+    /// The segments and straight pieces in order from the path's start.
+    fn items(&self) -> Vec<Item<'_>> {
+        let mut out = Vec::new();
+        for k in 0..self.segments.len() {
+            out.push(Item::Segment(k));
+            let (_, el) = self.polygon.legs_of_segment(k);
+            if let Some(p) = self.straight.iter().find(|p| p.leg == el) {
+                out.push(Item::Line(p));
+            }
+        }
+        out
+    }
+
+    /// Arc length from the first point to the last (segments and straight pieces).
+    pub fn arc_length(&self) -> f64 {
+        self.items().iter().map(|i| self.item_length(i)).sum()
+    }
+
+    fn item_length(&self, item: &Item) -> f64 {
+        match item {
+            Item::Segment(k) => self.segments[*k].arc_length(),
+            Item::Line(p) => p.length(),
+        }
+    }
+
+    /// Total turning of the tangent from the first to the last point, radians, signed
+    /// (positive for a left turn; the straight pieces do not turn).
+    pub fn turning(&self) -> f64 {
+        self.segments.iter().map(Curve::turning).sum()
+    }
+
+    /// The first point.
+    pub fn start_point(&self) -> Point {
+        self.segments[0].start_point()
+    }
+
+    /// The last point.
+    pub fn end_point(&self) -> Point {
+        self.segments[self.segments.len() - 1].end_point()
+    }
+
+    /// `n ≥ 2` samples equally spaced in arc length over the whole path (straight pieces
+    /// included, with κ = 0 there), the first at its first point and the last at its last;
+    /// θ is continuous from the first point.
+    pub fn sample_by_arc_length(&self, n: usize) -> Result<Vec<Sample>> {
+        crate::segment::sampling::check_count(n)?;
+        let items = self.items();
+        let lengths: Vec<f64> = items.iter().map(|i| self.item_length(i)).collect();
+        let total: f64 = lengths.iter().sum();
+        let step = total / (n - 1) as f64;
+        let mut out: Vec<Sample> = Vec::with_capacity(n);
+        let (mut item, mut start) = (0, 0.0);
+        for i in 0..n {
+            let s = if i == n - 1 { total } else { i as f64 * step };
+            while item + 1 < items.len() && s > start + lengths[item] {
+                start += lengths[item];
+                item += 1;
+            }
+            let local = (s - start).clamp(0.0, lengths[item]);
+            let mut sample = match items[item] {
+                Item::Segment(k) => {
+                    let seg = &self.segments[k];
+                    let mut smp = seg.samples_at_arc_lengths(&[local])?[0];
+                    smp.s = s;
+                    smp
+                }
+                Item::Line(p) => {
+                    let len = p.length();
+                    let u = if len > 0.0 { local / len } else { 0.0 };
+                    let (a, b) = self.polygon.leg(p.leg);
+                    Sample {
+                        s,
+                        point: p.from.lerp(p.to, u),
+                        theta: (b - a).atan2(),
+                        kappa: 0.0,
+                    }
+                }
+            };
+            if let Some(prev) = out.last() {
+                let tau = std::f64::consts::TAU;
+                sample.theta -= tau * ((sample.theta - prev.theta) / tau).round();
+            }
+            out.push(sample);
+        }
+        Ok(out)
     }
 
     /// G1 or G2.
@@ -530,21 +765,57 @@ impl Path {
     }
 }
 
-impl Curve for Path {
-    fn pieces(&self) -> &[Segment] {
-        &self.segments
-    }
+/// A segment or a straight piece of a path.
+#[derive(Clone, Copy)]
+enum Item<'a> {
+    Segment(usize),
+    Line(&'a StraightPiece),
 }
 
-/// Segment `k` of the polygon for leg fractions `t`, its failure named by its vertex.
-fn segment(polygon: &ControlPolygon, alphas: &[f64], t: &[f64], k: usize) -> Result<Segment> {
-    let (sl, el) = polygon.legs_of_segment(k);
+/// The straight piece on inflection leg `leg` and what it measured against its neighbours.
+fn straight_piece(
+    polygon: &ControlPolygon,
+    segments: &[Segment],
+    start: &[f64],
+    end: &[f64],
+    leg: usize,
+) -> Result<StraightPiece> {
+    let (before, after) = polygon.segments_at_leg(leg);
+    let (a, b) = (&segments[before], &segments[after]);
+    let (from, to) = (polygon.at(leg, end[leg]), polygon.at(leg, start[leg]));
+    let (p, q) = polygon.leg(leg);
+    let dir = (q - p).atan2();
+    let wrap = |d: f64| {
+        let tau = std::f64::consts::TAU;
+        (d - tau * (d / tau).round()).abs()
+    };
+    let end_theta = a.theta_of(&a.station_at_turning(a.turning_angle())?);
+    let start_theta = b.theta_of(&b.station_at_turning(0.0)?);
+    Ok(StraightPiece {
+        leg,
+        fractions: [end[leg], start[leg]],
+        from,
+        to,
+        curvature_before: a.end_curvatures().1,
+        curvature_after: b.end_curvatures().0,
+        gap: (a.last_point() - from)
+            .hypot()
+            .max((b.first_point() - to).hypot()),
+        tangent_jump: wrap(end_theta - dir).max(wrap(start_theta - dir)),
+    })
+}
+
+/// Segment `k` of the polygon for leg fractions `start` (where segments start) and `end`
+/// (where they end), its failure named by its vertex.
+fn segment(
+    polygon: &ControlPolygon,
+    alphas: &[f64],
+    start: &[f64],
+    end: &[f64],
+    k: usize,
+) -> Result<Segment> {
+    let points = polygon.control_points(start, end, k);
     let v = polygon.vertex_of_segment(k);
-    let points = [
-        polygon.at(sl, t[sl]),
-        polygon.points[v],
-        polygon.at(el, t[el]),
-    ];
     Segment::from_control_points(points, alphas[k]).map_err(|e| Error::PathSegment {
         vertex: v,
         source: Box::new(e),

@@ -1,0 +1,80 @@
+//! `lac spline`: G2 splines through points, their JSON, CSV and SVG, and their errors (the
+//! span named).
+
+mod common;
+
+use common::{assert_failure, json, lac};
+use serde_json::Value;
+
+fn f(v: &Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("a number: {v}"))
+}
+
+#[test]
+fn open_spline_passes_through_its_points_with_continuous_curvature() {
+    let through = "0,0 2,0.3 3.5,1.5 4,3 3.5,4.5";
+    let run = lac(&["spline", "--through", through, "--alpha", "-0.5"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let v = json(&run);
+    let spans = v["spans"].as_array().unwrap();
+    assert_eq!(spans.len(), 4);
+    let points = v["points"].as_array().unwrap();
+    for (i, s) in spans.iter().enumerate() {
+        assert_eq!(s["control_points"][0], points[i]);
+        assert_eq!(s["control_points"][2], points[i + 1]);
+    }
+    for w in spans.windows(2) {
+        let (a, b) = (f(&w[0]["curvature"][1]), f(&w[1]["curvature"][0]));
+        assert!((a - b).abs() <= 1e-9 * a.abs().max(b.abs()), "{a} {b}");
+    }
+    assert_eq!(v["curvature_jumps"].as_array().unwrap().len(), 3);
+    assert!(f(&v["max_curvature_jump"]) <= 1e-9);
+    // Given end tangents; CSV and SVG.
+    let run = lac(&[
+        "spline",
+        "--through",
+        through,
+        "--alpha",
+        "0.5",
+        "--start-angle",
+        "0.1",
+        "--end-angle",
+        "2.0",
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert!(run.stdout.starts_with("s,x,y,theta,kappa"));
+    let run = lac(&[
+        "spline",
+        "--through",
+        "0,0 3,-0.5 4.5,2 2,4 -0.5,2.5",
+        "--closed",
+        "--alpha",
+        "1",
+        "--format",
+        "svg",
+        "--comb",
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert!(run.stdout.contains("<svg") && run.stdout.contains("joint s = "));
+}
+
+#[test]
+fn a_span_that_must_inflect_is_named() {
+    let run = lac(&[
+        "spline",
+        "--through",
+        "0,0 2,0.5 4,0 6,-0.5 8,0",
+        "--alpha",
+        "0.5",
+    ]);
+    assert_failure(&run, 3, "no_g2_path");
+    assert!(
+        run.stderr.contains("would have to inflect"),
+        "{}",
+        run.stderr
+    );
+    let run = lac(&["spline", "--through", "0,0 1,1", "--alpha", "0.5"]);
+    assert_failure(&run, 2, "invalid_input");
+}

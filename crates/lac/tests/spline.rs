@@ -1,0 +1,175 @@
+//! G2 splines through points: every joint continuous in position, tangent and curvature,
+//! checked by evaluating the segments through the `Curve` trait on both sides of each point
+//! (not by the solver's report); spans that must inflect refused and named.
+
+use kurbo::Point;
+use lac::{Curve, Error, G2Failure, Spline};
+
+/// The largest (gap, tangent jump, relative curvature jump) over the joints, and whether
+/// every span ends at its points.
+fn continuity(s: &Spline) -> (f64, f64, f64) {
+    let pieces = s.pieces();
+    let n = pieces.len();
+    let pairs = if s.is_closed() { n } else { n - 1 };
+    let (mut gap, mut tan, mut curv) = (0.0f64, 0.0f64, 0.0f64);
+    let pts = s.points();
+    for (i, p) in pieces.iter().enumerate() {
+        gap = gap.max((p.start_point() - pts[i]).hypot());
+        gap = gap.max((p.end_point() - pts[(i + 1) % pts.len()]).hypot());
+    }
+    for i in 0..pairs {
+        let (a, b) = (&pieces[i], &pieces[(i + 1) % n]);
+        let la = a.arc_length();
+        gap = gap.max((a.point_at_s(la).unwrap() - b.point_at_s(0.0).unwrap()).hypot());
+        let d = a.theta_at_s(la).unwrap() - b.theta_at_s(0.0).unwrap();
+        tan = tan.max((d - std::f64::consts::TAU * (d / std::f64::consts::TAU).round()).abs());
+        let (ka, kb) = (
+            a.curvature_at_s(la).unwrap(),
+            b.curvature_at_s(0.0).unwrap(),
+        );
+        curv = curv.max((ka - kb).abs() / ka.abs().max(kb.abs()));
+    }
+    (gap, tan, curv)
+}
+
+/// Points on a convex curve: `count` points of the ellipse-like arc r = 1 + 0.3 cos(2t).
+fn arc(count: usize, span: f64) -> Vec<Point> {
+    (0..count)
+        .map(|i| {
+            let t = span * i as f64 / count as f64;
+            let r = 2.0 + 0.3 * (2.0 * t).cos();
+            Point::new(r * t.cos(), 0.8 * r * t.sin())
+        })
+        .collect()
+}
+
+#[test]
+fn open_and_closed_splines_are_g2_for_every_alpha() {
+    for alpha in [-1.0, -0.5, 0.0, 0.5, 1.0, 2.0] {
+        let open = Spline::g2(&arc(7, 4.0), alpha, false, None)
+            .unwrap_or_else(|e| panic!("open α {alpha}: {e}"));
+        let (gap, tan, curv) = continuity(&open);
+        assert!(
+            gap < 1e-12 && tan < 1e-12 && curv <= 1e-9,
+            "α {alpha}: {gap} {tan} {curv}"
+        );
+        let closed = Spline::g2(&arc(8, std::f64::consts::TAU), alpha, true, None)
+            .unwrap_or_else(|e| panic!("closed α {alpha}: {e}"));
+        assert_eq!(closed.pieces().len(), 8);
+        let (gap, tan, curv) = continuity(&closed);
+        assert!(
+            gap < 1e-12 && tan < 1e-12 && curv <= 1e-9,
+            "α {alpha}: {gap} {tan} {curv}"
+        );
+        assert!((closed.turning() - std::f64::consts::TAU).abs() < 1e-9);
+    }
+    // Given end tangents are kept.
+    let s = Spline::g2(&arc(5, 2.0), 0.5, false, Some([1.55, 3.1])).unwrap();
+    assert_eq!(s.angles()[0], 1.55);
+    assert!((s.pieces()[0].theta_at_s(0.0).unwrap() - 1.55).abs() < 1e-12);
+}
+
+#[test]
+fn a_span_that_must_inflect_is_named() {
+    let points = [
+        Point::new(0.0, 0.0),
+        Point::new(2.0, 0.5),
+        Point::new(4.0, 0.0),
+        Point::new(6.0, -0.5),
+        Point::new(8.0, 0.0),
+    ];
+    match Spline::g2(&points, 0.5, false, None) {
+        Err(Error::NoG2Path {
+            reason: G2Failure::SpanInflects,
+            leg,
+        }) => assert!(leg <= 3),
+        other => panic!("{other:?}"),
+    }
+    assert!(Spline::g2(&points[..2], 0.5, false, None).is_err());
+    assert!(Spline::g2(&[points[0], points[0], points[1]], 0.5, false, None).is_err());
+    assert!(Spline::g2(&points, f64::NAN, false, None).is_err());
+}
+
+/// The share of seeded random convex point sets with a G2 spline (printed with
+/// `--nocapture`); every solved one verified.
+#[test]
+fn share_of_random_convex_point_sets_with_a_g2_spline() {
+    let mut state = 0x5A1E_u64;
+    let mut next = move || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for (closed, count) in [(false, 7), (true, 7)] {
+        for alpha in [-1.0, -0.5, 0.0, 0.5, 1.0, 2.0] {
+            let (mut solved, mut worst, total) = (0, 0.0f64, 200);
+            let mut reasons = std::collections::BTreeMap::new();
+            for _ in 0..total {
+                // Points turning one way: directions increasing by 15°–75° (scaled to a
+                // full turn when closed), chords 0.5–1.5.
+                let mut turns: Vec<f64> = (0..count)
+                    .map(|_| (15.0 + 60.0 * next()).to_radians())
+                    .collect();
+                if closed {
+                    let sum: f64 = turns.iter().sum();
+                    turns
+                        .iter_mut()
+                        .for_each(|t| *t *= std::f64::consts::TAU / sum);
+                }
+                let mut p = vec![Point::ZERO];
+                let mut dir = 0.0f64;
+                for t in turns.iter().take(count - 1) {
+                    let last = *p.last().unwrap();
+                    p.push(last + kurbo::Vec2::from_angle(dir) * (0.5 + next()));
+                    dir += t;
+                }
+                match Spline::g2(&p, alpha, closed, None) {
+                    Ok(s) => {
+                        solved += 1;
+                        let (gap, tan, curv) = continuity(&s);
+                        assert!(
+                            gap < 1e-11 && tan < 1e-11 && curv <= 1e-9,
+                            "{gap} {tan} {curv}"
+                        );
+                        worst = worst.max(curv);
+                    }
+                    Err(e) => {
+                        let name = format!("{e:?}");
+                        let name: String = name.split([' ', '{', '(']).take(4).collect();
+                        *reasons.entry(name).or_insert(0) += 1;
+                    }
+                }
+            }
+            println!(
+                "spline {} α = {alpha}: G2 solved {solved}/{total}, largest curvature jump \
+                 {worst:.1e}; failures {reasons:?}",
+                if closed { "closed" } else { "open" }
+            );
+            assert!(worst <= 1e-9);
+        }
+    }
+}
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(200))]
+
+        /// Arbitrary points: an error or a verified spline, never a panic.
+        #[test]
+        fn arbitrary_points_never_panic(
+            p in prop::collection::vec((-3f64..3.0, -3f64..3.0), 0..8),
+            closed in any::<bool>(),
+            alpha in -3f64..3.0,
+        ) {
+            let p: Vec<Point> = p.into_iter().map(|(x, y)| Point::new(x, y)).collect();
+            if let Ok(s) = Spline::g2(&p, alpha, closed, None) {
+                let (gap, tan, curv) = continuity(&s);
+                prop_assert!(gap < 1e-10 && tan < 1e-10 && curv <= 1e-9, "{} {} {}", gap, tan, curv);
+            }
+        }
+    }
+}

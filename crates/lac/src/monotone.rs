@@ -116,13 +116,20 @@ impl RationalCubic {
         }
         let (q, q_mag) = scaled_homogeneous(b, self.weights())?;
         let (value, magnitude) = (Numerator::new(&q), Numerator::new(&q_mag));
+        let report = decide(&Poly::bernstein(&value.n, &magnitude.n), &q);
         if let Some(t) = speed_may_vanish(&Poly::bernstein(&value.speed2, &magnitude.speed2)) {
-            return Ok(MonotonicityReport {
-                verdict: Monotonicity::NotMonotone { t },
-                proven: false,
-            });
+            // Where the speed may vanish the curvature may be undefined, so monotonicity
+            // cannot be proven; a sign change still can: the numerator vanishes with the
+            // speed, so two parameters where it has certified opposite signs are two
+            // regular points where dκ/ds has those signs.
+            if !(report.proven && matches!(report.verdict, Monotonicity::NotMonotone { .. })) {
+                return Ok(MonotonicityReport {
+                    verdict: Monotonicity::NotMonotone { t },
+                    proven: false,
+                });
+            }
         }
-        Ok(decide(&Poly::bernstein(&value.n, &magnitude.n), &q))
+        Ok(report)
     }
 }
 

@@ -146,3 +146,20 @@ fn invalid_curves_are_errors_not_panics() {
         .curvature_monotonicity()
         .is_err());
 }
+
+/// Found by the property test above: a near-cusp (the speed may vanish near t = 0.59) whose
+/// dκ/ds is clearly positive before it and negative after: not monotone, and provably so.
+#[test]
+fn a_clear_sign_change_next_to_a_near_cusp_is_proven() {
+    let p = [
+        Point::new(0.7469810667823236, 0.8382768163037007),
+        Point::new(-0.4534815946006516, -0.14561106351371728),
+        Point::new(-0.2899710284880253, -0.11498395571284122),
+        Point::new(0.052355777441696866, 0.3076966437793835),
+    ];
+    let c = RationalCubic::new(p, [1.0; 4]).unwrap();
+    check(&c).unwrap();
+    let report = c.curvature_monotonicity().unwrap();
+    assert!(report.proven, "{report:?}");
+    assert!(matches!(report.verdict, Monotonicity::NotMonotone { .. }));
+}

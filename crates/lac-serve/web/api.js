@@ -1,15 +1,16 @@
 // The server's API: one POST per question, answered with a report or {"error":{kind,message}}.
 // Failures never throw: a request that cannot reach the server becomes an error like any other.
 
-/** POST `body` as JSON to `path`: {ok: answer} or {error: {kind, message}, status}. */
-export async function post(path, body) {
-  let response;
+/** POST `body` as JSON to `path`: {response}, or {error, status: 0} when the server cannot
+ * be reached. */
+async function send(path, body) {
   try {
-    response = await fetch(path, {
+    const response = await fetch(path, {
       method: 'POST',
       headers: { 'Content-Type': 'application/json' },
       body: JSON.stringify(body),
     });
+    return { response };
   } catch (e) {
     return {
       error: {
@@ -19,6 +20,12 @@ export async function post(path, body) {
       status: 0,
     };
   }
+}
+
+/** POST `body` as JSON to `path`: {ok: answer} or {error: {kind, message}, status}. */
+export async function post(path, body) {
+  const { response, error, status } = await send(path, body);
+  if (!response) return { error, status };
   let json = null;
   try {
     json = await response.json();
@@ -26,31 +33,17 @@ export async function post(path, body) {
     // Not JSON: reported below.
   }
   if (response.ok && json) return { ok: json };
-  const error = json && json.error
+  const failure = json && json.error
     ? json.error
     : { kind: 'internal', message: `the server answered ${response.status} without a report` };
-  return { error, status: response.status };
+  return { error: failure, status: response.status };
 }
 
 /** POST `body` as JSON to `path`, whose answer is a file: {ok: {text, type, name, report}}
  * (`report` from the X-Lac-Export header, or null) or {error: {kind, message}, status}. */
 export async function postFile(path, body) {
-  let response;
-  try {
-    response = await fetch(path, {
-      method: 'POST',
-      headers: { 'Content-Type': 'application/json' },
-      body: JSON.stringify(body),
-    });
-  } catch (e) {
-    return {
-      error: {
-        kind: 'network',
-        message: `the server did not answer (${e.message}); is lac serve still running?`,
-      },
-      status: 0,
-    };
-  }
+  const { response, error: unreachable, status } = await send(path, body);
+  if (!response) return { error: unreachable, status };
   const text = await response.text();
   if (!response.ok) {
     let error = null;

@@ -2,7 +2,7 @@
 
 use ::kurbo::{Point, Vec2};
 
-use crate::chord_angle::solve;
+use crate::chord_angle::{solve, Piece};
 use crate::error::{finite, Error, Result};
 use crate::lcg::LcgLine;
 use crate::numeric::{clamp, Complex};
@@ -104,10 +104,10 @@ pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
     })
 }
 
-/// The signed end curvatures of the segment on `points` with slope `alpha`, without
-/// building or checking it: for solvers that iterate on them (a path's G2 joints), whose
-/// final answer is built by [`Segment::from_control_points`] and checked there.
-pub(crate) fn end_curvatures_of(points: [Point; 3], alpha: f64) -> Result<(f64, f64)> {
+/// The control triangle of `points` and the standard-form piece that fits it, solved from
+/// its shorter leg (SPEC §3 step 2: there the chord angle is at least θd/2); `reversed` when
+/// that is the last leg, so the piece runs from P2 to P0.
+fn solve_triangle(points: [Point; 3], alpha: f64) -> Result<(Triangle, Piece, bool)> {
     let tri = control_triangle(points)?;
     let (u, v) = (points[1] - points[0], points[2] - points[1]);
     let reversed = u.x.hypot(u.y) > v.x.hypot(v.y);
@@ -117,6 +117,14 @@ pub(crate) fn end_curvatures_of(points: [Point; 3], alpha: f64) -> Result<(f64, 
         tri.theta_e
     };
     let piece = solve(alpha, tri.turning, theta_e.max(0.5 * tri.turning))?;
+    Ok((tri, piece, reversed))
+}
+
+/// The signed end curvatures of the segment on `points` with slope `alpha`, without
+/// building or checking it: for solvers that iterate on them (a path's G2 joints), whose
+/// final answer is built by [`Segment::from_control_points`] and checked there.
+pub(crate) fn end_curvatures_of(points: [Point; 3], alpha: f64) -> Result<(f64, f64)> {
+    let (tri, piece, reversed) = solve_triangle(points, alpha)?;
     let (first, last) = if reversed {
         (piece.end, piece.start)
     } else {
@@ -213,16 +221,7 @@ impl Segment {
     /// points, or [`Error::NotDrawable`] when no segment of this α fits the triangle.
     pub fn from_control_points(points: [Point; 3], alpha: f64) -> Result<Segment> {
         check_alpha("alpha", alpha)?;
-        let tri = control_triangle(points)?;
-        // The shorter leg goes first (SPEC §3 step 2): there the angle is at least θd/2.
-        let (u, v) = (points[1] - points[0], points[2] - points[1]);
-        let reversed = u.x.hypot(u.y) > v.x.hypot(v.y);
-        let theta_e = if reversed {
-            tri.turning - tri.theta_e
-        } else {
-            tri.theta_e
-        };
-        let piece = solve(alpha, tri.turning, theta_e.max(0.5 * tri.turning))?;
+        let (tri, piece, reversed) = solve_triangle(points, alpha)?;
         let (first, last, chord) = if reversed {
             (piece.end, piece.start, -piece.chord)
         } else {

@@ -9,6 +9,8 @@ and at every joint the reference's curvatures on the two sides must agree to 1e-
 import json
 import subprocess
 
+import pytest
+
 from mpmath import atan2, cos, mp, mpc, mpf, quad, sin
 
 from lac_cli import lac_bin, require
@@ -21,6 +23,14 @@ CASES = [
     ("0,0 1,0 2,0.3 2.8,1 3.2,2 3.1,3", False, [0.0, 0.5]),
 ]
 JUMP = mpf("1e-9")
+
+
+@pytest.fixture(autouse=True)
+def _keep_precision():
+    """These tests work at 30 digits; the modules run after them expect their own 40."""
+    dps = mp.dps
+    yield
+    mp.dps = dps
 
 
 def run_path(polygon, closed, alpha):

@@ -266,4 +266,18 @@ fn path_refusals() {
     assert_ne!(run.code, 0);
     assert!(run.stderr.contains("no_g2_path"), "{}", run.stderr);
     assert!(run.stdout.is_empty());
+    // A G2 path through an inflection (the README's S) is refused for now, saying why.
+    let run = lac(&[
+        "export",
+        "--polygon",
+        "0,0 1.5,0 3,0.8 6,3.2 7.5,4 9,4",
+        "--alpha",
+        "-0.5",
+        "--g2",
+        "--format",
+        "step",
+    ]);
+    assert_failure(&run, 2, "invalid_input");
+    assert!(run.stderr.contains("inflection"), "{}", run.stderr);
+    assert!(run.stdout.is_empty());
 }

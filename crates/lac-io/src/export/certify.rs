@@ -14,7 +14,8 @@
 //! result never understates the sampled deviation.
 
 use super::nurbs::{Jet, Nurbs};
-use lac::{Curve, Result, SpaceSegment};
+use kurbo::Point;
+use lac::{Curve, Path, Result, Segment, SpaceSegment};
 
 /// Newton iterations per projection.
 const ITERATIONS: usize = 8;
@@ -67,6 +68,107 @@ fn ascending(s: &[f64], len: f64) -> (Vec<usize>, Vec<f64>) {
     order.sort_by(|&a, &b| s[a].total_cmp(&s[b]));
     let sorted = order.iter().map(|&i| s[i].clamp(0.0, len)).collect();
     (order, sorted)
+}
+
+/// One piece of a path in the order of travel: a segment, or the straight piece on an
+/// inflection leg from one point to another.
+#[derive(Clone, Copy, Debug)]
+pub enum PathItem<'a> {
+    /// A log-aesthetic segment.
+    Segment(&'a Segment),
+    /// A straight piece.
+    Line(Point, Point),
+}
+
+impl PathItem<'_> {
+    /// Its arc length.
+    pub fn length(&self) -> f64 {
+        match self {
+            PathItem::Segment(seg) => seg.arc_length(),
+            PathItem::Line(a, b) => (b.x - a.x).hypot(b.y - a.y),
+        }
+    }
+}
+
+/// The pieces of `path` in the order of travel: each straight piece follows the segment
+/// whose end it starts from (the wrap-around one, of a closed path, comes last).
+pub fn path_items(path: &Path) -> Vec<PathItem<'_>> {
+    let mut lines: Vec<(Point, Point)> = path
+        .straight_pieces()
+        .iter()
+        .map(|l| (l.from, l.to))
+        .collect();
+    let mut out = Vec::new();
+    for seg in path.segments() {
+        out.push(PathItem::Segment(seg));
+        let end = seg.end_point();
+        let nearest = lines.iter().enumerate().min_by(|(_, a), (_, b)| {
+            let (da, db) = ((a.0 - end).hypot(), (b.0 - end).hypot());
+            da.total_cmp(&db)
+        });
+        if let Some((i, &(from, to))) = nearest {
+            if (from.x - end.x).hypot(from.y - end.y) <= 1e-9 * path.arc_length() {
+                out.push(PathItem::Line(from, to));
+                lines.remove(i);
+            }
+        }
+    }
+    out
+}
+
+/// A path: its segments and straight pieces in the order of travel.
+pub struct PathExact<'a>(pub Vec<PathItem<'a>>);
+
+impl Exact for PathExact<'_> {
+    fn length(&self) -> f64 {
+        self.0.iter().map(PathItem::length).sum()
+    }
+
+    fn jets(&self, s: &[f64]) -> Result<Vec<Jet>> {
+        let (order, sorted) = ascending(s, self.length());
+        let mut out = vec![ZERO_JET; s.len()];
+        let (mut start, mut next) = (0.0, 0);
+        for (k, item) in self.0.iter().enumerate() {
+            let end = start + item.length();
+            let last = k + 1 == self.0.len();
+            // The stations of this piece: up to its end (all the rest for the last piece).
+            let mut here = Vec::new();
+            while next < sorted.len() && (last || sorted[next] <= end) {
+                here.push(next);
+                next += 1;
+            }
+            let local: Vec<f64> = here
+                .iter()
+                .map(|&j| (sorted[j] - start).clamp(0.0, item.length()))
+                .collect();
+            match item {
+                PathItem::Segment(seg) if !local.is_empty() => {
+                    for (q, &j) in seg.samples_at_arc_lengths(&local)?.iter().zip(&here) {
+                        let (sin, cos) = q.theta.sin_cos();
+                        out[order[j]] = Jet {
+                            point: [q.point.x, q.point.y, 0.0],
+                            d1: [cos, sin, 0.0],
+                            d2: [-q.kappa * sin, q.kappa * cos, 0.0],
+                        };
+                    }
+                }
+                PathItem::Line(a, b) => {
+                    let len = item.length();
+                    let (ux, uy) = ((b.x - a.x) / len, (b.y - a.y) / len);
+                    for (&t, &j) in local.iter().zip(&here) {
+                        out[order[j]] = Jet {
+                            point: [a.x + t * ux, a.y + t * uy, 0.0],
+                            d1: [ux, uy, 0.0],
+                            d2: [0.0; 3],
+                        };
+                    }
+                }
+                PathItem::Segment(_) => {}
+            }
+            start = end;
+        }
+        Ok(out)
+    }
 }
 
 /// A space segment.

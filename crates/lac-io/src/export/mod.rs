@@ -30,12 +30,11 @@ use std::time::{SystemTime, UNIX_EPOCH};
 use serde::{Deserialize, Serialize};
 
 use lac::{
-    Chain, Continuity, Curve, Error, Path, QuasiCurve, SpaceSegment, Tolerance,
-    MIN_RELATIVE_TOLERANCE,
+    Continuity, Curve, Error, Path, QuasiCurve, SpaceSegment, Tolerance, MIN_RELATIVE_TOLERANCE,
 };
 
 use crate::json::{ErrorBody, Solved};
-use certify::{deviation, Exact, PlaneExact, SpaceExact};
+use certify::{deviation, path_items, Exact, PathExact, PathItem, PlaneExact, SpaceExact};
 use json::{ExportDocument, NurbsRow};
 pub use nurbs::Nurbs;
 use nurbs::Span;
@@ -120,18 +119,6 @@ pub enum ExportCurve<'a> {
     Path(&'a Path),
     /// A space segment.
     Space(&'a SpaceSegment),
-}
-
-impl ExportCurve<'_> {
-    /// The planar curve, if it is one (a path's segments as one chain: paths with straight
-    /// pieces are refused before this is asked).
-    fn plane(&self) -> Option<Box<dyn Curve + '_>> {
-        match self {
-            ExportCurve::Plane(s) => Some(Box::new(Chain(s.curve().pieces()))),
-            ExportCurve::Path(p) => Some(Box::new(Chain(p.segments()))),
-            ExportCurve::Space(_) => None,
-        }
-    }
 }
 
 /// How an export went: `lac export`'s report.
@@ -221,10 +208,10 @@ pub fn export(
     let mut reached = f64::INFINITY;
     for _ in 0..ATTEMPTS {
         let fitted = fit(curve, target, plain)?;
-        let measured = match (curve, curve.plane()) {
-            (ExportCurve::Space(s), _) => measure(&SpaceExact(s), &fitted.nurbs)?,
-            (_, Some(c)) => measure(&PlaneExact(&*c), &fitted.nurbs)?,
-            (_, None) => unreachable!("every curve but a space segment is planar"),
+        let measured = match curve {
+            ExportCurve::Space(s) => measure(&SpaceExact(s), &fitted.nurbs)?,
+            ExportCurve::Path(p) => measure(&PathExact(path_items(p)), &fitted.nurbs)?,
+            ExportCurve::Plane(solved) => measure(&PlaneExact(solved.curve()), &fitted.nurbs)?,
         };
         if measured <= tol {
             let curves = if single_spans {
@@ -333,19 +320,24 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
             let c = solved.curve();
             planar(&[(quasi_of(c)?, c.arc_length())])
         }
+        ExportCurve::Path(path) if !path.straight_pieces().is_empty() => {
+            Err(ErrorBody::invalid_input(
+                "a path through an inflection is not exported yet: the segments next to it end \
+                 at a curvature 1e-12 of their other end's, which no chain of cubics with \
+                 monotone curvature follows within a tolerance; export the paths on either \
+                 side of the inflection",
+            ))
+        }
         ExportCurve::Path(path) => {
-            if !path.straight_pieces().is_empty() {
-                return Err(ErrorBody::invalid_input(
-                    "a path through an inflection (with straight pieces) is not exported yet; \
-                     export the paths on either side of it",
-                ));
-            }
-            // Segment by segment: each chain keeps its segment's end points, tangents and
-            // curvatures, so the path's joints stay knots with the path's own continuity.
-            let chains = path
-                .segments()
+            // Piece by piece: each segment's chain keeps its end points, tangents and
+            // curvatures, so the path's joints stay knots with the path's own continuity;
+            // a straight piece (an inflection leg) is one cubic span with collinear points.
+            let chains = path_items(path)
                 .iter()
-                .map(|seg| Ok((quasi_of(seg)?, seg.arc_length())))
+                .map(|item| match item {
+                    PathItem::Segment(seg) => Ok((quasi_of(*seg)?, seg.arc_length())),
+                    PathItem::Line(a, b) => Ok((straight(*a, *b)?, item.length())),
+                })
                 .collect::<Result<Vec<_>, ErrorBody>>()?;
             planar(&chains)
         }
@@ -369,6 +361,26 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
             })
         }
     }
+}
+
+/// A straight piece from `a` to `b` as a one-piece chain: the cubic with its inner control
+/// points at the thirds (weights 1), of constant (zero) curvature.
+fn straight(a: kurbo::Point, b: kurbo::Point) -> Result<QuasiCurve, ErrorBody> {
+    let at = |t: f64| a + t * (b - a);
+    let curve = lac::RationalCubic::new([a, at(1.0 / 3.0), at(2.0 / 3.0), b], [1.0; 4])?;
+    Ok(QuasiCurve {
+        pieces: vec![lac::QuasiPiece {
+            curve,
+            monotonicity: lac::MonotonicityReport {
+                verdict: lac::Monotonicity::Constant,
+                proven: true,
+            },
+            turning: (0.0, 0.0),
+            max_deviation: 0.0,
+        }],
+        rms: 0.0,
+        max: 0.0,
+    })
 }
 
 /// The document of `curves` in `format`.

@@ -9,6 +9,9 @@ use crate::convert::{array1, blocks, points2, real_array, vector};
 use crate::curve::Samples;
 use crate::errors::{invalid, OrRaise};
 
+/// A straight piece as Python sees it: (leg, start point, end point).
+type StraightRow = (usize, (f64, f64), (f64, f64));
+
 /// A log-aesthetic path from a control polygon: one segment per interior vertex (per vertex
 /// when `closed`), joined on the legs; `g2=True` solves the joints for continuous curvature
 /// (where the turning changes direction, through a straight piece at zero curvature),
@@ -17,9 +20,6 @@ use crate::errors::{invalid, OrRaise};
 ///
 /// Raises `LacError` when no G2 path is found (kind `no_g2_path`, naming the leg) or a
 /// segment cannot be drawn.
-/// A straight piece as Python sees it: (leg, start point, end point).
-type StraightRow = (usize, (f64, f64), (f64, f64));
-
 #[pyclass(module = "lac", name = "Path", frozen)]
 pub(crate) struct PyPath(lac::Path);
 

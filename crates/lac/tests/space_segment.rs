@@ -6,6 +6,11 @@
 use lac::{Error, NotDrawable, SpaceForm, SpaceFormParams, SpaceSegment, SpaceShape};
 use lac::{TorsionType, Vec3};
 
+// The independent Runge–Kutta integration shared with the constructed-input test.
+#[path = "common/space_inputs.rs"]
+mod space_inputs;
+use space_inputs::independent_end;
+
 struct Rng(u64);
 impl Rng {
     fn next(&mut self) -> f64 {
@@ -39,82 +44,6 @@ fn twisted() -> [Vec3; 4] {
         [2.0, 1.0, 0.5],
         [2.0, 2.0, 1.5],
     ])
-}
-
-/// κ(s) and τ(s) of the standard form straight from SPEC §6 (ρ and μ, then reciprocals).
-fn kappa_tau(f: &SpaceForm, s: f64) -> (f64, f64) {
-    let (alpha, beta, lambda, omega, nu) = (f.alpha(), f.beta(), f.lambda(), f.omega(), f.nu());
-    let rho = if alpha == 0.0 {
-        (lambda * s).exp()
-    } else {
-        (lambda * alpha * s + 1.0).powf(1.0 / alpha)
-    };
-    let sg = match f.torsion_type() {
-        TorsionType::One => 1.0,
-        TorsionType::Two => -1.0,
-    };
-    let mu = if beta == 0.0 {
-        nu * (sg * omega * s).exp()
-    } else {
-        (sg * omega * beta * s + nu.powf(beta)).powf(1.0 / beta)
-    };
-    (1.0 / rho, 1.0 / mu)
-}
-
-/// Classical RK4 on (x, t, n, b) from 0 to `s_end`, with step doubling: each step is taken
-/// whole and as two halves, accepted when they agree to 1e-14 and Richardson-combined, and
-/// the step adapts (κ and τ may vary on very different scales along one segment).
-fn independent_end(f: &SpaceForm, s_end: f64) -> (Vec3, Vec3) {
-    let deriv = |s: f64, y: &[f64; 12]| -> [f64; 12] {
-        let (k, t) = kappa_tau(f, s);
-        let mut d = [0.0; 12];
-        for i in 0..3 {
-            d[i] = y[3 + i];
-            d[3 + i] = k * y[6 + i];
-            d[6 + i] = -k * y[3 + i] + t * y[9 + i];
-            d[9 + i] = -t * y[6 + i];
-        }
-        d
-    };
-    let add = |y: &[f64; 12], d: &[f64; 12], c: f64| {
-        let mut z = *y;
-        for i in 0..12 {
-            z[i] += c * d[i];
-        }
-        z
-    };
-    let rk4 = |s: f64, y: &[f64; 12], h: f64| {
-        let k1 = deriv(s, y);
-        let k2 = deriv(s + 0.5 * h, &add(y, &k1, 0.5 * h));
-        let k3 = deriv(s + 0.5 * h, &add(y, &k2, 0.5 * h));
-        let k4 = deriv(s + h, &add(y, &k3, h));
-        let mut z = *y;
-        for j in 0..12 {
-            z[j] += h / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
-        }
-        z
-    };
-    let mut y = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
-    let (mut s, mut h) = (0.0, 1e-3 * s_end);
-    while s < s_end {
-        h = h.min(s_end - s);
-        let whole = rk4(s, &y, h);
-        let half = rk4(s, &y, 0.5 * h);
-        let halves = rk4(s + 0.5 * h, &half, 0.5 * h);
-        let err = (0..12).fold(0.0f64, |m, j| m.max((whole[j] - halves[j]).abs()));
-        if err > 1e-14 && h > 1e-14 * s_end {
-            h *= 0.5;
-            continue;
-        }
-        for j in 0..12 {
-            y[j] = halves[j] + (halves[j] - whole[j]) / 15.0;
-        }
-        s += h;
-        if err < 1e-16 {
-            h *= 2.0;
-        }
-    }
-    (Vec3::new(y[0], y[1], y[2]), Vec3::new(y[3], y[4], y[5]))
 }
 
 /// Check the ends and end tangents of `seg` against `points`, by the independent

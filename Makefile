@@ -66,7 +66,7 @@ docs:
 	LAC_WRITE_FIGURES=1 $(CARGO_TEST) --test readme_figures -- --nocapture
 
 # The seeded random and adversarial driver, a million inputs per entry point (make test runs
-# ten thousand); FUZZ_SEED picks another stream. Exit code 1 on any panic, invariant
+# a hundred thousand); FUZZ_SEED picks another stream. Exit code 1 on any panic, invariant
 # violation or call over a second; `lac-fuzz --replay FILE` reruns printed inputs.
 FUZZ_COUNT ?= 1000000
 FUZZ_SEED ?= 1

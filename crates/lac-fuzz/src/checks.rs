@@ -8,6 +8,10 @@ use lac::{
     Tolerance, TorsionType, Vec3,
 };
 
+use lac_io::export::json::{ExportDocument, NurbsRow};
+use lac_io::export::{self, ExportCurve, Exported, Format, Meta};
+use lac_io::json::Solved;
+
 use crate::Input;
 
 /// The bounds the invariants use, as documented in the README's robustness section.
@@ -31,12 +35,12 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
     match input {
         Input::Segment {
             points,
-            alpha,
             samples,
             accuracy,
+            ..
         } => {
             let pts = points.map(pt);
-            let Ok(seg) = Segment::from_control_points(pts, *alpha) else {
+            let Some(Built::Plane(Solved::Segment(seg))) = build(input) else {
                 return Ok(false);
             };
             check_curve(
@@ -56,13 +60,10 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
             Ok(true)
         }
         Input::Compound3 {
-            points,
-            alpha,
-            ratio,
-            samples,
+            points, samples, ..
         } => {
             let pts = points.map(pt);
-            let Ok(c) = CompoundCurve::from_three_points(pts, alpha[0], alpha[1], *ratio) else {
+            let Some(Built::Plane(Solved::Compound(c))) = build(input) else {
                 return Ok(false);
             };
             check_curve(&c, &[pts[0], pts[1]], &[pts[1], pts[2]], *samples, 1e-6)?;
@@ -70,12 +71,10 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
             Ok(true)
         }
         Input::Compound4 {
-            points,
-            alpha,
-            samples,
+            points, samples, ..
         } => {
             let pts = points.map(pt);
-            let Ok(c) = CompoundCurve::from_four_points(pts, alpha[0], alpha[1]) else {
+            let Some(Built::Plane(Solved::Compound(c))) = build(input) else {
                 return Ok(false);
             };
             check_curve(&c, &[pts[0], pts[1]], &[pts[2], pts[3]], *samples, 1e-6)?;
@@ -157,6 +156,114 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
             check_quasi(&seg, &pts, &quasi, *tolerance)?;
             Ok(true)
         }
+        Input::Path { closed, g2, .. } => {
+            let Some(Built::Path(path)) = build(input) else {
+                return Ok(false);
+            };
+            check_path(&path, *closed, *g2)?;
+            Ok(true)
+        }
+        Input::Space { points, .. } => {
+            let pts = points.map(Vec3::from_array);
+            let Some(Built::Space(seg)) = build(input) else {
+                return Ok(false);
+            };
+            check_space(&seg, &pts)?;
+            check_space_cubics(&seg)?;
+            Ok(true)
+        }
+        Input::Export {
+            curve,
+            format,
+            tolerance,
+            relative,
+            single_spans,
+        } => {
+            let Some(built) = build(curve) else {
+                return Ok(false);
+            };
+            let tolerance = if *relative {
+                Tolerance::Relative(*tolerance)
+            } else {
+                Tolerance::Absolute(*tolerance)
+            };
+            let Ok(exported) = export::export(
+                &built.as_export(),
+                *format,
+                tolerance,
+                *single_spans,
+                &Meta {
+                    name: "fuzz".to_string(),
+                    timestamp: "2026-11-23T00:00:00".to_string(),
+                    version: "0".to_string(),
+                },
+            ) else {
+                return Ok(false);
+            };
+            check_export(&built, tolerance, &exported)?;
+            Ok(true)
+        }
+    }
+}
+
+/// A solved curve of a solver's input.
+enum Built {
+    Plane(Solved),
+    Path(Path),
+    Space(SpaceSegment),
+}
+
+impl Built {
+    fn as_export(&self) -> ExportCurve<'_> {
+        match self {
+            Built::Plane(s) => ExportCurve::Plane(s),
+            Built::Path(p) => ExportCurve::Path(p),
+            Built::Space(s) => ExportCurve::Space(s),
+        }
+    }
+
+    /// The exact curve's ends and length.
+    fn ends(&self) -> Result<([f64; 3], [f64; 3], f64), String> {
+        let flat = |p: Point| [p.x, p.y, 0.0];
+        match self {
+            Built::Plane(s) => {
+                let c = s.curve();
+                let len = c.arc_length();
+                let at = |s| c.point_at_s(s).map(flat).map_err(|e| e.to_string());
+                Ok((at(0.0)?, at(len)?, len))
+            }
+            Built::Path(p) => Ok((flat(p.start_point()), flat(p.end_point()), p.arc_length())),
+            Built::Space(s) => {
+                let len = s.arc_length();
+                let a = s.frame_at(0.0).map_err(|e| e.to_string())?.point;
+                let b = s.frame_at(len).map_err(|e| e.to_string())?.point;
+                Ok((a.to_array(), b.to_array(), len))
+            }
+        }
+    }
+}
+
+/// The curve an input of a solver describes, or `None` when the solver refuses it.
+fn build(input: &Input) -> Option<Built> {
+    match input {
+        Input::Segment { points, alpha, .. } | Input::Quasi { points, alpha, .. } => {
+            Segment::from_control_points(points.map(pt), *alpha)
+                .ok()
+                .map(|s| Built::Plane(Solved::Segment(s)))
+        }
+        Input::Compound3 {
+            points,
+            alpha,
+            ratio,
+            ..
+        } => CompoundCurve::from_three_points(points.map(pt), alpha[0], alpha[1], *ratio)
+            .ok()
+            .map(|c| Built::Plane(Solved::Compound(c))),
+        Input::Compound4 { points, alpha, .. } => {
+            CompoundCurve::from_four_points(points.map(pt), alpha[0], alpha[1])
+                .ok()
+                .map(|c| Built::Plane(Solved::Compound(c)))
+        }
         Input::Path {
             points,
             alpha,
@@ -168,24 +275,19 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
                 ControlPolygon::closed(&pts)
             } else {
                 ControlPolygon::open(&pts)
-            };
-            let Ok(polygon) = polygon else {
-                return Ok(false);
-            };
+            }
+            .ok()?;
             let alphas = match alpha.as_slice() {
                 [one] => Alphas::One(*one),
                 many => Alphas::PerSegment(many.to_vec()),
             };
-            let path = if *g2 {
+            if *g2 {
                 Path::g2(&polygon, &alphas, None)
             } else {
                 Path::g1(&polygon, &alphas, None)
-            };
-            let Ok(path) = path else {
-                return Ok(false);
-            };
-            check_path(&path, *closed, *g2)?;
-            Ok(true)
+            }
+            .ok()
+            .map(Built::Path)
         }
         Input::Space {
             points,
@@ -194,24 +296,145 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
             omega,
             torsion,
         } => {
-            let Ok(torsion) = TorsionType::from_number(*torsion) else {
-                return Ok(false);
-            };
-            let pts = points.map(Vec3::from_array);
             let shape = SpaceShape {
                 alpha: *alpha,
                 beta: *beta,
                 omega: *omega,
-                torsion,
+                torsion: TorsionType::from_number(*torsion).ok()?,
             };
-            let Ok(seg) = SpaceSegment::from_control_points(pts, shape) else {
-                return Ok(false);
-            };
-            check_space(&seg, &pts)?;
-            check_space_cubics(&seg)?;
-            Ok(true)
+            SpaceSegment::from_control_points(points.map(Vec3::from_array), shape)
+                .ok()
+                .map(Built::Space)
+        }
+        Input::Monotone { .. } | Input::Analysis { .. } | Input::Export { .. } => None,
+    }
+}
+
+/// An export: a report of finite figures whose measured deviation is within the tolerance
+/// asked; a document without a non-finite number; for JSON, well-formed clamped B-splines
+/// (knots ascending, weights positive) that start and end at the exact curve's ends, the
+/// pieces of `--pieces` meeting end to start, evaluated here by de Boor's algorithm.
+fn check_export(built: &Built, tolerance: Tolerance, exported: &Exported) -> Result<(), String> {
+    let report = &exported.report;
+    let (start, end, len) = built.ends()?;
+    finite(
+        "export report",
+        &[
+            report.tolerance,
+            report.max_deviation,
+            report.fit_deviation,
+            report.arc_length,
+        ],
+    )?;
+    let asked = match tolerance {
+        Tolerance::Absolute(t) => t,
+        Tolerance::Relative(t) => t * len,
+    };
+    if (report.tolerance - asked).abs() > 1e-12 * asked {
+        return Err(format!(
+            "export tolerance {:e} reported for {asked:e} asked",
+            report.tolerance
+        ));
+    }
+    // Both finite (checked above).
+    if report.max_deviation > report.tolerance || report.pieces == 0 {
+        return Err(format!(
+            "export deviation {:e} over its tolerance {:e} ({} pieces)",
+            report.max_deviation, report.tolerance, report.pieces
+        ));
+    }
+    let doc = &exported.document;
+    if doc.is_empty() || doc.contains("NaN") || doc.contains("inf") {
+        return Err(format!("{:?} document empty or not finite", report.format));
+    }
+    if report.format != Format::Json {
+        return Ok(());
+    }
+    let parsed: ExportDocument =
+        serde_json::from_str(doc).map_err(|e| format!("export JSON does not parse: {e}"))?;
+    let magnitude = start.iter().chain(&end).fold(0.0f64, |m, x| m.max(x.abs()));
+    let near = report.tolerance + 64.0 * f64::EPSILON * magnitude;
+    let mut previous_end: Option<Vec<f64>> = None;
+    for row in &parsed.curves {
+        let n = row.control_points.len();
+        let well_formed = row.degree == 3
+            && n >= 4
+            && row.weights.len() == n
+            && row.knots.len() == n + 4
+            && row.knots.windows(2).all(|w| w[0] <= w[1])
+            && row.knots[3] < row.knots[n]
+            && row.weights.iter().all(|w| w.is_finite() && *w > 0.0)
+            && row
+                .control_points
+                .iter()
+                .all(|p| p.len() == row.dimension && p.iter().all(|x| x.is_finite()));
+        if !well_formed {
+            return Err("exported B-spline malformed".to_string());
+        }
+        let a = nurbs_point(row, row.knots[3]);
+        if let Some(b) = &previous_end {
+            if distance(&a, b) > near {
+                return Err(format!("exported pieces apart by {:e}", distance(&a, b)));
+            }
+        }
+        previous_end = Some(nurbs_point(row, row.knots[n]));
+    }
+    let first = parsed.curves.first().map(|r| nurbs_point(r, r.knots[3]));
+    let last = previous_end;
+    for (what, got, want) in [("start", first, start), ("end", last, end)] {
+        let got = got.ok_or("an export without curves")?;
+        if distance(&got, &want) > near {
+            return Err(format!(
+                "exported curve's {what} {:e} from the exact one's (tolerance {:e})",
+                distance(&got, &want),
+                report.tolerance
+            ));
         }
     }
+    Ok(())
+}
+
+fn distance(a: &[f64], b: &[f64]) -> f64 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y) * (x - y))
+        .sum::<f64>()
+        .sqrt()
+}
+
+/// The point at `u` of a clamped rational cubic B-spline, by de Boor's algorithm in
+/// homogeneous coordinates.
+fn nurbs_point(row: &NurbsRow, u: f64) -> Vec<f64> {
+    const P: usize = 3;
+    let (k, n, dim) = (&row.knots, row.control_points.len(), row.dimension);
+    let mut i = P;
+    while i + 1 < n && k[i + 1] <= u {
+        i += 1;
+    }
+    let mut d: Vec<Vec<f64>> = (0..=P)
+        .map(|j| {
+            let w = row.weights[i - P + j];
+            let mut h: Vec<f64> = row.control_points[i - P + j]
+                .iter()
+                .map(|x| x * w)
+                .collect();
+            h.push(w);
+            h
+        })
+        .collect();
+    for r in 1..=P {
+        for j in (r..=P).rev() {
+            let a = (u - k[i - P + j]) / (k[i + 1 + j - r] - k[i - P + j]);
+            let prev = d[j - 1].clone();
+            for (x, y) in d[j].iter_mut().zip(prev) {
+                *x = (1.0 - a) * y + a * *x;
+            }
+        }
+    }
+    let w = d[P][dim];
+    let mut p: Vec<f64> = d[P][..dim].iter().map(|x| x / w).collect();
+    p.resize(3, 0.0);
+    p
 }
 
 fn pt(p: [f64; 2]) -> Point {

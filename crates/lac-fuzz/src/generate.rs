@@ -223,12 +223,13 @@ pub(crate) fn segment(rng: &mut Rng) -> Input {
         points: triangle(rng),
         alpha: alpha(rng),
         samples: samples(rng),
-        // Adaptive sampling's cost grows as accuracy^(-1/4): the tightest accuracies (down
-        // to 1e-12, up to 50,000 samples) are a tenth of the draws, not most of the time.
+        // Adaptive sampling's cost grows as accuracy^(-1/2): the tight accuracies (1e-12 to
+        // 1e-7, up to the 50,000-sample limit for these sizes) are a tenth of the draws,
+        // not most of the time.
         accuracy: match rng.below(10) {
             0 => rng.number(),
-            1 => 10f64.powf(rng.uniform(-12.0, -9.0)),
-            _ => 10f64.powf(rng.uniform(-9.0, -1.0)),
+            1 => 10f64.powf(rng.uniform(-12.0, -7.0)),
+            _ => 10f64.powf(rng.uniform(-7.0, -1.0)),
         },
     }
 }
@@ -348,10 +349,13 @@ pub(crate) fn quasi(rng: &mut Rng) -> Input {
     Input::Quasi {
         points: triangle(rng),
         alpha: alpha(rng),
+        // As for sampling, the tight tolerances (the checks sample the segment to a tenth
+        // of them) are a tenth of the draws.
         tolerance: match rng.below(10) {
             0..=2 => None,
             3 => Some(rng.number()),
-            _ => Some(10f64.powf(rng.uniform(-11.0, -1.0))),
+            4 => Some(10f64.powf(rng.uniform(-11.0, -7.0))),
+            _ => Some(10f64.powf(rng.uniform(-7.0, -1.0))),
         },
         cubic: rng.chance(0.3),
     }
@@ -471,5 +475,36 @@ pub(crate) fn path(rng: &mut Rng) -> Input {
         alpha,
         closed,
         g2: rng.chance(0.6),
+    }
+}
+
+pub(crate) fn export(rng: &mut Rng) -> Input {
+    use lac_io::export::Format;
+    let curve = match rng.below(10) {
+        0..=2 => segment(rng),
+        3 => compound3(rng),
+        4 => compound4(rng),
+        5..=7 => path(rng),
+        _ => space(rng),
+    };
+    Input::Export {
+        curve: Box::new(curve),
+        format: rng.pick(&[
+            Format::Json,
+            Format::Json,
+            Format::Dxf,
+            Format::Step,
+            Format::Iges,
+            Format::Svg,
+        ]),
+        // Fits get dearer as the tolerance tightens: the tightest (to 1e-11, past what can
+        // be certified) are a tenth of the draws.
+        tolerance: match rng.below(10) {
+            0 => rng.number(),
+            1 => 10f64.powf(rng.uniform(-11.0, -8.0)),
+            _ => 10f64.powf(rng.uniform(-8.0, -2.0)),
+        },
+        relative: rng.chance(0.7),
+        single_spans: rng.chance(0.2),
     }
 }

@@ -21,6 +21,7 @@
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::time::{Duration, Instant};
 
+use lac_io::export::Format;
 use serde::{Deserialize, Serialize};
 
 mod checks;
@@ -114,6 +115,20 @@ pub enum Input {
         /// 1 or 2.
         torsion: u8,
     },
+    /// `lac_io::export::export` of a solved curve: a segment, compound curve, path or space
+    /// segment, in one of the file formats.
+    Export {
+        /// The curve, as the input that solves it (its sampling fields are not used).
+        curve: Box<Input>,
+        /// The file format.
+        format: Format,
+        /// The tolerance asked.
+        tolerance: f64,
+        /// The tolerance is relative to the arc length (else model units).
+        relative: bool,
+        /// One curve per piece.
+        single_spans: bool,
+    },
 }
 
 /// The entry points the harness drives.
@@ -135,11 +150,13 @@ pub enum EntryPoint {
     Space,
     /// Paths from a control polygon.
     Path,
+    /// CAD export of solved curves.
+    Export,
 }
 
 impl EntryPoint {
     /// Every entry point.
-    pub const ALL: [EntryPoint; 8] = [
+    pub const ALL: [EntryPoint; 9] = [
         EntryPoint::Segment,
         EntryPoint::Compound3,
         EntryPoint::Compound4,
@@ -148,6 +165,7 @@ impl EntryPoint {
         EntryPoint::Quasi,
         EntryPoint::Space,
         EntryPoint::Path,
+        EntryPoint::Export,
     ];
 
     /// Its name on the command line and in reports.
@@ -161,6 +179,7 @@ impl EntryPoint {
             EntryPoint::Quasi => "quasi",
             EntryPoint::Space => "space",
             EntryPoint::Path => "path",
+            EntryPoint::Export => "export",
         }
     }
 
@@ -198,6 +217,7 @@ impl EntryPoint {
             EntryPoint::Quasi => generate::quasi(rng),
             EntryPoint::Space => generate::space(rng),
             EntryPoint::Path => generate::path(rng),
+            EntryPoint::Export => generate::export(rng),
         }
     }
 }

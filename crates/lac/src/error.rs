@@ -320,7 +320,8 @@ pub enum NotDrawable {
         omega_max: f64,
     },
     /// No log-aesthetic space segment of these α, β and type fits the four points, even
-    /// with Ω = 0.
+    /// with Ω = 0: none found by the solver's search, which is bounded (a fixed budget of
+    /// integration steps per solve, so that every call returns in bounded time).
     NoSpaceSegment {
         /// The Ω asked for.
         omega: f64,

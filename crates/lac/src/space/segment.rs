@@ -4,7 +4,9 @@ use kurbo::Point;
 
 use super::family::{SpaceForm, SpaceFormParams, TorsionType};
 use super::mat3::Mat3;
-use super::shoot::{end_angles, integrate_to, shoot, shoot_each, Checkpoints, Cone, Shot};
+use super::shoot::{
+    end_angles, integrate_to, shoot, shoot_each, Budget, Checkpoints, Cone, Shot, SOLVE_STEPS,
+};
 use super::taylor::{Expansion, State};
 use super::Frame;
 use crate::error::{finite, Error, NotDrawable, Result};
@@ -642,25 +644,33 @@ fn solve_space(
     } else {
         1
     };
+    let budget = Budget::new(SOLVE_STEPS);
     let problem = Problem {
         shape,
         target,
         crossing,
+        budget: &budget,
     };
     let omega = shape.omega;
     let warm = warm
         .filter(|w| w.reversed == reversed)
         .and_then(|w| problem.newton3(w.solution, w.s_end, omega));
     let found = match warm {
-        Some(found) => found,
-        None => problem.solve_with_omega(omega)?,
+        Some(found) => Ok(found),
+        None => problem.solve_with_omega(omega),
     };
+    let found = found?;
     let form = problem.form(&found.solution, omega);
     // The solver's own check: the end it found, integrated once more with its checkpoints,
     // meets the end angles.
-    let shot = integrate_to(&form, found.s_end, Checkpoints::Keep)
-        .filter(|shot| problem.residual3(shot).iter().all(|r| r.abs() < 1e-10))
-        .ok_or(Error::NotDrawable(NotDrawable::NoSpaceSegment { omega }))?;
+    let shot = integrate_to(
+        &form,
+        found.s_end,
+        Checkpoints::Keep,
+        &Budget::new(SOLVE_STEPS),
+    )
+    .filter(|shot| problem.residual3(shot).iter().all(|r| r.abs() < 1e-10))
+    .ok_or(Error::NotDrawable(NotDrawable::NoSpaceSegment { omega }))?;
     // Mirror when the standard form's dihedral has the other sign (seed 003 §4).
     let mirror_z = (shot.theta2 < 0.0) != (theta2 < 0.0);
     // Rotation taking e1 to t0 and the standard-form chord to the caller's.
@@ -720,10 +730,12 @@ struct Scan {
 /// The two-parameter search of seed 003 §4 for fixed α, β, type, end geometry and crossing
 /// (the Ω of `shape` is the goal; continuation visits smaller ones).
 #[derive(Clone, Copy, Debug)]
-struct Problem {
+struct Problem<'a> {
     shape: SpaceShape,
     target: Target,
     crossing: u32,
+    /// What is left of the solve's Taylor steps.
+    budget: &'a Budget,
 }
 
 /// How far [`Problem::scan`] goes.
@@ -735,7 +747,7 @@ enum ScanUntil {
     End,
 }
 
-impl Problem {
+impl Problem<'_> {
     fn cone(&self) -> Cone {
         Cone::new(self.target.theta0, self.crossing)
     }
@@ -779,7 +791,7 @@ impl Problem {
                     lambda,
                     ln_nu: base + f64::from(k) * 0.25 * std::f64::consts::LN_10,
                 };
-                for shot in shoot_each(&self.form(&p, omega), &cone) {
+                for shot in shoot_each(&self.form(&p, omega), &cone, self.budget) {
                     let r = self.target.residual(&shot);
                     starts.push((r[0].hypot(r[1]), p, shot.end.s));
                 }
@@ -796,7 +808,7 @@ impl Problem {
     /// a forward-difference Jacobian and the safeguards of [`Problem::newton`].
     fn newton3(&self, mut p: Solution, mut s_end: f64, omega: f64) -> Option<Converged> {
         let eval = |p: &Solution, s: f64| {
-            integrate_to(&self.form(p, omega), s, Checkpoints::Discard)
+            integrate_to(&self.form(p, omega), s, Checkpoints::Discard, self.budget)
                 .map(|shot| self.residual3(&shot))
         };
         let mut r = eval(&p, s_end)?;
@@ -875,7 +887,12 @@ impl Problem {
     }
 
     fn shot(&self, p: &Solution, omega: f64) -> Option<Shot> {
-        shoot(&self.form(p, omega), &self.cone(), Checkpoints::Discard)
+        shoot(
+            &self.form(p, omega),
+            &self.cone(),
+            Checkpoints::Discard,
+            self.budget,
+        )
     }
 
     /// Solve at `omega`, directly from a near-helix start, else by continuation in Ω from

@@ -1097,6 +1097,16 @@ impl RegionInput {
         }
     }
 
+    /// The whole map, its [`lac::region::top_rows`] computed by `map_rows` (a front end's
+    /// serial or parallel map over row indices, calling [`RegionInput::row`]) and mirrored.
+    pub fn rows(
+        &self,
+        size: usize,
+        map_rows: impl FnOnce(usize) -> Vec<Vec<bool>>,
+    ) -> Vec<Vec<bool>> {
+        lac::region::mirror_rows(size, map_rows(lac::region::top_rows(size)))
+    }
+
     /// The report of the rows computed by [`RegionInput::row`].
     pub fn report(&self, size: usize, drawable: Vec<Vec<bool>>) -> RegionReport {
         let count: usize = drawable.iter().flatten().filter(|&&d| d).count();

@@ -27,10 +27,14 @@ fn map<'py>(
         ));
     }
     let flat: Vec<bool> = py.detach(|| {
-        (0..size)
-            .into_par_iter()
-            .flat_map_iter(|row| input.row(size, row))
-            .collect()
+        input
+            .rows(size, |top| {
+                (0..top)
+                    .into_par_iter()
+                    .map(|row| input.row(size, row))
+                    .collect()
+            })
+            .concat()
     });
     let array = Array2::from_shape_vec((size, size), flat)
         .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;

@@ -5,6 +5,14 @@
 //! exists for it (or, for compound curves, a compound curve with slopes α0, α1 and turning
 //! ratio r_θ: the drawable regions seed 004 leaves open). The functions here are pure;
 //! callers parallelise over rows.
+//!
+//! The maps are symmetric, and only what they do not repeat is solved. Mirroring the middle
+//! point in y = 0 mirrors the curve (same slopes, same ratio), so the bottom rows repeat the
+//! top ones ([`top_rows`], [`mirror_rows`]), for segments and compound curves alike.
+//! Mirroring it in x = 0 reverses a segment (a log-aesthetic curve run backwards has the
+//! same α: its logarithmic curvature graph does not depend on the direction), so a
+//! segment's row repeats its left half ([`row`]); a compound curve run backwards swaps α0
+//! with α1 and r_θ with 1 − r_θ, so its rows are solved whole.
 
 use kurbo::Point;
 
@@ -45,11 +53,38 @@ pub fn pixel_center(size: usize, row: usize, col: usize) -> Point {
     )
 }
 
-/// One row of the map: `true` where drawable.
+/// One row of the map: `true` where drawable. Its left half is solved and mirrored.
 pub fn row(alpha: f64, size: usize, row: usize) -> Vec<bool> {
-    (0..size)
+    let left: Vec<bool> = (0..size.div_ceil(2))
         .map(|col| is_drawable(alpha, pixel_center(size, row, col)))
-        .collect()
+        .collect();
+    (0..size).map(|col| left[col.min(size - 1 - col)]).collect()
+}
+
+/// How many rows of a `size`×`size` map are solved: the top half (and the middle row of an
+/// odd size); [`mirror_rows`] makes the rest.
+pub fn top_rows(size: usize) -> usize {
+    size.div_ceil(2)
+}
+
+/// The whole map from its [`top_rows`] rows: row `size − 1 − r` is row `r`, the middle
+/// point mirrored in y = 0 (pixel centres are symmetric about it).
+///
+/// ```
+/// use lac::region::{mirror_rows, row, top_rows};
+/// let top: Vec<_> = (0..top_rows(8)).map(|r| row(0.5, 8, r)).collect();
+/// let map = mirror_rows(8, top);
+/// assert_eq!(map.len(), 8);
+/// assert_eq!(map[1], map[6]);
+/// ```
+pub fn mirror_rows(size: usize, mut top: Vec<Vec<bool>>) -> Vec<Vec<bool>> {
+    let solved = top.len().min(size);
+    top.truncate(solved);
+    for r in solved..size {
+        let mirror = top[size - 1 - r].clone();
+        top.push(mirror);
+    }
+    top
 }
 
 /// Is there a compound-rhythm curve (seed 004) from (−1, 0) to (1, 0) with middle point

@@ -5,7 +5,7 @@ use std::io::IsTerminal;
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 
-/// Rows top (y = +1) to bottom of a `size`×`size` map, `row(r)` computing row `r`
+/// Rows 0 to `size` (from the top, y = +1) of a map, `row(r)` computing row `r`
 /// (`lac::region::row` or `lac::region::compound_row`).
 ///
 /// Shows a progress bar on standard error when it is a terminal, never in pipes or CI.

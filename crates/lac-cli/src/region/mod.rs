@@ -23,7 +23,9 @@ pub(crate) fn run(args: &RegionArgs, limits: Limits) -> Result<(), ErrorBody> {
     if args.format == RegionFormat::Png {
         refuse_binary_on_terminal(args.file.as_deref(), "PNG", "--format json")?;
     }
-    let rows = grid::drawable_rows(size, |row| input.row(size, row));
+    let rows = input.rows(size, |top| {
+        grid::drawable_rows(top, |row| input.row(size, row))
+    });
     write_to(args.file.as_deref(), |out| match args.format {
         RegionFormat::Png => png::write_png(&rows, out),
         RegionFormat::Json => {

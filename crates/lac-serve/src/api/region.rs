@@ -26,7 +26,9 @@ pub(crate) fn region(app: &App, text: &str) -> Result<String, ApiError> {
     if let Some(answer) = app.regions.get(&key) {
         return Ok(answer.to_string());
     }
-    let rows = (0..size).map(|row| input.row(size, row)).collect();
+    let rows = input.rows(size, |top| {
+        (0..top).map(|row| input.row(size, row)).collect()
+    });
     let answer: Arc<str> = to_line(&input.report(size, rows)).into();
     app.regions.put(key, Arc::clone(&answer));
     Ok(answer.to_string())

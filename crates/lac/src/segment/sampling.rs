@@ -60,19 +60,23 @@ impl Segment {
             return Ok(Vec::new());
         }
         // Each sample is placed from the nearer end, where ρ is known exactly (see
-        // `Segment::station_at_s`), in standard-form arc length.
+        // `Segment::station_at_s`), in standard-form arc length; the ends themselves are
+        // the solved stations (each anchor is made when a sample first needs it).
         let (len, k) = (self.length(), self.dir() / self.scale());
-        let (head, tail) = (
-            Anchor::new(&self.form, self.first),
-            Anchor::new(&self.form, self.last),
-        );
+        let (mut head, mut tail) = (None, None);
         let nodes: Vec<Node> = at
             .iter()
             .map(|&s| {
-                let node = if s <= 0.5 * len {
-                    head.advance_s(&self.form, k * s)
+                let node = if s == 0.0 {
+                    Some(Node::new(&self.form, self.first))
+                } else if s == len {
+                    Some(Node::new(&self.form, self.last))
+                } else if s <= 0.5 * len {
+                    head.get_or_insert_with(|| Anchor::new(&self.form, self.first))
+                        .advance_s(&self.form, k * s)
                 } else {
-                    tail.advance_s(&self.form, -k * (len - s))
+                    tail.get_or_insert_with(|| Anchor::new(&self.form, self.last))
+                        .advance_s(&self.form, -k * (len - s))
                 };
                 node.ok_or(Error::NumericalFailure {
                     what: "a sample of the segment",

@@ -252,45 +252,22 @@ impl Segment {
     /// ∫ e^{iθ} ds from `a` to `b` by the Hermite rule, halving the interval where the
     /// error estimate is too large, and by the general quadrature after 12 halvings.
     fn hermite(&self, a: &Node, b: &Node, ja: &Jet, jb: &Jet, depth: u32) -> Complex {
-        const ORDER_11: [f64; 6] = [
-            1.0 / 2.0,
-            5.0 / 44.0,
-            1.0 / 66.0,
-            1.0 / 792.0,
-            1.0 / 15840.0,
-            1.0 / 665280.0,
-        ];
-        const ORDER_9: [f64; 5] = [
-            1.0 / 2.0,
-            1.0 / 9.0,
-            1.0 / 72.0,
-            1.0 / 1008.0,
-            1.0 / 30240.0,
-        ];
         let h = b.st.s - a.st.s;
-        let (mut order11, mut order9) = (Complex::ZERO, Complex::ZERO);
-        let mut hk = h;
-        for k in 0..6 {
-            // (f₀⁽ᵏ⁾ + (−1)ᵏ f₁⁽ᵏ⁾)·hᵏ⁺¹
-            let term = if k % 2 == 0 {
-                ja[k] + jb[k]
-            } else {
-                ja[k] - jb[k]
-            }
-            .scale(hk);
-            order11 += term.scale(ORDER_11[k]);
-            if k < 5 {
-                order9 += term.scale(ORDER_9[k]);
-            }
-            hk *= h;
+        let (mut order11, mut order9) = hermite_rules(ja, jb, h, Powers::Direct);
+        let mut estimate = (order11 - order9).norm_max();
+        if !estimate.is_finite() {
+            // hᵏ⁺¹ overflows (or the jets underflow) although their product need not: a
+            // standard form whose lengths reach 1e60 where the curvature is 1e-64 (α near
+            // 1, Λ ~ 1e4). Multiplied term by term instead.
+            (order11, order9) = hermite_rules(ja, jb, h, Powers::Stepwise);
+            estimate = (order11 - order9).norm_max();
         }
         // The order-9 rule's error is about |order11 − order9|; order 11's is smaller by
         // about (hκ)²/600, and a difference below 1e-11·h implies hκ < 0.85.
-        let estimate = (order11 - order9).norm_max();
         if estimate <= 0.7e-11 * h.abs() {
             return order11;
         }
-        if estimate.is_nan() {
+        if !estimate.is_finite() {
             // Halving cannot mend an undefined estimate (it would only repeat it 4096 times).
             return span(self, &a.st, &b.st);
         }
@@ -301,6 +278,56 @@ impl Segment {
         let jm = self.jet_of(&mid);
         self.hermite(a, &mid, ja, &jm, depth + 1) + self.hermite(&mid, b, &jm, jb, depth + 1)
     }
+}
+
+/// How [`hermite_rules`] forms `(f₀⁽ᵏ⁾ ± f₁⁽ᵏ⁾)·hᵏ⁺¹`.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Powers {
+    /// With hᵏ⁺¹ formed first: fast, and exact unless hᵏ⁺¹ leaves double range.
+    Direct,
+    /// Multiplying by h one factor at a time, so that the product stays in range whenever
+    /// hκ does not exceed about 1.
+    Stepwise,
+}
+
+/// The order-11 and order-9 Hermite rules for ∫ f over an interval of length `h`, from the
+/// jets (f and its first five derivatives) at its ends.
+fn hermite_rules(ja: &Jet, jb: &Jet, h: f64, powers: Powers) -> (Complex, Complex) {
+    const ORDER_11: [f64; 6] = [
+        1.0 / 2.0,
+        5.0 / 44.0,
+        1.0 / 66.0,
+        1.0 / 792.0,
+        1.0 / 15840.0,
+        1.0 / 665280.0,
+    ];
+    const ORDER_9: [f64; 5] = [
+        1.0 / 2.0,
+        1.0 / 9.0,
+        1.0 / 72.0,
+        1.0 / 1008.0,
+        1.0 / 30240.0,
+    ];
+    let (mut order11, mut order9) = (Complex::ZERO, Complex::ZERO);
+    let mut hk = h;
+    for k in 0..6 {
+        // (f₀⁽ᵏ⁾ + (−1)ᵏ f₁⁽ᵏ⁾)·hᵏ⁺¹
+        let sum = if k % 2 == 0 {
+            ja[k] + jb[k]
+        } else {
+            ja[k] - jb[k]
+        };
+        let term = match powers {
+            Powers::Direct => sum.scale(hk),
+            Powers::Stepwise => (0..=k).fold(sum, |t, _| t.scale(h)),
+        };
+        order11 += term.scale(ORDER_11[k]);
+        if k < 5 {
+            order9 += term.scale(ORDER_9[k]);
+        }
+        hk *= h;
+    }
+    (order11, order9)
 }
 
 /// P(b) − P(a) in the standard form by the general quadrature.

@@ -222,7 +222,7 @@ impl PyCurve {
 /// `points` is a 3×2 array or a sequence of three (x, y) pairs.
 #[pyclass(module = "lac", name = "Segment", extends = PyCurve, frozen)]
 pub(crate) struct PySegment {
-    inner: Arc<lac::Segment>,
+    pub(crate) inner: Arc<lac::Segment>,
 }
 
 impl PySegment {
@@ -358,7 +358,7 @@ impl PySegment {
 /// its joint's tangent is parallel to P2 − P1 (seed 002).
 #[pyclass(module = "lac", name = "CompoundCurve", extends = PyCurve, frozen)]
 pub(crate) struct PyCompoundCurve {
-    inner: Arc<lac::CompoundCurve>,
+    pub(crate) inner: Arc<lac::CompoundCurve>,
 }
 
 impl PyCompoundCurve {

@@ -12,6 +12,7 @@ mod batch;
 mod convert;
 mod curve;
 mod errors;
+mod export;
 mod path;
 mod quasi;
 mod region;
@@ -37,6 +38,7 @@ fn _lac(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<quasi::QuasiPiece>()?;
     m.add_class::<quasi::PyQuasiCurve>()?;
     m.add_class::<path::PyPath>()?;
+    m.add_class::<path::PySpline>()?;
     m.add_class::<space::PySpaceSegment>()?;
     m.add_class::<space::Frames>()?;
     m.add_class::<space::Graph>()?;
@@ -49,6 +51,7 @@ fn _lac(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(region::classify, m)?)?;
     m.add_function(wrap_pyfunction!(region::pixel_center, m)?)?;
     m.add_function(wrap_pyfunction!(batch::solve_segments, m)?)?;
+    m.add_function(wrap_pyfunction!(export::export, m)?)?;
     m.add("MAX_ABS_ALPHA", lac::MAX_ABS_ALPHA)?;
     Ok(())
 }

@@ -1,5 +1,6 @@
 //! Log-aesthetic paths from a control polygon (`lac::Path`): G1 at given leg fractions, G2
-//! solved (through inflections too), warm-started from an earlier solution.
+//! solved (through inflections too), warm-started from an earlier solution; G2 splines
+//! through points (`lac::Spline`).
 
 use lac::{Alphas, Continuity, ControlPolygon};
 use numpy::{PyArray1, PyArray2, PyArray3};
@@ -21,7 +22,7 @@ type StraightRow = (usize, (f64, f64), (f64, f64));
 /// Raises `LacError` when no G2 path is found (kind `no_g2_path`, naming the leg) or a
 /// segment cannot be drawn.
 #[pyclass(module = "lac", name = "Path", frozen)]
-pub(crate) struct PyPath(lac::Path);
+pub(crate) struct PyPath(pub(crate) lac::Path);
 
 #[pymethods]
 impl PyPath {
@@ -36,18 +37,7 @@ impl PyPath {
         fractions: Option<&Bound<'_, PyAny>>,
         warm: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
-        let real = real_array(polygon, "polygon")?;
-        if real.shape.len() != 2 || real.shape[1] != 2 {
-            return Err(invalid(
-                py,
-                "polygon must be an (n, 2) array or a sequence of (x, y) pairs",
-            ));
-        }
-        let points: Vec<kurbo::Point> = real
-            .data
-            .chunks(2)
-            .map(|c| kurbo::Point::new(c[0], c[1]))
-            .collect();
+        let points = point_list(py, polygon, "polygon")?;
         let poly = if closed {
             ControlPolygon::closed(&points)
         } else {
@@ -145,4 +135,128 @@ impl PyPath {
             .map_err(|_| invalid(py, format!("n must be at least 2, got {n}")))?;
         Ok(Samples(self.0.sample_by_arc_length(n).or_raise(py)?))
     }
+}
+
+/// A G2 spline of log-aesthetic segments through `points` (at least three): one segment per
+/// span, the tangent angles at the points solved for continuous curvature. An open spline's
+/// end tangent directions are `ends` = (start, end) in radians, or those of the circles
+/// through its first and last three points.
+///
+/// Raises `LacError` (kind `no_g2_path`, naming the span) where a span would have to inflect
+/// (not supported in splines yet; see `Path`) or no continuous curvature is reached.
+#[pyclass(module = "lac", name = "Spline", frozen)]
+pub(crate) struct PySpline(lac::Spline);
+
+#[pymethods]
+impl PySpline {
+    #[new]
+    #[pyo3(signature = (points, alpha, closed = false, ends = None))]
+    fn new(
+        py: Python<'_>,
+        points: &Bound<'_, PyAny>,
+        alpha: f64,
+        closed: bool,
+        ends: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let points = point_list(py, points, "points")?;
+        let ends = match ends.map(|e| vector(e, "ends")).transpose()? {
+            None => None,
+            Some(v) => match v.as_slice() {
+                [a, b] if !closed => Some([*a, *b]),
+                [_, _] => return Err(invalid(py, "ends are an open spline's; closed=True")),
+                _ => {
+                    return Err(invalid(
+                        py,
+                        format!("ends must be two angles (start, end), got {}", v.len()),
+                    ))
+                }
+            },
+        };
+        Ok(PySpline(
+            lac::Spline::g2(&points, alpha, closed, ends).or_raise(py)?,
+        ))
+    }
+
+    /// Whether it is closed.
+    #[getter]
+    fn closed(&self) -> bool {
+        self.0.is_closed()
+    }
+
+    /// Arc length of the whole spline.
+    #[getter]
+    fn arc_length(&self) -> f64 {
+        use lac::Curve;
+        self.0.arc_length()
+    }
+
+    /// The points it passes through, shape (n, 2).
+    #[getter]
+    fn points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        points2(py, self.0.points().iter().copied())
+    }
+
+    /// The tangent direction at each point, radians.
+    #[getter]
+    fn angles<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        array1(py, self.0.angles().to_vec())
+    }
+
+    /// Each span's control triangle (its first point, the intersection of its end
+    /// tangents, its last point), shape (k, 3, 2).
+    #[getter]
+    fn control_triangles<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray3<f64>>> {
+        let t = self.0.control_triangles();
+        let flat: Vec<f64> = t.iter().flatten().flat_map(|p| [p.x, p.y]).collect();
+        blocks(py, flat, (t.len(), 3, 2))
+    }
+
+    /// Each span's signed curvature at its start and end, shape (k, 2).
+    #[getter]
+    fn end_curvatures<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        use lac::Curve;
+        let ends = self
+            .0
+            .pieces()
+            .iter()
+            .map(|s| kurbo::Point::new(s.curvature_start(), s.curvature_end()));
+        points2(py, ends.collect::<Vec<_>>().into_iter())
+    }
+
+    /// The relative curvature jump at each joint (the interior points; every point when
+    /// closed).
+    #[getter]
+    fn curvature_jumps<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        array1(py, self.0.curvature_jumps().to_vec())
+    }
+
+    /// The largest relative curvature jump at a joint.
+    #[getter]
+    fn max_curvature_jump(&self) -> f64 {
+        self.0.max_curvature_jump()
+    }
+
+    /// `n` samples equally spaced in arc length over the whole spline.
+    fn sample(&self, py: Python<'_>, n: i64) -> PyResult<Samples> {
+        use lac::Curve;
+        let n = usize::try_from(n)
+            .map_err(|_| invalid(py, format!("n must be at least 2, got {n}")))?;
+        Ok(Samples(self.0.sample_by_arc_length(n).or_raise(py)?))
+    }
+}
+
+/// An (n, 2) array or a sequence of (x, y) pairs as points.
+fn point_list(py: Python<'_>, value: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<kurbo::Point>> {
+    let real = real_array(value, name)?;
+    if real.shape.len() != 2 || real.shape[1] != 2 {
+        return Err(invalid(
+            py,
+            format!("{name} must be an (n, 2) array or a sequence of (x, y) pairs"),
+        ));
+    }
+    Ok(real
+        .data
+        .chunks(2)
+        .map(|c| kurbo::Point::new(c[0], c[1]))
+        .collect())
 }

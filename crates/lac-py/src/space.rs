@@ -17,7 +17,7 @@ use crate::errors::{from_body, invalid, OrRaise};
 /// `points` is a 4×3 array or four (x, y, z) triples. Coplanar points give the planar
 /// segment (`is_planar`).
 #[pyclass(module = "lac", name = "SpaceSegment", frozen)]
-pub(crate) struct PySpaceSegment(lac::SpaceSegment);
+pub(crate) struct PySpaceSegment(pub(crate) lac::SpaceSegment);
 
 fn vec3_rows<'py>(
     py: Python<'py>,

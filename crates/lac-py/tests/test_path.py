@@ -1,10 +1,16 @@
-"""`lac.Path` answers what `lac path` answers (the same Rust code), G1 and G2, through
-inflections, warm-started, and raises the library's errors."""
+"""`lac.Path`, `lac.Spline` and `lac.export` answer what `lac path`, `lac spline` and
+`lac export` answer (the same Rust code): G1 and G2 paths through inflections, warm-started,
+splines through points, CAD files in every format; and raise the library's errors."""
+
+import json
+import re
+import subprocess
 
 import numpy as np
 import pytest
 
 import lac
+from conftest import lac_bin
 
 S_POLYGON = [(0.0, 0.0), (1.0, 0.0), (2.0, 0.5), (5.0, 2.5), (6.0, 3.0), (7.0, 3.0)]
 
@@ -49,3 +55,79 @@ def test_warm_start_g1_and_errors():
         lac.Path([(0.0, 0.0), (1.0, 0.0)], 0.5)
     with pytest.raises(lac.InvalidInput):
         lac.Path([0.0, 1.0, 2.0], 0.5)
+
+
+SPLINE_POINTS = [(0.0, 0.0), (2.0, 0.3), (3.5, 1.5), (4.0, 3.0), (3.2, 4.6)]
+
+
+def test_spline_equals_the_command_line(cli):
+    ref = cli("spline", "--through", arg(SPLINE_POINTS), "--alpha", "0.5", "--samples", "9")
+    spline = lac.Spline(SPLINE_POINTS, 0.5)
+    assert not spline.closed
+    assert spline.arc_length == ref["arc_length"]
+    assert spline.max_curvature_jump == ref["max_curvature_jump"] <= 1e-9
+    assert spline.points.tolist() == [list(p) for p in SPLINE_POINTS]
+    assert spline.angles.tolist() == ref["angles"]
+    assert spline.control_triangles.shape == (4, 3, 2)
+    assert spline.control_triangles.tolist() == [s["control_points"] for s in ref["spans"]]
+    assert spline.end_curvatures.tolist() == [s["curvature"] for s in ref["spans"]]
+    assert spline.curvature_jumps.tolist() == ref["curvature_jumps"]
+    samples = spline.sample(9)
+    assert samples.kappa.tolist() == [s["kappa"] for s in ref["samples"]]
+    assert samples.points.tolist() == [[s["x"], s["y"]] for s in ref["samples"]]
+
+
+def test_spline_options_and_errors(cli):
+    ends = lac.Spline(SPLINE_POINTS, 0.5, ends=[0.0, 2.1])
+    ref = cli("spline", "--through", arg(SPLINE_POINTS), "--alpha", "0.5",
+              "--start-angle", "0", "--end-angle", "2.1")
+    assert ends.angles.tolist() == ref["angles"] and ends.angles[[0, -1]].tolist() == [0.0, 2.1]
+    ring = [(1.0, 0.0), (0.0, 1.2), (-1.0, 0.0), (0.0, -0.8)]
+    closed = lac.Spline(np.array(ring), -1.0, closed=True)
+    assert closed.closed and closed.control_triangles.shape == (4, 3, 2)
+    assert closed.max_curvature_jump <= 1e-9
+    with pytest.raises(lac.LacError, match="span"):
+        lac.Spline([(0.0, 0.0), (1.0, 1.0), (2.0, 0.0), (3.0, 1.0)], 0.5)  # must inflect
+    with pytest.raises(lac.InvalidInput):
+        lac.Spline([(0.0, 0.0), (1.0, 0.0)], 0.5)
+    with pytest.raises(lac.InvalidInput):
+        lac.Spline(SPLINE_POINTS, 0.5, ends=[0.1])
+    with pytest.raises(lac.InvalidInput):
+        lac.Spline(ring, 0.5, closed=True, ends=[0.1, 0.2])
+
+
+def test_export_equals_the_command_line(cli, tmp_path):
+    seg = lac.Segment([(0.0, 0.0), (1.0, 0.0), (1.6, 0.9)], -1.0)
+    for fmt in ["step", "iges", "dxf", "svg", "json"]:
+        text, report = lac.export(seg, fmt, tolerance=1e-7, name="seg")
+        out = tmp_path / f"seg.{fmt}"
+        done = subprocess.run(
+            [lac_bin(), "export", "--format", fmt, "--tolerance", "1e-7", "-o", str(out),
+             "--points", "0,0 1,0 1.6,0.9", "--alpha", "-1"],
+            capture_output=True, text=True, check=True)
+        ref = json.loads(done.stderr.strip().splitlines()[-1])
+        assert report == ref
+        assert report["max_deviation"] <= 1e-7 and report["monotone_proven"] is True
+        # The same curves; only the name and the time stamp may differ.
+        expected = out.read_text()
+        if fmt in ("json", "svg"):
+            assert text == expected
+        else:
+            numbers = lambda t: re.findall(r"-?\d+\.\d+(?:[eE][-+]?\d+)?", t)  # noqa: E731
+            assert len(text) > 200 and numbers(text)[-50:] == numbers(expected)[-50:]
+    path = lac.Path(S_POLYGON, -1.0)
+    with pytest.raises(lac.InvalidInput, match="inflection"):
+        lac.export(path, "step")
+    g2 = lac.Path([(0.0, 0.0), (3.0, 0.0), (4.0, 2.0), (2.0, 4.0), (-1.0, 2.0)], 1.0)
+    text, report = lac.export(g2, "iges", tolerance=1e-6, relative=True, pieces=True)
+    assert report["kind"] == "path" and report["single_spans"] and report["continuity"] == "G2"
+    assert report["max_deviation"] <= report["tolerance"] == pytest.approx(1e-6 * g2.arc_length)
+    space = lac.SpaceSegment([(0, 0, 0), (1, 0, 0), (2, 1, 0.5), (2, 2, 1.5)], 0.0, 0.0)
+    text, report = lac.export(space, "json")
+    assert json.loads(text)["curves"][0]["dimension"] == 3 and report["continuity"] == "C1"
+    with pytest.raises(lac.InvalidInput, match="format"):
+        lac.export(seg, "obj")
+    with pytest.raises(lac.InvalidInput, match="Segment, CompoundCurve"):
+        lac.export([(0, 0), (1, 0), (1, 1)], "step")
+    with pytest.raises(lac.LacError, match="tolerance"):
+        lac.export(seg, "step", tolerance=1e-20)

@@ -12,7 +12,9 @@ Rust library `lac`:
 * `RationalCubic` and `QuasiCurve`: rational cubic Beziers with a proven curvature
   monotonicity verdict (seed 001);
 * `SpaceSegment`: log-aesthetic space curves (seed 003);
-* `Path`: G1/G2 paths from a control polygon, through inflections (issue 15);
+* `Path`: G1/G2 paths from a control polygon, through inflections;
+* `Spline`: G2 splines of log-aesthetic segments through points;
+* `export`: any of these curves as a STEP, IGES, DXF, SVG or JSON file (`lac export`);
 * `drawable_region`, `drawable_region_compound`: drawable-region maps (seed 000 Fig. 9);
 * `solve_segments`: many segments in one call, on all cores, with per-curve errors.
 
@@ -41,11 +43,13 @@ from ._lac import (
     Segment,
     SegmentBatch,
     SpaceSegment,
+    Spline,
     StandardForm,
     classify,
     curvature_plot,
     drawable_region,
     drawable_region_compound,
+    export,
     is_drawable,
     log_curvature_graph,
     pixel_center,
@@ -74,11 +78,13 @@ __all__ = [
     "Segment",
     "SegmentBatch",
     "SpaceSegment",
+    "Spline",
     "StandardForm",
     "classify",
     "curvature_plot",
     "drawable_region",
     "drawable_region_compound",
+    "export",
     "is_drawable",
     "log_curvature_graph",
     "pixel_center",

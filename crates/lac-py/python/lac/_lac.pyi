@@ -1,7 +1,7 @@
 """Type stubs of the extension module `lac._lac` (re-exported by `lac`)."""
 
 from collections.abc import Sequence
-from typing import Literal, Optional, Union
+from typing import Any, Literal, Optional, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -311,6 +311,33 @@ class Path:
     def straight_pieces(self) -> list[tuple[int, tuple[float, float], tuple[float, float]]]: ...
     def sample(self, n: int) -> Samples: ...
 
+class Spline:
+    """A G2 spline of log-aesthetic segments through points (one segment per span)."""
+    def __init__(
+        self,
+        points: npt.ArrayLike,
+        alpha: float,
+        closed: bool = False,
+        ends: Optional[npt.ArrayLike] = None,
+    ) -> None: ...
+    @property
+    def closed(self) -> bool: ...
+    @property
+    def arc_length(self) -> float: ...
+    @property
+    def points(self) -> FloatArray: ...
+    @property
+    def angles(self) -> FloatArray: ...
+    @property
+    def control_triangles(self) -> FloatArray: ...
+    @property
+    def end_curvatures(self) -> FloatArray: ...
+    @property
+    def curvature_jumps(self) -> FloatArray: ...
+    @property
+    def max_curvature_jump(self) -> float: ...
+    def sample(self, n: int) -> Samples: ...
+
 class SpaceSegment:
     """A log-aesthetic space segment from four control points (seed 003)."""
 
@@ -387,3 +414,14 @@ def classify(alpha: float, middle: Sequence[float]) -> None:
 
 def pixel_center(size: int, row: int, col: int) -> tuple[float, float]:
     """The centre (x, y) of a pixel of a size x size region map."""
+
+def export(
+    curve: Segment | CompoundCurve | Path | SpaceSegment,
+    format: str = "step",
+    tolerance: float = 1e-6,
+    relative: bool = False,
+    pieces: bool = False,
+    name: str = "lac",
+) -> tuple[str, dict[str, Any]]:
+    """A curve as a CAD file's text (step, iges, dxf, svg, json) and the export's report."""
+    ...

@@ -310,7 +310,8 @@ fn dot(svg: &mut String, p: Point, colour: &str) {
 }
 
 /// The caption: the curve's numbers, "α = …", "Λ = …", "arc length = …" (a compound curve:
-/// "α0 = …", "α1 = …", "Λ = …", "joint s = …", "arc length = …"), and on a line of its own
+/// "α0 = …", "α1 = …", "Λ = …", "joint s = …", "arc length = …"; a path: each segment's α and
+/// Λ, its joints and straight pieces), and on a line of its own
 /// the colour key of the comb and the evolute.
 /// The distance from the end of `a` to the start of `b` (0 when they meet: a path's
 /// straight piece when they do not).
@@ -330,10 +331,11 @@ fn caption(pieces: &[Segment], layers: &Layers, extras: &Extras) -> Block {
         .into_iter()
         .map(|text| Entry::plain(CURVE, text))
         .collect();
-    facts.push(Entry::plain(
-        CURVE,
-        format!("Λ = {}", short(pieces[0].lambda())),
-    ));
+    facts.extend(
+        lambdas(pieces)
+            .into_iter()
+            .map(|text| Entry::plain(CURVE, text)),
+    );
     let mut s = 0.0;
     for (i, piece) in pieces[..pieces.len() - 1].iter().enumerate() {
         s += piece.arc_length();
@@ -386,6 +388,24 @@ fn slopes(pieces: &[Segment]) -> Vec<String> {
         .iter()
         .enumerate()
         .map(|(i, piece)| format!("α{i} = {}", as_given(piece.alpha())))
+        .collect()
+}
+
+/// The pieces' Λ: one when they share it (a compound curve's G3 joint makes them equal),
+/// else each piece's, numbered as [`slopes`] numbers the α (a path's segments each have
+/// their own).
+fn lambdas(pieces: &[Segment]) -> Vec<String> {
+    let first = pieces[0].lambda();
+    if pieces
+        .iter()
+        .all(|p| (p.lambda() - first).abs() <= 1e-12 * first.abs())
+    {
+        return vec![format!("Λ = {}", short(first))];
+    }
+    pieces
+        .iter()
+        .enumerate()
+        .map(|(i, piece)| format!("Λ{i} = {}", short(piece.lambda())))
         .collect()
 }
 

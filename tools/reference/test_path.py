@@ -1,7 +1,7 @@
-"""`lac path --g2` checked independently: every reported segment is solved again from its
-control triangle and alpha by the 30-digit mpmath reference (segment_mpmath.py, SPEC §3),
-and at every joint the reference's curvatures on the two sides must agree to 1e-9
-(relative), as must the command's own report.
+"""`lac path --g2` and `lac spline` checked independently: every reported segment is solved
+again from its control triangle and alpha by the 30-digit mpmath reference
+(segment_mpmath.py, SPEC §3), and at every joint the reference's curvatures on the two sides
+must agree to 1e-9 (relative), as must the command's own report.
 
     .venv/bin/python -m pytest tools/reference/test_path.py -q      (from the repo root)
 """
@@ -179,3 +179,59 @@ def test_g2_path_inflections_reach_zero_curvature_in_the_reference():
           f"{float(worst_zero):.2e} of the segment's other end; other joints' largest "
           f"jump {float(worst_jump):.2e}")
     assert inflections == 4 + 2 * 2
+
+
+# Point sets with a G2 spline through them for these slopes (turning one way).
+SPLINE_CASES = [
+    ("0,0 2,0.3 3.5,1.5 4,3 3.2,4.6", False, [-1.0, -0.5, 0.0, 0.5, 1.0, 2.0]),
+    ("1,0 0,1.2 -1,0 0,-0.8", True, [-1.0, 0.0, 1.0]),
+    ("0,0 1,0.05 2,0.3 3,0.8 3.8,1.6 4.2,2.6", False, [-0.5, 0.5]),
+]
+
+
+def test_g2_spline_joints_are_continuous_in_the_mpmath_reference():
+    """`lac spline`: every span's segment solved again by the mpmath reference from its
+    reported control triangle; the spans pass through the given points, their tangents are
+    continuous (the triangles' legs at a point are collinear) and so is the reference's
+    curvature, to 1e-9 (relative)."""
+    require("spline")
+    mp.dps = 30
+    checked, worst, worst_self, worst_tangent = 0, mpf(0), mpf(0), mpf(0)
+    for through, closed, alphas in SPLINE_CASES:
+        points = [tuple(map(float, p.split(","))) for p in through.split()]
+        for alpha in alphas:
+            args = [lac_bin(), "spline", "--through", through, "--alpha", str(alpha),
+                    "--samples", "2"] + (["--closed"] if closed else [])
+            run = subprocess.run(args, capture_output=True, text=True, timeout=60)
+            assert run.returncode == 0, run.stderr
+            report = json.loads(run.stdout)
+            spans = report["spans"]
+            assert len(spans) == (len(points) if closed else len(points) - 1)
+            ends, legs = [], []
+            for k, span in enumerate(spans):
+                tri = span["control_points"]
+                assert tuple(tri[0]) == points[k] and tuple(tri[2]) == points[(k + 1) % len(points)]
+                pa, pb, pc = (mpc(*map(mpf, p)) for p in tri)
+                ref = solve_segment(pa, pb, pc, alpha, [0, 1])
+                ends.append((ref["curvature_start"], ref["curvature_end"]))
+                legs.append((pb - pa, pc - pb))
+                for got, want in zip(span["curvature"], (ref["curvature_start"],
+                                                          ref["curvature_end"])):
+                    err = abs(mpf(got) - want) / abs(want)
+                    worst_self = max(worst_self, err)
+                    assert err <= mpf("1e-12"), (got, want)
+            pairs = len(spans) if closed else len(spans) - 1
+            for k in range(pairs):
+                nxt = (k + 1) % len(spans)
+                before, after = ends[k][1], ends[nxt][0]
+                jump = abs(before - after) / max(abs(before), abs(after))
+                assert jump <= JUMP, (through, alpha, k, jump)
+                u, v = legs[k][1], legs[nxt][0]
+                tangent = abs(atan2(u.real * v.imag - u.imag * v.real, (u.conjugate() * v).real))
+                assert tangent <= mpf("1e-12"), (through, alpha, k, tangent)
+                worst, worst_tangent = max(worst, jump), max(worst_tangent, tangent)
+                checked += 1
+    print(f"{checked} spline joints: largest curvature jump in the reference "
+          f"{float(worst):.2e}, tangent mismatch {float(worst_tangent):.2e}; largest "
+          f"end-curvature error of lac {float(worst_self):.2e}")
+    assert checked == 6 * 3 + 3 * 4 + 2 * 4

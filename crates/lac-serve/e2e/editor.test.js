@@ -415,3 +415,90 @@ test('on a narrow touch screen the points drag with a finger', async () => {
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('path: the S-shaped G2 path through an inflection, points dragged, added and removed, G1 offered', async () => {
+  const { page, context, errors } = await openEditor('#mode=path');
+  let s = await editorState(page);
+  assert.equal(s.error, null, JSON.stringify(s.error));
+  assert.equal(s.answer.continuity, 'g2');
+  assert.equal(s.answer.straight_pieces.length, 1, 'one inflection');
+  await shot(page, 'path');
+  // Dragging P3 re-solves the joints: what lac path gives for the same polygon.
+  latency.path = await drag(page, 3, { radius: 20, end: [12, -8] });
+  s = await editorState(page);
+  assert.equal(s.error, null, JSON.stringify(s.error));
+  const cliPath = (d) => lac('path', `--polygon=${d.points.map((p) => p.map(String).join(',')).join(' ')}`,
+    '--alpha', String(d.alpha), ...(d.g2 ? ['--g2'] : []), ...(d.closed ? ['--closed'] : []), '--samples', String(SAMPLES));
+  let cli = cliPath(s.design);
+  assert.equal(s.answer.arc_length, cli.arc_length);
+  assert.deepEqual(s.answer.joints, cli.joints);
+  assert.deepEqual(s.answer.samples, cli.samples);
+  assert.ok(s.answer.max_curvature_jump <= 1e-9);
+  const shownNumbers = await readout(page);
+  assert.equal(shownNumbers.arc_length.text, shown(cli.arc_length));
+  assert.equal(shownNumbers.segments.text, '4');
+  // Add a point (the button: after the last), then Shift+click one onto the first leg.
+  let updates = await page.evaluate(() => window.lacEditor.probe.updates);
+  await page.click('#add-point');
+  await settled(page, updates);
+  s = await editorState(page);
+  assert.equal(s.design.points.length, 7);
+  assert.equal(s.answer.segments.length, 5);
+  const [a, b] = await page.evaluate(() => [window.lacEditor.screenOf(0), window.lacEditor.screenOf(1)]);
+  updates = await page.evaluate(() => window.lacEditor.probe.updates);
+  await page.keyboard.down('Shift');
+  await page.mouse.click((a[0] + b[0]) / 2, (a[1] + b[1]) / 2 + 3);
+  await page.keyboard.up('Shift');
+  await settled(page, updates);
+  s = await editorState(page);
+  assert.equal(s.design.points.length, 8);
+  assert.ok(s.design.points[1][0] > 0.5 && s.design.points[1][0] < 1, JSON.stringify(s.design.points[1]));
+  // Alt+click removes it again; the panel's × removes the last point.
+  const p1 = await page.evaluate(() => window.lacEditor.screenOf(1));
+  updates = await page.evaluate(() => window.lacEditor.probe.updates);
+  await page.keyboard.down('Alt');
+  await page.mouse.click(p1[0], p1[1]);
+  await page.keyboard.up('Alt');
+  await settled(page, updates);
+  updates = await page.evaluate(() => window.lacEditor.probe.updates);
+  await page.click('button[aria-label="remove P6"]');
+  await settled(page, updates);
+  s = await editorState(page);
+  assert.equal(s.design.points.length, 6);
+  cli = cliPath(s.design);
+  assert.deepEqual(s.answer.samples, cli.samples);
+  // α ≥ 0 cannot pass through zero curvature: the library names the leg and the page offers
+  // the G1 path, which it then draws.
+  updates = await page.evaluate(() => window.lacEditor.probe.updates);
+  await page.fill('#param-alpha', '0.5');
+  await settled(page, updates);
+  s = await editorState(page);
+  assert.equal(s.error.kind, 'no_g2_path');
+  assert.match(await page.locator('#message-text').textContent(), /leg P2-P3/);
+  await shot(page, 'path-no-g2');
+  updates = await page.evaluate(() => window.lacEditor.probe.updates);
+  await page.click('#message-fix');
+  await settled(page, updates);
+  s = await editorState(page);
+  assert.equal(s.error, null);
+  assert.equal(s.answer.continuity, 'g1');
+  assert.equal(s.design.g2, false);
+  // The link keeps the polygon; a closed polygon gives a closed path.
+  assert.match(page.url(), /mode=path&points=.*&g2=0&closed=0/);
+  updates = await page.evaluate(() => window.lacEditor.probe.updates);
+  await page.click('#param-closed');
+  await settled(page, updates);
+  s = await editorState(page);
+  assert.equal(s.answer.closed, true);
+  assert.equal(s.answer.segments.length, 6);
+  // And the CAD menu writes the path (G1: curvature jumps at its joints, as drawn).
+  const download = page.waitForEvent('download');
+  await page.selectOption('#export-cad', 'json');
+  const json = JSON.parse(readFileSync(await (await download).path(), 'utf8'));
+  assert.equal(json.kind, 'path');
+  assert.equal(json.continuity, 'G1');
+  assert.ok(json.max_deviation <= 1e-6);
+  await shot(page, 'path-closed-g1');
+  assert.deepEqual(errors, []);
+  await context.close();
+});

@@ -55,6 +55,7 @@ pub fn router_with(limits: Limits) -> Router {
         .route("/api/version", get(api::version))
         .route("/api/segment", post(api::segment))
         .route("/api/compound", post(api::compound))
+        .route("/api/path", post(api::path))
         .route("/api/quasi", post(api::quasi))
         .route("/api/lcg", post(api::lcg))
         .route("/api/region", post(api::region))

@@ -9,7 +9,8 @@ use axum::http::StatusCode;
 use common::{post, send};
 use lac::Curve;
 use lac_io::json::{
-    CompoundInput, CompoundReport, LcgReport, SegmentInput, SegmentReport, SpaceInput, SpaceReport,
+    CompoundInput, CompoundReport, LcgReport, PathInput, PathReport, SegmentInput, SegmentReport,
+    SpaceInput, SpaceReport,
 };
 use serde_json::Value;
 
@@ -784,4 +785,55 @@ async fn export_refusals_are_json_4xx() {
         answer.text
     );
     assert_eq!(answer.kind(), "no_g2_path");
+}
+
+#[tokio::test]
+async fn a_path_answer_is_lac_paths_report_with_each_segments_lcg_line() {
+    // The README's S-shaped G2 path: through an inflection (a straight piece on one leg).
+    let body = r#"{"points":[[0,0],[1.5,0],[3,0.8],[6,3.2],[7.5,4],[9,4]],"alpha":-0.5,"g2":true,"samples":33}"#;
+    let answer = post(&app(), "/api/path", body).await;
+    assert_eq!(answer.status, StatusCode::OK, "{}", answer.text);
+    let input: PathInput = serde_json::from_str(body).unwrap();
+    let path = input.solve().unwrap();
+    let mut expected = serde_json::to_value(PathReport::new(&path, 33).unwrap()).unwrap();
+    let lcg = answer.json["lcg"].as_array().unwrap().clone();
+    let mut got = answer.json.clone();
+    got.as_object_mut().unwrap().remove("lcg");
+    assert_eq!(got, expected.take());
+    assert_eq!(lcg.len(), path.segments().len());
+    for (row, seg) in lcg.iter().zip(path.segments()) {
+        assert_eq!(f(&row["alpha"]), seg.alpha());
+    }
+    assert_eq!(answer.json["straight_pieces"].as_array().unwrap().len(), 1);
+    assert!(f(&answer.json["max_curvature_jump"]) <= 1e-9);
+    // No G2 path (alpha >= 0 cannot pass through zero curvature): 422, naming the leg and
+    // giving the nearest G1 path; that G1 path is drawn.
+    let refused = post(&app(), "/api/path", &body.replace("-0.5", "0.5")).await;
+    assert_eq!(
+        refused.status,
+        StatusCode::UNPROCESSABLE_ENTITY,
+        "{}",
+        refused.text
+    );
+    assert_eq!(refused.kind(), "no_g2_path");
+    assert!(
+        refused.message().contains("nearest G1 path"),
+        "{}",
+        refused.text
+    );
+    let g1 = post(
+        &app(),
+        "/api/path",
+        &body.replace("-0.5", "0.5").replace("true", "false"),
+    )
+    .await;
+    assert_eq!(g1.status, StatusCode::OK, "{}", g1.text);
+    assert_eq!(g1.json["continuity"], "g1");
+    let short = post(
+        &app(),
+        "/api/path",
+        r#"{"points":[[0,0],[1,0]],"alpha":0.5}"#,
+    )
+    .await;
+    assert_eq!(short.status, StatusCode::BAD_REQUEST, "{}", short.text);
 }

@@ -37,6 +37,11 @@ fn templates() -> Vec<(&'static str, Value)> {
             json!({"points": [[0, 0], [2, 0], [2.5, 2], [0, 1.5]], "alpha0": -1, "alpha1": 2}),
         ),
         (
+            "/api/path",
+            json!({"points": [[0, 0], [1.5, 0], [3, 0.8], [6, 3.2], [7.5, 4], [9, 4]],
+                   "alpha": -0.5, "g2": true, "samples": 33}),
+        ),
+        (
             "/api/quasi",
             json!({"points": [[-1, 0], [-0.2, 0.8], [1, 0]], "alpha": 0.5, "tolerance": 1e-4}),
         ),

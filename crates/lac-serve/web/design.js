@@ -6,7 +6,8 @@
 // String(x), the shortest decimal that reads back to the same double, and read with Number(),
 // so a link or a file reproduces a design bit for bit.
 
-/** The editor's modes: endpoint, number of control points, parameters with slider ranges. */
+/** The editor's modes: endpoint, number of control points (`count`, or at least `minCount`
+ * for a path, whose polygon grows and shrinks), parameters with slider ranges. */
 export const MODES = {
   segment: {
     label: 'Segment',
@@ -42,6 +43,24 @@ export const MODES = {
       { key: 'alpha1', label: 'α1', min: -3, max: 3, step: 0.01, hint: 'slope of the second piece' },
     ],
     defaults: { points: [[0, 0], [2, 0], [3, 1], [3.2, 2.4]], alpha0: -1, alpha1: 2 },
+  },
+  path: {
+    label: 'Path',
+    endpoint: '/api/path',
+    dims: 2,
+    count: null,
+    minCount: 3,
+    params: [
+      { key: 'alpha', label: 'α', min: -3, max: 3, step: 0.01,
+        hint: 'slope of every segment; below 0 the path passes through inflections (where the polygon turns the other way)' },
+      { key: 'g2', label: 'G2', boolean: true,
+        hint: 'joints solved for continuous curvature (off: at the legs\' midpoints, G1)' },
+      { key: 'closed', label: 'closed', boolean: true, hint: 'the last point joins the first' },
+    ],
+    defaults: {
+      points: [[0, 0], [1.5, 0], [3, 0.8], [6, 3.2], [7.5, 4], [9, 4]],
+      alpha: -0.5, g2: true, closed: false,
+    },
   },
   quasi: {
     label: 'Quasi-aesthetic',
@@ -79,6 +98,10 @@ export const REGION_CHOICES = ['drag', 'always', 'off'];
 
 /** The display options of a new page. */
 export const DEFAULT_SHOW = { comb: true, evolute: true, polygon: true, region: 'drag' };
+
+/** Whether `n` control points suit mode `m`, and how many it takes, in words. */
+export const countFits = (m, n) => (m.count ? n === m.count : n >= m.minCount);
+export const countWords = (m) => (m.count ? `${m.count}` : `at least ${m.minCount}`);
 
 /** A deep copy of plain data. */
 export const clone = (value) => JSON.parse(JSON.stringify(value));
@@ -128,8 +151,8 @@ export function fromFragment(fragment) {
   const design = clone(m.defaults);
   if (fields.has('points')) {
     const points = fields.get('points').split(';').map((p) => p.split(',').map(Number));
-    if (points.length !== m.count || points.some((p) => p.length !== m.dims || p.some((x) => !Number.isFinite(x)))) {
-      return { error: `the link's points are not ${m.count} points of ${m.dims} numbers` };
+    if (!countFits(m, points.length) || points.some((p) => p.length !== m.dims || p.some((x) => !Number.isFinite(x)))) {
+      return { error: `the link's points are not ${countWords(m)} points of ${m.dims} numbers` };
     }
     design.points = points;
   }
@@ -160,7 +183,7 @@ export function toFile(mode, design, report) {
 }
 
 /** A mode and design from a design file, an API request, or a `lac segment` / `lac compound`
- * report; or {error}. */
+ * report (or a `lac path` result); or {error}. */
 export function fromFile(text) {
   let json;
   try {
@@ -175,6 +198,7 @@ export function fromFile(text) {
   let mode = MODES[json.mode] ? json.mode : null;
   if (!mode) {
     if (dims === 3) mode = 'space';
+    else if ('g2' in json || 'closed' in json || 'segments' in json || json.points.length > 4) mode = 'path';
     else if ('alpha0' in json) mode = json.points.length === 4 ? 'compound4' : 'compound';
     else if ('tolerance' in json) mode = 'quasi';
     else mode = 'segment';
@@ -182,8 +206,8 @@ export function fromFile(text) {
   const m = MODES[mode];
   const design = clone(m.defaults);
   const points = json.points;
-  if (points.length !== m.count || points.some((p) => !Array.isArray(p) || p.length !== m.dims || p.some((x) => typeof x !== 'number'))) {
-    return { error: `a ${m.label.toLowerCase()} takes ${m.count} points of ${m.dims} numbers` };
+  if (!countFits(m, points.length) || points.some((p) => !Array.isArray(p) || p.length !== m.dims || p.some((x) => typeof x !== 'number'))) {
+    return { error: `a ${m.label.toLowerCase()} takes ${countWords(m)} points of ${m.dims} numbers` };
   }
   design.points = points;
   for (const param of m.params) {
@@ -193,6 +217,13 @@ export function fromFile(text) {
       return { error: `"${param.key}" must be ${param.boolean ? 'true or false' : 'a number'}` };
     }
     design[param.key] = value;
+  }
+  // A `lac path` result says its slope per segment and its continuity.
+  if (mode === 'path' && !('alpha' in json) && Array.isArray(json.segments) && json.segments.length) {
+    design.alpha = json.segments[0].alpha;
+  }
+  if (mode === 'path' && !('g2' in json) && typeof json.continuity === 'string') {
+    design.g2 = json.continuity === 'g2';
   }
   return { mode, design };
 }

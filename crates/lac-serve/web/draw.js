@@ -12,6 +12,7 @@ export const COLORS = {
   combEdge: '#3d85c6',
   evolute: '#e69138',
   joint: '#b3261e',
+  line: '#0b8043',
   pieces: ['#0b8043', '#8e24aa'],
   bad: '#d93025',
   drawable: [46, 160, 67, 60],
@@ -136,7 +137,10 @@ function grid(ctx, view, width, height) {
 /**
  * Draw the plane scene:
  * {points, samples, stale, show, combScale, region: {image, size, extent, toWorld} | null,
- *  joint, pieces: [{points, weights, monotone, proven}] | null, pieceSamples, active, hover}.
+ *  joint, joints: [[x, y]] | null, lines: [[[x, y], [x, y]]] | null, closed,
+ *  pieces: [{points, weights, monotone, proven}] | null, pieceSamples, active, hover}.
+ * `joints` are a path's joints (dots), `lines` its straight pieces through inflections, and
+ * `closed` closes its control polygon.
  * `samples` are the last good curve's; `stale` draws them faintly (the input is not drawable).
  */
 export function drawPlane(ctx, view, width, height, scene) {
@@ -218,19 +222,31 @@ export function drawPlane(ctx, view, width, height, scene) {
     });
   }
 
-  if (scene.joint && !scene.stale) {
-    const [x, y] = view.toScreen(scene.joint);
-    ctx.fillStyle = COLORS.joint;
-    ctx.beginPath();
-    ctx.moveTo(x, y - 6); ctx.lineTo(x + 6, y); ctx.lineTo(x, y + 6); ctx.lineTo(x - 6, y);
-    ctx.closePath();
-    ctx.fill();
+  if (scene.lines && !scene.stale) {
+    // A path's straight pieces (the curvature passes through zero there).
+    ctx.strokeStyle = COLORS.line;
+    ctx.lineWidth = 4;
+    ctx.globalAlpha = 0.6;
+    for (const line of scene.lines) polyline(ctx, view, line);
+    ctx.globalAlpha = 1;
+  }
+
+  const joints = scene.joints || (scene.joint ? [scene.joint] : []);
+  if (!scene.stale) {
+    for (const joint of joints) {
+      const [x, y] = view.toScreen(joint);
+      ctx.fillStyle = COLORS.joint;
+      ctx.beginPath();
+      ctx.moveTo(x, y - 6); ctx.lineTo(x + 6, y); ctx.lineTo(x, y + 6); ctx.lineTo(x - 6, y);
+      ctx.closePath();
+      ctx.fill();
+    }
   }
 
   if (show.polygon || scene.stale) {
     ctx.strokeStyle = COLORS.polygon;
     ctx.lineWidth = 1;
-    polyline(ctx, view, scene.points);
+    polyline(ctx, view, scene.closed ? [...scene.points, scene.points[0]] : scene.points);
   }
   scene.points.forEach((p, i) => {
     const [x, y] = view.toScreen(p);

@@ -127,9 +127,13 @@ function samplesOf(answer) {
   return (state.mode === 'quasi' ? answer.curve && answer.curve.samples : answer.samples) || [];
 }
 
-/** The curvature plot of the exact curve in an answer. */
+/** The curvature plot of the exact curve in an answer (a path's: its samples' κ; its
+ * graph is one line per segment, `answer.lcg`). */
 function plotOf(answer) {
   if (!answer) return null;
+  if (state.mode === 'path') {
+    return { points: answer.samples.map((r) => ({ s: r.s, kappa: r.kappa, log_rho: null, log_lcg: null })), fit: null };
+  }
   return state.mode === 'quasi' ? answer.curve.plot : answer.plot;
 }
 
@@ -138,7 +142,7 @@ function plotOf(answer) {
 // the current ends, or (four-point compound curves) the map of the dragged point.
 
 function regionWanted() {
-  if (state.mode === 'space' || state.show.region === 'off') return false;
+  if (state.mode === 'space' || state.mode === 'path' || state.show.region === 'off') return false;
   // While dragging, always if asked, and whenever the input is not drawable: it shows where
   // to move the point.
   const undrawable = state.error !== null && state.error.kind === 'not_drawable';
@@ -240,6 +244,9 @@ function renderPlane() {
     combScale: state.combScale,
     region,
     joint: a && a.joint ? a.joint : null,
+    joints: state.mode === 'path' && a ? a.joints.map((j) => j.point) : null,
+    lines: state.mode === 'path' && a ? a.straight_pieces.map((l) => l.points) : null,
+    closed: state.mode === 'path' && d.closed,
     pieces: state.mode === 'quasi' && a ? a.pieces : null,
     pieceSamples: state.mode === 'quasi' && a ? a.piece_samples : null,
     active: state.drag ? state.drag.index : null,
@@ -279,6 +286,16 @@ function renderMessage() {
   let text = problem.message.replace(/^not drawable: /, '');
   if (state.error && state.answer) text += ' (the last good curve is drawn faintly).';
   $('message-text').textContent = text;
+  if (state.error && state.error.kind === 'no_g2_path' && state.mode === 'path') {
+    fix.hidden = false;
+    fix.textContent = 'Use the G1 path';
+    fix.onclick = () => {
+      design().g2 = false;
+      syncPanel();
+      commit();
+      solve();
+    };
+  }
   if (state.error && typeof state.error.omega_max === 'number') {
     const omega = state.error.omega_max;
     fix.hidden = false;
@@ -315,6 +332,15 @@ function renderReadout() {
         add('ν', 'nu', a.standard_form.nu);
       }
       add('planar', 'planar', a.planar ? 1 : 0, a.planar ? 'yes (coplanar points)' : 'no');
+    } else if (state.mode === 'path') {
+      add('arc length', 'arc_length', a.arc_length);
+      add('segments', 'segments', a.segments.length, String(a.segments.length));
+      add('continuity', 'continuity', a.continuity, a.continuity.toUpperCase());
+      add('max κ jump', 'max_curvature_jump', a.max_curvature_jump, a.max_curvature_jump.toExponential(2));
+      const lines = a.straight_pieces.length;
+      add('inflections', 'inflections', lines, lines ? `${lines} (straight piece${lines > 1 ? 's' : ''} at κ = 0)` : 'none');
+      add('κ start', 'curvature_start', a.samples[0].kappa);
+      add('κ end', 'curvature_end', a.samples[a.samples.length - 1].kappa);
     } else {
       add('arc length', 'arc_length', c.arc_length);
       add('κ start', 'curvature_start', c.curvature_start);
@@ -428,7 +454,15 @@ function renderPlots() {
   const series = [];
   const graph = [];
   const vlines = [];
-  if (plot) {
+  if (plot && state.mode === 'path') {
+    series.push({ points: plot.points.map((p) => [p.s, p.kappa]), color: '#1f4e9c', label: '' });
+    for (const j of a.joints) vlines.push({ x: j.s });
+    a.lcg.forEach((row, k) => {
+      if (!row) return;
+      const { alpha, intercept, log_rho: [x0, x1] } = row;
+      graph.push({ points: [[x0, alpha * x0 + intercept], [x1, alpha * x1 + intercept]], color: k % 2 ? '#e69138' : '#1f4e9c', width: 2, label: '' });
+    });
+  } else if (plot) {
     series.push({ points: plot.points.map((p) => [p.s, p.kappa]), color: '#1f4e9c', label: state.mode === 'quasi' ? 'exact curve' : '' });
     graph.push({ points: plot.points.map((p) => [p.log_rho ?? NaN, p.log_lcg ?? NaN]), color: '#1f4e9c', label: state.mode === 'quasi' ? 'exact curve' : '' });
     const line = ({ alpha, intercept, log_rho: [x0, x1] }, label) => ({
@@ -458,13 +492,14 @@ function renderPlots() {
   });
   const fit = plot && plot.fit;
   let title = 'logarithmic curvature graph';
-  if (a && a.lcg) title = `LCG: slopes ${a.lcg.map((r) => (r ? fmt(r.alpha) : 'circle')).join(' then ')}`;
+  if (a && state.mode === 'path') title = `LCG: one line per segment, slopes ${[...new Set(a.segments.map((g) => fmt(g.alpha)))].join(', ')}`;
+  else if (a && a.lcg) title = `LCG: slopes ${a.lcg.map((r) => (r ? fmt(r.alpha) : 'circle')).join(' then ')}`;
   else if (fit) title = `logarithmic curvature graph: fitted slope α = ${fmt(fit.alpha)}`;
   linePlot($('lcg'), {
     title,
     xlabel: 'ln ρ', ylabel: 'ln(ρ ds/dρ)', series: graph,
     marker: hoverRow && hoverRow.log_rho !== null ? [hoverRow.log_rho, hoverRow.log_lcg] : null,
-    empty: plot ? 'the curvature is constant (a circle): no graph' : 'not drawable',
+    empty: plot ? 'the curvature is constant (circular arcs): no graph' : 'not drawable',
   });
 }
 
@@ -568,8 +603,38 @@ function buildPanel() {
       field.addEventListener('change', () => commit());
       row.append(field);
     });
+    if (!m.count) {
+      const remove = document.createElement('button');
+      remove.type = 'button';
+      remove.className = 'remove';
+      remove.textContent = '×';
+      remove.title = `Remove P${i} (Alt+click it on the drawing)`;
+      remove.setAttribute('aria-label', `remove P${i}`);
+      remove.disabled = design().points.length <= m.minCount;
+      remove.addEventListener('click', () => removePoint(i));
+      row.append(remove);
+    }
     return row;
   });
+  if (!m.count) {
+    const add = document.createElement('button');
+    add.type = 'button';
+    add.id = 'add-point';
+    add.textContent = 'Add point';
+    add.title = 'Add a point after the last one (or Shift+click the drawing: a point on the nearest leg)';
+    add.addEventListener('click', () => {
+      // The last leg again, turned as the polygon turned at its last vertex (a point
+      // straight ahead would make that vertex collinear: no segment there).
+      const pts = design().points;
+      const [o, a, b] = pts.slice(-3);
+      const turn = Math.atan2(b[1] - a[1], b[0] - a[0]) - Math.atan2(a[1] - o[1], a[0] - o[0]);
+      const angle = Math.atan2(Math.sin(turn), Math.cos(turn)) || 0.5;
+      const [dx, dy] = [b[0] - a[0], b[1] - a[1]];
+      const [c, sn] = [Math.cos(angle), Math.sin(angle)];
+      insertPoint(pts.length, [roundToView(b[0] + c * dx - sn * dy), roundToView(b[1] + sn * dx + c * dy)]);
+    });
+    rows.push(add);
+  }
   points.replaceChildren(points.querySelector('legend'), ...rows);
   for (const button of $('modes').children) button.setAttribute('aria-pressed', String(button.dataset.mode === state.mode));
   $('plane').hidden = state.mode === 'space';
@@ -643,6 +708,57 @@ function enterMode() {
   state.fitPending = true;
   buildPanel();
   fitView();
+}
+
+/** A path's polygon grows: `point` becomes P`index`. */
+function insertPoint(index, point) {
+  design().points.splice(index, 0, point);
+  state.selected = index;
+  buildPanel();
+  commit();
+  solve();
+  render();
+}
+
+/** A path's polygon shrinks (never below its minimum). */
+function removePoint(index) {
+  const m = MODES[state.mode];
+  const pts = design().points;
+  if (m.count || pts.length <= m.minCount) return;
+  pts.splice(index, 1);
+  state.selected = Math.min(state.selected, pts.length - 1);
+  buildPanel();
+  commit();
+  solve();
+  render();
+}
+
+/** Where a point clicked at world position `p` goes in a path's polygon: after the vertex
+ * that starts the nearest leg (the closing leg too when closed). */
+function insertionIndex(p) {
+  const pts = design().points;
+  const legs = design().closed ? pts.length : pts.length - 1;
+  let best = pts.length;
+  let bestDistance = Infinity;
+  for (let i = 0; i < legs; i++) {
+    const a = pts[i];
+    const b = pts[(i + 1) % pts.length];
+    const [dx, dy] = [b[0] - a[0], b[1] - a[1]];
+    const t = Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (dx * dx + dy * dy || 1)));
+    const d = Math.hypot(a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = i + 1;
+    }
+  }
+  // Beyond an open polygon's ends: a new first or last point.
+  if (!design().closed) {
+    const dFirst = Math.hypot(pts[0][0] - p[0], pts[0][1] - p[1]);
+    const dLast = Math.hypot(pts[pts.length - 1][0] - p[0], pts[pts.length - 1][1] - p[1]);
+    if (best === 1 && dFirst <= bestDistance + 1e-12) return 0;
+    if (best === pts.length - 1 && dLast <= bestDistance + 1e-12) return pts.length;
+  }
+  return best;
 }
 
 function fitView() {
@@ -745,6 +861,23 @@ function showHover(found, clientX, clientY) {
 canvas.addEventListener('pointerdown', (e) => {
   canvas.setPointerCapture(e.pointerId);
   const index = hit(e.offsetX, e.offsetY, e.pointerType === 'touch' ? 24 : 12);
+  if (!MODES[state.mode].count) {
+    // A path: Alt+click removes a point, Shift+click adds one on the nearest leg.
+    if (index !== null && e.altKey) {
+      removePoint(index);
+      e.preventDefault();
+      return;
+    }
+    if (index === null && e.shiftKey) {
+      const [x, y] = view.toWorld([e.offsetX, e.offsetY]);
+      const p = [roundToView(x), roundToView(y)];
+      const at = insertionIndex(p);
+      insertPoint(at, p);
+      state.drag = { index: at, pointerId: e.pointerId };
+      e.preventDefault();
+      return;
+    }
+  }
   if (index !== null) {
     state.drag = { index, pointerId: e.pointerId };
     state.selected = index;

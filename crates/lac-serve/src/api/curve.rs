@@ -1,10 +1,10 @@
-//! `/api/segment`, `/api/compound` and `/api/lcg`: a curve solved and sampled, with its
-//! curvature plot and logarithmic curvature graph.
+//! `/api/segment`, `/api/compound`, `/api/path` and `/api/lcg`: a curve solved and sampled,
+//! with its curvature plot and logarithmic curvature graph.
 
 use lac::Curve;
 use lac_io::json::{
-    parse, to_line, CompoundInput, CompoundReport, LcgReport, PiecesInput, Report, SegmentInput,
-    SegmentReport,
+    parse, to_line, CompoundInput, CompoundReport, LcgReport, LcgRow, PathInput, PathReport,
+    PiecesInput, Report, SegmentInput, SegmentReport,
 };
 use serde::Serialize;
 
@@ -64,6 +64,34 @@ pub(crate) fn compound(app: &App, text: &str) -> Result<String, ApiError> {
     let request: WithSamples<CompoundInput> = parse(text, CompoundInput::SHAPE)?;
     let n = app.limits.samples(request.samples)?;
     Ok(to_line(&compound_answer(&request.input, n)?))
+}
+
+/// A path's report with each segment's line of the logarithmic curvature graph (null for a
+/// circular arc): `{…lac path's report…, "lcg":[…]}`.
+#[derive(Debug, Serialize)]
+pub(crate) struct PathAnswer {
+    /// The report, as `lac path` prints it.
+    #[serde(flatten)]
+    pub(crate) report: PathReport,
+    /// Each segment's line ln(ρ ds/dρ) = α ln ρ + c over its range of ln ρ.
+    pub(crate) lcg: Vec<Option<LcgRow>>,
+}
+
+/// `POST /api/path`: `{"points":[[x,y],…],"alpha":A (or "alphas":[…]),"g2":true,
+/// "closed":false,"samples":N}` (a G1 path may give `"fractions"`).
+pub(crate) fn path(app: &App, text: &str) -> Result<String, ApiError> {
+    let request: WithSamples<PathInput> = parse(text, PathInput::SHAPE)?;
+    let n = app.limits.samples(request.samples)?;
+    let path = request.input.solve()?;
+    let answer = PathAnswer {
+        report: PathReport::new(&path, n)?,
+        lcg: path
+            .segments()
+            .iter()
+            .map(|s| s.lcg().map(LcgRow::from))
+            .collect(),
+    };
+    Ok(to_line(&answer))
 }
 
 /// The shapes `/api/lcg` reads, for error messages.

@@ -108,6 +108,11 @@ pub(crate) async fn compound(State(app): State<Arc<App>>, request: Request) -> R
     answer(app, request, curve::compound).await
 }
 
+/// `POST /api/path`.
+pub(crate) async fn path(State(app): State<Arc<App>>, request: Request) -> Response {
+    answer(app, request, curve::path).await
+}
+
 /// `POST /api/quasi`.
 pub(crate) async fn quasi(State(app): State<Arc<App>>, request: Request) -> Response {
     answer(app, request, quasi::quasi).await

@@ -141,8 +141,9 @@ impl CompoundCurve {
                 expected: "coordinates whose differences do not overflow",
             });
         }
-        // Angles only: legs and chord scaled (exactly) to magnitudes near 1.
-        let [l0, l1, l2, chord] = normalized([legs[0], legs[1], legs[2], chord]);
+        // Angles only: legs and chord each scaled (exactly) to a magnitude near 1 (one scale
+        // for all would leave the products of legs 1e-160 of the chord subnormal).
+        let [l0, l1, l2, chord] = [legs[0], legs[1], legs[2], chord].map(|w| normalized([w])[0]);
         let legs = [l0, l1, l2];
         let turn = |a: Vec2, b: Vec2| a.cross(b).atan2(a.dot(b));
         let (t0, t1) = (turn(legs[0], legs[1]), turn(legs[1], legs[2]));

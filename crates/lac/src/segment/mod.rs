@@ -88,9 +88,11 @@ pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
             expected: "coordinates whose differences do not overflow",
         });
     }
-    // Angles only: scale the legs by a power of two (exactly) to magnitudes near 1, so that
-    // cross and dot products neither underflow (coordinates ~1e-160) nor overflow (~1e+160).
-    let [u, v, c] = normalized([u, v, c]);
+    // Angles only: scale each vector by its own power of two (exactly) to a magnitude near
+    // 1, so that cross and dot products neither underflow nor overflow, whatever the
+    // coordinates (~1e-160 or ~1e+160) and however unlike the legs (1 against 1e+160: one
+    // scale for all would leave products of the short ones subnormal, a few digits).
+    let [u, v, c] = [u, v, c].map(|w| normalized([w])[0]);
     let cross = u.cross(v);
     let turning = cross.abs().atan2(u.dot(v));
     if !(turning > 1e-13 && turning < std::f64::consts::PI - 1e-13) {

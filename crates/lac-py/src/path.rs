@@ -102,21 +102,13 @@ impl PyPath {
     /// Each segment's control triangle (start joint, vertex, end joint), shape (k, 3, 2).
     #[getter]
     fn control_triangles<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray3<f64>>> {
-        let t = self.0.control_triangles();
-        let flat: Vec<f64> = t.iter().flatten().flat_map(|p| [p.x, p.y]).collect();
-        blocks(py, flat, (t.len(), 3, 2))
+        triangles(py, &self.0.control_triangles())
     }
 
     /// Each segment's signed curvature at its start and end, shape (k, 2).
     #[getter]
     fn end_curvatures<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        use lac::Curve;
-        let ends = self
-            .0
-            .segments()
-            .iter()
-            .map(|s| kurbo::Point::new(s.curvature_start(), s.curvature_end()));
-        points2(py, ends.collect::<Vec<_>>().into_iter())
+        end_curvatures(py, self.0.segments())
     }
 
     /// The straight pieces on inflection legs: (leg, start point, end point) each.
@@ -206,21 +198,14 @@ impl PySpline {
     /// tangents, its last point), shape (k, 3, 2).
     #[getter]
     fn control_triangles<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray3<f64>>> {
-        let t = self.0.control_triangles();
-        let flat: Vec<f64> = t.iter().flatten().flat_map(|p| [p.x, p.y]).collect();
-        blocks(py, flat, (t.len(), 3, 2))
+        triangles(py, self.0.control_triangles())
     }
 
     /// Each span's signed curvature at its start and end, shape (k, 2).
     #[getter]
     fn end_curvatures<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
         use lac::Curve;
-        let ends = self
-            .0
-            .pieces()
-            .iter()
-            .map(|s| kurbo::Point::new(s.curvature_start(), s.curvature_end()));
-        points2(py, ends.collect::<Vec<_>>().into_iter())
+        end_curvatures(py, self.0.pieces())
     }
 
     /// The relative curvature jump at each joint (the interior points; every point when
@@ -243,6 +228,24 @@ impl PySpline {
             .map_err(|_| invalid(py, format!("n must be at least 2, got {n}")))?;
         Ok(Samples(self.0.sample_by_arc_length(n).or_raise(py)?))
     }
+}
+
+/// Control triangles as a (k, 3, 2) array.
+fn triangles<'py>(py: Python<'py>, t: &[[kurbo::Point; 3]]) -> PyResult<Bound<'py, PyArray3<f64>>> {
+    let flat: Vec<f64> = t.iter().flatten().flat_map(|p| [p.x, p.y]).collect();
+    blocks(py, flat, (t.len(), 3, 2))
+}
+
+/// Each segment's signed curvature at its start and end, as a (k, 2) array.
+fn end_curvatures<'py>(
+    py: Python<'py>,
+    segments: &[lac::Segment],
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    use lac::Curve;
+    let ends = segments
+        .iter()
+        .map(|s| kurbo::Point::new(s.curvature_start(), s.curvature_end()));
+    points2(py, ends.collect::<Vec<_>>().into_iter())
 }
 
 /// An (n, 2) array or a sequence of (x, y) pairs as points.

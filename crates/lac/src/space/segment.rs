@@ -588,7 +588,7 @@ fn planar(points: [Vec3; 4], alpha: f64, theta2: f64) -> Result<Solved> {
     let [p0, p1, p2, p3] = points;
     let e1 = (p1 - p0).normalize();
     let chord = p3 - p0;
-    let e2 = (chord - chord.dot(e1) * e1).normalize();
+    let e2 = perpendicular(chord, e1);
     let to2 = |p: Vec3| Point::new((p - p0).dot(e1), (p - p0).dot(e2));
     // The last leg projected as a difference (exact for nearby points), not as the
     // difference of two projections: those cancel, and a leg 1e-12 of the coordinates long
@@ -675,7 +675,7 @@ fn solve_space(
     let mirror_z = (shot.theta2 < 0.0) != (theta2 < 0.0);
     // Rotation taking e1 to t0 and the standard-form chord to the caller's.
     let frame_of = |axis: Vec3, towards: Vec3| {
-        let w = (towards - towards.dot(axis) * axis).normalize();
+        let w = perpendicular(towards, axis);
         Mat3::from_columns(axis, w, axis.cross(w))
     };
     let standard = frame_of(Vec3::X, mirror(shot.end.x, mirror_z));
@@ -694,6 +694,15 @@ fn solve_space(
         transform,
         checkpoints: shot.checkpoints,
     })
+}
+
+/// The unit vector along the part of `v` perpendicular to the unit vector `axis`, by
+/// Gram–Schmidt twice: when `v` lies within ~1e-11 rad of `axis` (a start tangent nearly
+/// along the chord) one pass leaves it off-perpendicular by ε/angle, ~1e-6, and the frame
+/// built on it skewed; the second pass makes it perpendicular to rounding.
+fn perpendicular(v: Vec3, axis: Vec3) -> Vec3 {
+    let w = v - v.dot(axis) * axis;
+    (w - w.dot(axis) * axis).normalize()
 }
 
 /// `x` with `m x = b` (Cramer's rule); `None` when `m` is singular.

@@ -2,14 +2,16 @@
 //! input line out, in input order.
 //!
 //! A reader thread reads the input in chunks of whole lines into one buffer per chunk (no
-//! allocation per line) and hands them over through a channel of two chunks; this thread
-//! solves each chunk on rayon's pool, in slices of a few lines whose answers are written
-//! straight into one output buffer per slice, and writes the slices in input order. A chunk
-//! ends at [`chunk_lines`] lines, at [`CHUNK_BYTES`] bytes, or as soon as no more input is
-//! waiting (so answers stream out as the lines come in, one by one if they come slowly),
-//! and the output is flushed whenever no chunk is waiting: at most three chunks are in
-//! flight, so memory stays bounded however long the input. A line longer than the limit is
-//! not kept: it is skipped to its end and answered with a `limit` error.
+//! allocation per line) and hands them over through a channel of two chunks; a solving
+//! thread solves each chunk on rayon's pool, in slices of a few lines whose answers are
+//! written straight into one output buffer per slice (sized from the answers so far), and
+//! hands the slices over (waiting until they are taken); this thread writes them in input
+//! order, while the next chunk is being solved. A chunk ends at [`chunk_lines`] lines, at
+//! [`CHUNK_BYTES`] bytes, or as soon as no more input is waiting (so answers stream out as
+//! the lines come in, one by one if they come slowly), and the output is flushed whenever
+//! no answers are waiting: at most six chunks are in flight, so memory stays bounded
+//! however long the input. A line longer than the limit is not kept: it is skipped to its
+//! end and answered with a `limit` error.
 //!
 //! A line that fails (bad JSON, a blank line, a curve that does not exist, even a defect that
 //! panics) gives `{"error":{"kind":…,"message":"line N: …"}}` in its place, so the output can
@@ -20,6 +22,7 @@ use std::fs::File;
 use std::io::{self, BufRead, BufReader, BufWriter, Read, Write};
 use std::ops::Range;
 use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc::{self, TryRecvError};
 use std::sync::Arc;
 
@@ -60,7 +63,7 @@ where
 }
 
 /// Most lines in one chunk.
-const MAX_CHUNK_LINES: usize = 1024;
+const MAX_CHUNK_LINES: usize = 4096;
 /// A chunk ends once its lines hold this many bytes.
 const CHUNK_BYTES: usize = 1 << 22;
 /// Lines solved one after the other by one task, into one output buffer.
@@ -181,7 +184,8 @@ impl Tally {
     }
 }
 
-/// The reader thread, the pool and the ordered writing; see the module documentation.
+/// The reader thread, the solving thread with its pool, and the ordered writing on this
+/// thread; see the module documentation.
 fn stream(
     reader: Input,
     out: &mut dyn Write,
@@ -192,34 +196,66 @@ fn stream(
 ) -> io::Result<()> {
     let chunk = chunk.max(1);
     let (chunks, inbox) = mpsc::sync_channel::<Message>(2);
-    // Detached: if the writer stops early (a closed pipe), the process ends without
+    let (answers, outbox) = mpsc::sync_channel::<Answered>(0);
+    // Both detached: if the writer stops early (a closed pipe), the process ends without
     // waiting for a reader blocked on its input.
     std::thread::spawn(move || read_chunks(reader, max_line, chunk, chunks));
+    // Solving the next chunk while this thread writes the last one keeps the cores busy.
+    std::thread::spawn(move || solve_chunks(&inbox, max_line, &*solve, &answers));
     loop {
-        let message = match inbox.try_recv() {
-            Ok(message) => message,
+        let answered = match outbox.try_recv() {
+            Ok(answered) => answered,
             Err(TryRecvError::Empty) => {
                 // Nothing more to write for now: let the reader of our output see it.
                 out.flush()?;
-                match inbox.recv() {
-                    Ok(message) => message,
+                match outbox.recv() {
+                    Ok(answered) => answered,
                     Err(_) => return Ok(()), // the input has ended
                 }
             }
             Err(TryRecvError::Disconnected) => return Ok(()),
         };
-        match message {
-            Message::Lines(chunk) => {
-                let solved = solve_chunk(&chunk, max_line, &*solve);
+        match answered {
+            Answered::Slices(solved) => {
                 for slice in solved {
                     out.write_all(&slice.bytes)?;
                     tally.record(slice.lines, slice.failed);
                 }
             }
-            Message::ReadFailed(e) => {
+            Answered::ReadFailed(e) => {
                 let body = errors::io("read the batch input", None, &e);
                 return Err(io::Error::other(body));
             }
+        }
+    }
+}
+
+/// What the solving thread hands over.
+enum Answered {
+    /// A chunk's answers, in order.
+    Slices(Vec<Slice>),
+    /// Reading failed (after the chunks answered before).
+    ReadFailed(io::Error),
+}
+
+/// Solve each chunk from `inbox` on rayon's pool and send its answers, until the input
+/// ends or the writer stops.
+fn solve_chunks(
+    inbox: &mpsc::Receiver<Message>,
+    max_line: usize,
+    solve: &SolveFn,
+    answers: &mpsc::SyncSender<Answered>,
+) {
+    let line_bytes = LineBytes::default();
+    while let Ok(message) = inbox.recv() {
+        let answered = match message {
+            Message::Lines(chunk) => {
+                Answered::Slices(solve_chunk(&chunk, max_line, solve, &line_bytes))
+            }
+            Message::ReadFailed(e) => Answered::ReadFailed(e),
+        };
+        if answers.send(answered).is_err() {
+            return; // the writer has stopped
         }
     }
 }
@@ -267,8 +303,35 @@ fn read_chunks(
     }
 }
 
+/// How long the answer lines have been, so that each slice's buffer is made large enough
+/// at once (growing it by doubling copied each answer about twice).
+struct LineBytes(AtomicUsize);
+
+impl Default for LineBytes {
+    fn default() -> Self {
+        LineBytes(AtomicUsize::new(256))
+    }
+}
+
+impl LineBytes {
+    /// Room for `lines` answers like the longest seen so far (up to 64 KiB a line).
+    fn room(&self, lines: usize) -> usize {
+        self.0.load(Ordering::Relaxed).min(1 << 16) * lines
+    }
+
+    fn saw(&self, slice: &Slice) {
+        let per_line = slice.bytes.len() / slice.lines.max(1) + 16;
+        self.0.fetch_max(per_line, Ordering::Relaxed);
+    }
+}
+
 /// The answers to a chunk's lines, in slices of consecutive lines, in order.
-fn solve_chunk(chunk: &Chunk, max_line: usize, solve: &SolveFn) -> Vec<Slice> {
+fn solve_chunk(
+    chunk: &Chunk,
+    max_line: usize,
+    solve: &SolveFn,
+    line_bytes: &LineBytes,
+) -> Vec<Slice> {
     // Slices small enough that every thread gets several, for balance.
     let threads = rayon::current_num_threads().max(1);
     let slice = (chunk.lines.len() / (4 * threads)).clamp(1, SLICE_LINES);
@@ -281,7 +344,7 @@ fn solve_chunk(chunk: &Chunk, max_line: usize, solve: &SolveFn) -> Vec<Slice> {
     slices
         .into_par_iter()
         .map(|(first, lines)| {
-            let mut out = Vec::with_capacity(256 * lines.len());
+            let mut out = Vec::with_capacity(line_bytes.room(lines.len()));
             let mut failed = Vec::new();
             for (k, line) in lines.iter().enumerate() {
                 if let Err(err) =
@@ -292,11 +355,13 @@ fn solve_chunk(chunk: &Chunk, max_line: usize, solve: &SolveFn) -> Vec<Slice> {
                 }
                 out.push(b'\n');
             }
-            Slice {
+            let slice = Slice {
                 bytes: out,
                 lines: lines.len(),
                 failed,
-            }
+            };
+            line_bytes.saw(&slice);
+            slice
         })
         .collect()
 }

@@ -69,8 +69,8 @@ pub(crate) struct ChordAngle {
     /// Built on first use: the series path never needs them.
     nodes: [OnceCell<NodeCache>; 2],
     /// For a single clothoid piece (α = −1, θ ∈ [0, θd], θd ≥ `CLOTHOID_MIN_TURN`): e^{iθd},
-    /// for the closed form of [`ChordAngle::eval_clothoid`].
-    clothoid: Option<Complex>,
+    /// and e^{−iθe}, for the closed form of [`ChordAngle::eval_clothoid`].
+    clothoid: Option<(Complex, Complex)>,
 }
 
 struct Eval {
@@ -102,7 +102,7 @@ impl ChordAngle {
             d: bound[0].max(bound[1]),
             nodes: [OnceCell::new(), OnceCell::new()],
             clothoid: (alpha == [-1.0, -1.0] && theta[0] == 0.0 && theta[1] >= CLOTHOID_MIN_TURN)
-                .then(|| Complex::cis(theta[1])),
+                .then(|| (Complex::cis(theta[1]), Complex::cis(theta_e).conj())),
         }
     }
 
@@ -194,7 +194,7 @@ impl ChordAngle {
     /// closed form would lose precision (near the circle), for the general path.
     #[inline]
     fn eval_clothoid(&self, mu: f64) -> Option<Eval> {
-        let end_dir = self.clothoid?;
+        let (end_dir, unturn) = self.clothoid?;
         let theta_d = self.theta[1];
         let kappa = (-mu).exp(); // at the far end
         let w = kappa * kappa; // ρ^(α−1)
@@ -238,9 +238,11 @@ impl ChordAngle {
             end,
             chord: p,
         };
-        let phi = p.arg().rem_euclid(std::f64::consts::TAU);
+        // φ − θe: the chord angle φ and θe both lie in [θd/2, θd) ⊂ [0, π) (the shorter
+        // leg first), so this is the argument of P e^{−iθe}, taken without atan2 near the
+        // root.
         Some(Eval {
-            g: phi - self.theta_e,
+            g: (p * unturn).arg_near_zero(),
             slope: integral.d_lambda.div(p).im * w / theta_d,
             pieces: Pieces {
                 parts: [start, piece],
@@ -257,7 +259,8 @@ impl ChordAngle {
         // e^{iψ} at the three places the antiderivatives are taken (each once).
         let (ea, eb) = (
             Complex::cis(a),
-            self.clothoid.unwrap_or_else(|| Complex::cis(b)),
+            self.clothoid
+                .map_or_else(|| Complex::cis(b), |(end_dir, _)| end_dir),
         );
         let cis = |x: f64| {
             if x == 0.0 {

@@ -10,7 +10,9 @@ use crate::curve::{locate, Curve};
 use crate::error::{finite, Error, NotDrawable, Result};
 use crate::lcg::LcgLine;
 use crate::numeric::Complex;
-use crate::segment::{check_alpha, control_triangle, normalized, Placement, Segment, Travel};
+use crate::segment::{
+    check_alpha, control_triangle, finite_length, normalized, Placement, Segment, Travel,
+};
 use crate::turn::Turn;
 
 /// A compound-rhythm log-aesthetic curve: a piece of slope α0 from the first control point
@@ -130,11 +132,7 @@ impl CompoundCurve {
             points[3] - points[2],
         ];
         let chord = points[3] - points[0];
-        if !legs
-            .iter()
-            .chain([&chord])
-            .all(|v| v.x.hypot(v.y).is_finite())
-        {
+        if !legs.into_iter().chain([chord]).all(finite_length) {
             return Err(Error::OutOfRange {
                 name: "control points",
                 value: f64::INFINITY,
@@ -143,7 +141,7 @@ impl CompoundCurve {
         }
         // Angles only: legs and chord each scaled (exactly) to a magnitude near 1 (one scale
         // for all would leave the products of legs 1e-160 of the chord subnormal).
-        let [l0, l1, l2, chord] = [legs[0], legs[1], legs[2], chord].map(|w| normalized([w])[0]);
+        let [l0, l1, l2, chord] = [legs[0], legs[1], legs[2], chord].map(normalized);
         let legs = [l0, l1, l2];
         let turn = |a: Vec2, b: Vec2| a.cross(b).atan2(a.dot(b));
         let (t0, t1) = (turn(legs[0], legs[1]), turn(legs[1], legs[2]));

@@ -126,9 +126,18 @@ pub trait Curve {
         check_count(n)?;
         let len = self.arc_length();
         let step = len / (n - 1) as f64;
-        let at: Vec<f64> = (0..n)
-            .map(|i| if i == n - 1 { len } else { i as f64 * step })
-            .collect();
+        let at = (0..n).map(|i| if i == n - 1 { len } else { i as f64 * step });
+        if let [piece] = self.pieces() {
+            // What `by_piece` does for one piece, without its copies.
+            let length = piece.length();
+            let local: Vec<f64> = at.map(|s| local_s(s, 0.0, length, length)).collect();
+            let mut samples = piece.samples_at_local(&local)?;
+            for sample in &mut samples {
+                sample.s += 0.0; // (as by_piece adds the piece's start: no −0)
+            }
+            return Ok(samples);
+        }
+        let at: Vec<f64> = at.collect();
         Ok(by_piece(self.pieces(), &at)?
             .into_iter()
             .map(|(_, s)| s)

@@ -29,19 +29,51 @@ pub(crate) struct Triangle {
     pub(crate) theta_e: f64,
 }
 
-/// The vectors scaled by one power of two (exact) so that the largest component is in
-/// [1, 2): products of them then neither underflow nor overflow.
-pub(crate) fn normalized<const N: usize>(vectors: [Vec2; N]) -> [Vec2; N] {
-    let largest = vectors
-        .iter()
-        .fold(0.0f64, |m, v| m.max(v.x.abs()).max(v.y.abs()));
+/// The vector scaled by a power of two (exactly) so that the cross and dot products of two
+/// such vectors neither overflow nor lose digits to underflow: unchanged when its largest
+/// component is within 2^±[`SAFE_EXPONENT`] already (the usual case), else scaled to a
+/// largest component in [1, 2).
+pub(crate) fn normalized(w: Vec2) -> Vec2 {
+    let largest = w.x.abs().max(w.y.abs());
     if !(largest.is_finite() && largest > 0.0) {
-        return vectors;
+        return w;
     }
-    // 2^(−k) applied in two halves, each representable even for k near ±1074.
-    let k = largest.log2().floor() as i32;
-    let (h1, h2) = (2f64.powi(-(k / 2)), 2f64.powi(-(k - k / 2)));
-    vectors.map(|v| (v * h1) * h2)
+    let k = if largest >= f64::MIN_POSITIVE {
+        // The exponent of a normal number, from its bits.
+        ((largest.to_bits() >> 52) as i32) - 1023
+    } else {
+        largest.log2().floor() as i32
+    };
+    if k.abs() <= SAFE_EXPONENT {
+        return w;
+    }
+    // 2^(−k) applied in two halves, each a normal number even for k near ±1074.
+    let power = |e: i32| f64::from_bits(((1023 + e) as u64) << 52);
+    (w * power(-(k / 2))) * power(-(k - k / 2))
+}
+
+/// Vectors whose largest component lies within 2^±`SAFE_EXPONENT` multiply without
+/// overflow, and the product of their largest components is at least 2^−800: a term that
+/// underflows (below 2^−1022) is then under 2^−222 of it, far below rounding.
+const SAFE_EXPONENT: i32 = 400;
+
+/// Is the length of `w` finite? (Its components may be finite while it overflows.)
+pub(crate) fn finite_length(w: Vec2) -> bool {
+    let largest = w.x.abs().max(w.y.abs());
+    // Below 1e300 the length is at most √2 × 1e300; std's hypot only beyond (kurbo's
+    // squares the components, which overflows from 1e154 on).
+    largest < 1e300 || (largest.is_finite() && w.x.hypot(w.y).is_finite())
+}
+
+/// Is `u` longer than `v`? (Both of finite length.)
+fn longer(u: Vec2, v: Vec2) -> bool {
+    let largest = u.x.abs().max(u.y.abs()).max(v.x.abs()).max(v.y.abs());
+    if (1e-140..1e140).contains(&largest) {
+        // No square underflows to nothing that matters, none overflows.
+        u.hypot2() > v.hypot2()
+    } else {
+        u.x.hypot(u.y) > v.x.hypot(v.y)
+    }
 }
 
 /// The slope α, checked: finite and |α| ≤ [`MAX_ABS_ALPHA`].
@@ -80,8 +112,7 @@ pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
     }
     let [p0, p1, p2] = points;
     let (u, v, c) = (p1 - p0, p2 - p1, p2 - p0);
-    // (std's hypot: kurbo's squares the components, which overflows from 1e154 on.)
-    if ![u, v, c].iter().all(|w| w.x.hypot(w.y).is_finite()) {
+    if ![u, v, c].into_iter().all(finite_length) {
         return Err(Error::OutOfRange {
             name: "control points",
             value: f64::INFINITY,
@@ -92,7 +123,7 @@ pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
     // 1, so that cross and dot products neither underflow nor overflow, whatever the
     // coordinates (~1e-160 or ~1e+160) and however unlike the legs (1 against 1e+160: one
     // scale for all would leave products of the short ones subnormal, a few digits).
-    let [u, v, c] = [u, v, c].map(|w| normalized([w])[0]);
+    let [u, v, c] = [u, v, c].map(normalized);
     let cross = u.cross(v);
     let turning = cross.abs().atan2(u.dot(v));
     if !(turning > 1e-13 && turning < std::f64::consts::PI - 1e-13) {
@@ -112,7 +143,7 @@ pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
 fn solve_triangle(points: [Point; 3], alpha: f64) -> Result<(Triangle, Piece, bool)> {
     let tri = control_triangle(points)?;
     let (u, v) = (points[1] - points[0], points[2] - points[1]);
-    let reversed = u.x.hypot(u.y) > v.x.hypot(v.y);
+    let reversed = longer(u, v);
     let theta_e = if reversed {
         tri.turning - tri.theta_e
     } else {

@@ -411,6 +411,12 @@ impl From<&Sample> for SampleRow {
     }
 }
 
+impl From<Sample> for SampleRow {
+    fn from(s: Sample) -> Self {
+        SampleRow::from(&s)
+    }
+}
+
 impl SampleRow {
     fn values(&self) -> [f64; 5] {
         [self.s, self.x, self.y, self.theta, self.kappa]
@@ -460,7 +466,8 @@ impl SegmentReport {
             curvature_end: segment.curvature_end(),
             turning_angle: segment.turning_angle(),
             points: segment.control_points().map(xy),
-            samples: samples.iter().map(SampleRow::from).collect(),
+            // (In place: a sample and a row are the same size.)
+            samples: samples.into_iter().map(SampleRow::from).collect(),
         }
         .checked()
     }

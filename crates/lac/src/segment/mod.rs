@@ -547,6 +547,9 @@ impl Segment {
 
     /// P(st) − P(first) in the standard form, integrating from the nearer end.
     pub(crate) fn offset_of(&self, st: &Station) -> Complex {
+        if *st == self.first {
+            return Complex::ZERO;
+        }
         if (st.theta - self.first.theta).abs() <= (self.last.theta - st.theta).abs() {
             self.span(&self.first, st)
         } else {

@@ -68,9 +68,9 @@ impl Segment {
             .iter()
             .map(|&s| {
                 let node = if s == 0.0 {
-                    Some(Node::new(&self.form, self.first))
+                    Some(Node::new(self.first))
                 } else if s == len {
-                    Some(Node::new(&self.form, self.last))
+                    Some(Node::new(self.last))
                 } else if s <= 0.5 * len {
                     head.get_or_insert_with(|| Anchor::new(&self.form, self.first))
                         .advance_s(&self.form, k * s)
@@ -186,10 +186,7 @@ impl Segment {
 
     /// Samples at `stations`, positions accumulated from the first one.
     pub(crate) fn samples_at(&self, stations: &[Station]) -> Vec<Sample> {
-        let nodes: Vec<Node> = stations
-            .iter()
-            .map(|st| Node::new(&self.form, *st))
-            .collect();
+        let nodes: Vec<Node> = stations.iter().map(|st| Node::new(*st)).collect();
         self.samples_at_nodes(&nodes)
     }
 
@@ -227,18 +224,19 @@ impl Segment {
     }
 
     fn sample_from_station(&self, st: &Station, z: Complex) -> Sample {
-        self.sample_from(&Node::new(&self.form, *st), z)
+        self.sample_from(&Node::new(*st), z)
     }
 
     /// f = e^{iθ} and its first five derivatives in standard-form arc length.
     pub(crate) fn jet(&self, st: &Station) -> Jet {
-        self.jet_of(&Node::new(&self.form, *st))
+        self.jet_of(&Node::new(*st))
     }
 
     fn jet_of(&self, node: &Node) -> Jet {
         let alpha = self.form.alpha;
-        let r = self.form.lambda * node.q; // −κ′/κ
-                                           // κ⁽ʲ⁾ = κ (−r)ʲ Πᵢ₍ᵢ<ⱼ₎ (1 + iα), j = 0..4.
+        let q = node.q.unwrap_or_else(|| (-alpha * node.st.ln_rho).exp());
+        let r = self.form.lambda * q; // −κ′/κ
+                                      // κ⁽ʲ⁾ = κ (−r)ʲ Πᵢ₍ᵢ<ⱼ₎ (1 + iα), j = 0..4.
         let k0 = node.kappa;
         let k1 = -k0 * r;
         let k2 = -k1 * r * (1.0 + alpha);
@@ -272,7 +270,7 @@ impl Segment {
             return span(self, &a.st, &b.st);
         }
         let mid = match self.form.advance_s(&a.st, 0.5 * h) {
-            Some(st) if depth < 12 => Node::new(&self.form, st),
+            Some(st) if depth < 12 => Node::new(st),
             _ => return span(self, &a.st, &b.st),
         };
         let jm = self.jet_of(&mid);
@@ -375,19 +373,20 @@ fn derivative_factors([k0, k1, k2, k3, k4]: [f64; 5]) -> [Complex; 6] {
 /// f = e^{iθ} and its derivatives of orders 0 to 5 at a station.
 pub(crate) type Jet = [Complex; 6];
 
-/// A station with its curvature κ = 1/ρ and q = ρ^(−α), the quantities of the jet.
+/// A station with its curvature κ = 1/ρ and q = ρ^(−α), the quantities of the jet (q when
+/// it came for free; else it is computed when a jet needs it: an end sample needs none).
 struct Node {
     st: Station,
     kappa: f64,
-    q: f64,
+    q: Option<f64>,
 }
 
 impl Node {
-    fn new(form: &StandardForm, st: Station) -> Self {
+    fn new(st: Station) -> Self {
         Node {
             st,
             kappa: st.kappa(),
-            q: (-form.alpha * st.ln_rho).exp(),
+            q: None,
         }
     }
 }
@@ -437,7 +436,7 @@ impl Anchor {
                 ln_rho,
             },
             kappa,
-            q: 1.0 / (self.v + l * a * d_s),
+            q: Some(1.0 / (self.v + l * a * d_s)),
         })
     }
 }

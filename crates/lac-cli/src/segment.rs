@@ -3,7 +3,7 @@
 use std::sync::Arc;
 
 use lac::Curve;
-use lac_io::json::{to_line, ErrorBody, Report, SegmentInput, SegmentReport};
+use lac_io::json::{to_line, ErrorBody, SegmentInput, SegmentReport};
 
 use crate::batch;
 use crate::cli::{CurveFormat, CurveOutput, SegmentArgs};
@@ -34,7 +34,7 @@ pub(crate) fn run(args: &SegmentArgs, limits: Limits) -> Result<(), ErrorBody> {
         alpha,
     };
     let segment = input.solve()?;
-    let report = || SegmentReport::new(&segment, samples).map(|r| r.with_points(input.points));
+    let report = || SegmentReport::of_input(&segment, samples, input.points);
     let document = match output.format {
         CurveFormat::Json => to_line(&report()?) + "\n",
         CurveFormat::Csv => report()?.to_csv(),
@@ -61,8 +61,8 @@ pub(crate) fn run(args: &SegmentArgs, limits: Limits) -> Result<(), ErrorBody> {
 /// none.
 fn solve_line(text: &str, samples: usize, out: &mut Vec<u8>) -> Result<(), ErrorBody> {
     let input = SegmentInput::parse_line(text)?;
-    let report = SegmentReport::new(&input.solve()?, samples)?.with_points(input.points);
-    report.checked()?.write_json(out);
+    // (Checked for finiteness when made; the input points are finite numbers.)
+    SegmentReport::of_input(&input.solve()?, samples, input.points)?.write_json(out);
     Ok(())
 }
 

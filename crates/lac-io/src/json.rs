@@ -457,6 +457,13 @@ pub struct SegmentReport {
 impl SegmentReport {
     /// The report of `segment` with `n` samples.
     pub fn new(segment: &Segment, n: usize) -> Result<Self, ErrorBody> {
+        Self::of_input(segment, n, segment.control_points().map(xy))
+    }
+
+    /// The report of `segment` with `n` samples, and with the control points exactly as the
+    /// caller gave them (`points`: the solved segment's own are within rounding of them, and
+    /// are not computed).
+    pub fn of_input(segment: &Segment, n: usize, points: [Xy; 3]) -> Result<Self, ErrorBody> {
         let samples = segment.sample_by_arc_length(n)?;
         SegmentReport {
             alpha: segment.alpha(),
@@ -465,7 +472,7 @@ impl SegmentReport {
             curvature_start: segment.curvature_start(),
             curvature_end: segment.curvature_end(),
             turning_angle: segment.turning_angle(),
-            points: segment.control_points().map(xy),
+            points,
             // (In place: a sample and a row are the same size.)
             samples: samples.into_iter().map(SampleRow::from).collect(),
         }

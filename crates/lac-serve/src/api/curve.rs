@@ -35,7 +35,7 @@ pub(crate) fn segment_answer(
 ) -> Result<CurveAnswer<SegmentReport>, ApiError> {
     let segment = input.solve()?;
     Ok(CurveAnswer {
-        report: SegmentReport::new(&segment, n)?.with_points(input.points),
+        report: SegmentReport::of_input(&segment, n, input.points)?,
         plot: plot(&segment, n)?,
     })
 }

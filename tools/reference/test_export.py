@@ -46,6 +46,10 @@ CURVES = [
     ("path", "path", ["--polygon", "0,0 3,0 4,2 2,4 -1,2", "--alpha", "1", "--g2"]),
     ("closed", "path",
      ["--polygon", "0,0 3,0 4,2 2,4 -1,2", "--alpha", "0.5", "--closed", "--g2"]),
+    # An S-shaped G2 path (the README's): through an inflection, where two segments end at
+    # zero curvature on either side of a straight piece.
+    ("spath", "path",
+     ["--polygon", "0,0 1.5,0 3,0.8 6,3.2 7.5,4 9,4", "--alpha", "-0.5", "--g2"]),
 ]
 # A G1 path (curvature jumps at its joints): read back, G1 at the joints, not G2.
 G1_PATH = ("g1path", "path", ["--polygon", "0,0 3,0 4,2 2,4 -1,2", "--alphas", "1,0.5,0.8"])
@@ -86,15 +90,21 @@ def Exact(curve):
 
 
 class ExactChain:
-    """A path's segments end to end, each an `ExactOne` of its control triangle and slope."""
+    """A path's pieces end to end: each segment an `ExactOne` of its control triangle and
+    slope, each straight piece (on an inflection leg, after the segment ending on that leg)
+    a `Line`."""
 
     def __init__(self, curve):
         report = json.loads(run(["path", *curve[2], "--samples", "2"]).stdout)
+        lines = {piece["leg"]: piece for piece in report["straight_pieces"]}
         self.parts = []
         for seg in report["segments"]:
             points = " ".join(f"{x!r},{y!r}" for x, y in seg["control_points"])
             self.parts.append(ExactOne(("seg", "segment",
                                         ["--points", points, "--alpha", repr(seg["alpha"])])))
+            # The segment of vertex j ends on leg j.
+            if seg["vertex"] in lines:
+                self.parts.append(Line(*lines[seg["vertex"]]["points"]))
         self.starts = np.cumsum([0.0] + [p.length for p in self.parts])
         self.length = self.starts[-1]
         assert abs(self.length - report["arc_length"]) < 1e-12 * self.length
@@ -109,6 +119,20 @@ class ExactChain:
             if sel.any():
                 out[sel] = part(s[sel] - self.starts[i])
         return out
+
+
+class Line:
+    """A straight piece from a to b."""
+
+    def __init__(self, a, b):
+        self.a = np.array([a[0], a[1], 0.0])
+        self.b = np.array([b[0], b[1], 0.0])
+        self.length = float(np.linalg.norm(self.b - self.a))
+        self.p = np.array([self.a, self.b])
+
+    def __call__(self, s):
+        u = np.clip(np.asarray(s, dtype=float), 0.0, self.length)[:, None] / self.length
+        return self.a + u * (self.b - self.a)
 
 
 class ExactOne:

@@ -266,18 +266,27 @@ fn path_refusals() {
     assert_ne!(run.code, 0);
     assert!(run.stderr.contains("no_g2_path"), "{}", run.stderr);
     assert!(run.stdout.is_empty());
-    // A G2 path through an inflection (the README's S) is refused for now, saying why.
-    let run = lac(&[
-        "export",
-        "--polygon",
-        "0,0 1.5,0 3,0.8 6,3.2 7.5,4 9,4",
-        "--alpha",
-        "-0.5",
-        "--g2",
-        "--format",
-        "step",
-    ]);
-    assert_failure(&run, 2, "invalid_input");
-    assert!(run.stderr.contains("inflection"), "{}", run.stderr);
-    assert!(run.stdout.is_empty());
+    // A G2 path through an inflection (the README's S) is written G2 within the tolerance,
+    // the straight piece a knot span of its own, every piece's curvature proven monotone.
+    for (alpha, tolerance) in [("-0.5", "1e-6"), ("-1", "1e-8"), ("-0.75", "1e-4")] {
+        let run = lac(&[
+            "export",
+            "--polygon",
+            "0,0 1.5,0 3,0.8 6,3.2 7.5,4 9,4",
+            "--alpha",
+            alpha,
+            "--g2",
+            "--tolerance",
+            tolerance,
+            "--format",
+            "step",
+        ]);
+        assert_eq!(run.code, 0, "{}", run.stderr);
+        let report: serde_json::Value = serde_json::from_str(run.stderr.trim()).unwrap();
+        assert_eq!(report["continuity"], "G2", "{report}");
+        assert_eq!(report["monotone_proven"], true, "{report}");
+        let max = report["max_deviation"].as_f64().unwrap();
+        assert!(max <= tolerance.parse::<f64>().unwrap(), "{report}");
+        assert!(run.stdout.starts_with("ISO-10303-21;"));
+    }
 }

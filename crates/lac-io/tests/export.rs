@@ -330,3 +330,86 @@ fn dxf_is_group_code_and_value_pairs_with_one_spline_per_curve() {
         assert_eq!(pairs.last(), Some(&(0, "EOF")));
     }
 }
+
+/// A small deterministic generator (xorshift64*), for reproducible random polygons.
+struct Rng(u64);
+
+impl Rng {
+    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        let bits = self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11;
+        lo + (hi - lo) * (bits as f64 / (1u64 << 53) as f64)
+    }
+}
+
+#[test]
+fn g2_paths_through_inflections_export_within_the_tolerance_with_monotone_pieces() {
+    use lac::{Alphas, ControlPolygon, Path};
+    let mut rng = Rng(0x5eed_1234_abcd_0001);
+    // LAC_INFLECTION_PATHS=N for a longer run.
+    let wanted: usize = std::env::var("LAC_INFLECTION_PATHS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(60);
+    let (mut tried, mut inflecting, mut pieces) = (0, 0, 0);
+    while inflecting < wanted {
+        tried += 1;
+        assert!(tried < 200 * wanted, "too few G2 paths through inflections");
+        // Turns of random sign at the interior vertices; a leg between turns of opposite
+        // signs (an inflection leg) long, as an inflection needs (each segment's leg on it
+        // is 2-5 times its other).
+        let n = 4 + (rng.uniform(0.0, 3.0) as usize);
+        let turns: Vec<f64> = (0..n - 1)
+            .map(|_| {
+                let turn = rng.uniform(0.15, 1.2);
+                if rng.uniform(0.0, 1.0) < 0.5 {
+                    turn
+                } else {
+                    -turn
+                }
+            })
+            .collect();
+        let (mut p, mut heading) = (Point::ORIGIN, 0.0f64);
+        let mut points = vec![p];
+        for leg in 0..n {
+            let inflects = leg > 0 && leg < n - 1 && turns[leg - 1] * turns[leg] < 0.0;
+            let length = rng.uniform(0.5, 2.0) * if inflects { rng.uniform(2.5, 6.0) } else { 1.0 };
+            p += kurbo::Vec2::from_angle(heading) * length;
+            points.push(p);
+            if leg < n - 1 {
+                heading += turns[leg];
+            }
+        }
+        let alpha = [-1.5, -1.0, -0.75, -0.5, -0.25][(rng.uniform(0.0, 5.0) as usize).min(4)];
+        let polygon = ControlPolygon::open(&points).unwrap();
+        let Ok(path) = Path::g2(&polygon, &Alphas::One(alpha), None) else {
+            continue;
+        };
+        if path.straight_pieces().is_empty() {
+            continue;
+        }
+        inflecting += 1;
+        for tol in [1e-4, 1e-7] {
+            let tolerance = tol * path.arc_length();
+            let done = export(
+                &ExportCurve::Path(&path),
+                Format::Json,
+                Tolerance::Absolute(tolerance),
+                false,
+                &meta(),
+            )
+            .unwrap_or_else(|e| panic!("{points:?} alpha {alpha} tol {tol}: {}", e.message));
+            let report = &done.report;
+            assert!(
+                report.max_deviation <= tolerance,
+                "{points:?} {alpha}: {report:?}"
+            );
+            assert_eq!(report.continuity, "G2");
+            assert_eq!(report.monotone_proven, Some(true), "{points:?} {alpha}");
+            pieces += report.pieces;
+        }
+    }
+    eprintln!("{inflecting} G2 paths through inflections of {tried} polygons, {pieces} pieces");
+}

@@ -220,6 +220,38 @@ fn newton_step(jet: &Jet, q: [f64; 3]) -> f64 {
     }
 }
 
+/// The share of the polyline's length reached at each of its points (0 … 1).
+fn chord_shares(points: &[[f64; 3]]) -> Vec<f64> {
+    let mut out = Vec::with_capacity(points.len());
+    let mut total = 0.0;
+    out.push(0.0);
+    for w in points.windows(2) {
+        total += norm(sub(w[1], w[0]));
+        out.push(total);
+    }
+    if total > 0.0 && total.is_finite() {
+        out.iter_mut().for_each(|x| *x /= total);
+    } else {
+        let last = (points.len() - 1).max(1) as f64;
+        out.iter_mut()
+            .enumerate()
+            .for_each(|(j, x)| *x = j as f64 / last);
+    }
+    out
+}
+
+/// The span parameter where the share `f` of its length is reached, interpolated in the
+/// table of `chord_shares` at equal parameter steps.
+fn parameter_at_share(shares: &[f64], f: f64) -> f64 {
+    let steps = (shares.len() - 1) as f64;
+    let j = shares
+        .partition_point(|&x| x < f)
+        .clamp(1, shares.len() - 1);
+    let (lo, hi) = (shares[j - 1], shares[j]);
+    let within = if hi > lo { (f - lo) / (hi - lo) } else { 0.0 };
+    ((j - 1) as f64 + within.clamp(0.0, 1.0)) / steps
+}
+
 /// The sampled two-sided deviation between `nurbs` and `exact` (caller's units), with
 /// `per_span` steps per span in each direction.
 pub fn deviation(exact: &dyn Exact, nurbs: &Nurbs, per_span: usize) -> Result<f64> {
@@ -230,15 +262,23 @@ pub fn deviation(exact: &dyn Exact, nurbs: &Nurbs, per_span: usize) -> Result<f6
     let mut queries = Vec::with_capacity(n * (per_span + 1));
     let mut s = Vec::with_capacity(queries.capacity());
     let (t0, t1) = (nurbs.knots[0], nurbs.knots[nurbs.knots.len() - 1]);
+    // Each span's points at equal steps of its parameter, and the share of its chord
+    // length reached at each: the starting arc lengths (a span with a weight far from 1,
+    // as next to an inflection, moves along the curve very unevenly in its parameter).
+    let mut shares = Vec::with_capacity(n);
     for i in 0..n {
         let span = nurbs.span(i);
         let (a, b) = nurbs.span_interval(i);
+        let first = queries.len();
         for j in 0..=per_span {
-            let u = j as f64 / per_span as f64;
-            queries.push(span.jet(u).point);
-            let t = a + (b - a) * u;
+            queries.push(span.jet(j as f64 / per_span as f64).point);
+        }
+        let share = chord_shares(&queries[first..]);
+        for f in &share {
+            let t = a + (b - a) * f;
             s.push(((t - t0) / (t1 - t0) * len).clamp(0.0, len));
         }
+        shares.push(share);
     }
     let mut best = vec![f64::INFINITY; queries.len()];
     // Only the stations whose Newton step has not settled are evaluated again.
@@ -279,7 +319,7 @@ pub fn deviation(exact: &dyn Exact, nurbs: &Nurbs, per_span: usize) -> Result<f6
         for _ in 0..3 {
             let span = nurbs.span(i);
             let (a, b) = nurbs.span_interval(i);
-            let mut u = ((t - a) / (b - a)).clamp(0.0, 1.0);
+            let mut u = parameter_at_share(&shares[i], ((t - a) / (b - a)).clamp(0.0, 1.0));
             for _ in 0..ITERATIONS {
                 let j = span.jet(u);
                 d = d.min(norm(sub(j.point, q)));

@@ -320,14 +320,6 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
             let c = solved.curve();
             planar(&[(quasi_of(c)?, c.arc_length())])
         }
-        ExportCurve::Path(path) if !path.straight_pieces().is_empty() => {
-            Err(ErrorBody::invalid_input(
-                "a path through an inflection is not exported yet: the segments next to it end \
-                 at a curvature 1e-12 of their other end's, which no chain of cubics with \
-                 monotone curvature follows within a tolerance; export the paths on either \
-                 side of the inflection",
-            ))
-        }
         ExportCurve::Path(path) => {
             // Piece by piece: each segment's chain keeps its end points, tangents and
             // curvatures, so the path's joints stay knots with the path's own continuity;

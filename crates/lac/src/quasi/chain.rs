@@ -3,6 +3,7 @@
 //! and curvature proven monotone in the curve's direction. Neighbouring pieces share the
 //! curve's point, tangent and curvature at their join, so the chain is G2.
 
+use super::deviation::has_flat_end;
 use super::fit::{fit_span, Fitted};
 use super::{Kind, QuasiPiece, TurningCurve};
 use crate::error::{Error, Result};
@@ -11,6 +12,9 @@ use crate::monotone::Monotonicity;
 /// Most pieces a tolerance may ask for: about a second of work at most, and far beyond
 /// what a CAD system wants of one curve.
 pub const MAX_PIECES: usize = 1000;
+
+/// Pieces fitted before their average turning projects the chain's length.
+const PROJECT_AFTER: usize = 8;
 
 /// Is this piece's monotonicity the curve's, proven (or constant within rounding where the
 /// curve's curvature hardly changes over the piece)?
@@ -39,10 +43,17 @@ pub(super) fn greedy(
     let mut out: Vec<Fitted> = Vec::new();
     let mut start = 0.0;
     let mut width = total;
+    // Next to a flat end (an inflection, κ ∝ s^p with p = −1/α) a piece of length ℓ turns
+    // by ∝ ℓ^(p+1) and deviates by about ∝ ℓ^(p+2): nearly linear in its turning, far from
+    // the error model's Θ⁶. Such a curve's widths are searched longer, and down to 1e-15
+    // of the whole turning.
+    let flat = has_flat_end(curve);
+    let narrowest = if flat { 1e-15 } else { 1e-9 };
     while start < total {
         // Stop as soon as the pieces so far say the chain would be too long: the turning
-        // left, at the average turning per piece so far.
-        let projected = if start > 0.0 {
+        // left, at the average turning per piece so far. (Not on the first few: next to a
+        // flat start, an inflection, each piece turns ten times as much as the last.)
+        let projected = if out.len() >= PROJECT_AFTER {
             out.len() as f64 * total / start
         } else {
             0.0
@@ -57,9 +68,10 @@ pub(super) fn greedy(
         width = width.min(remaining);
         let mut best: Option<(f64, Fitted)> = None;
         let mut worst_seen = f64::INFINITY;
-        for _ in 0..16 {
+        for _ in 0..if flat { 48 } else { 16 } {
             // Never leave a sliver: a remainder shorter than half a piece is shared out.
-            if width < remaining && remaining - width < 0.5 * width {
+            // (Not next to a flat end, where a remainder that turns by little is long.)
+            if !flat && width < remaining && remaining - width < 0.5 * width {
                 width = 0.5 * remaining;
             }
             let end = if width >= remaining {
@@ -103,7 +115,7 @@ pub(super) fn greedy(
                     }
                 }
                 width = smaller;
-                if width < 1e-9 * total {
+                if width < narrowest * total {
                     break;
                 }
             }

@@ -7,6 +7,14 @@
 //! maximum is found on 64 equal steps of the piece's parameter t (about equal steps of arc
 //! length) and refined at the vertex of the parabola through the largest sample and its
 //! neighbours.
+//!
+//! Next to an inflection (an end where |κ| is below [`FLAT_END`] of the other end's) that
+//! correspondence fails: the curve turns by almost nothing over a long stretch, so points
+//! that have turned by the same angle lie far apart although the two curves nearly
+//! coincide (for α = −½, κ ∝ s² next to it, and a cubic's κ ∝ t). The pieces of a curve
+//! with such an end are measured by closest points instead: the largest distance from the
+//! curve's points, at 65 equal steps of the piece's arc length, to the piece
+//! (`max_distance`).
 
 use kurbo::Vec2;
 
@@ -17,6 +25,19 @@ use crate::numeric::find_root;
 
 /// Deviation samples per piece for the maximum.
 const CHECK_STEPS: usize = 64;
+
+/// An end whose |κ| is at most this share of the other end's is flat (an inflection).
+pub(super) const FLAT_END: f64 = 1e-3;
+
+/// Does the curve have an end of (nearly) zero curvature, an inflection?
+pub(super) fn has_flat_end(curve: &impl TurningCurve) -> bool {
+    let (a, b) = curve.end_curvatures();
+    let (a, b) = (a.abs(), b.abs());
+    a.min(b) <= FLAT_END * a.max(b)
+}
+
+/// Gauss–Newton steps per closest point (each gains a factor ~ distance × curvature ≪ 1).
+const PROJECTION_STEPS: usize = 8;
 
 /// How to find the parameter of a node.
 #[derive(Clone, Copy)]
@@ -108,6 +129,44 @@ impl Span {
         Ok(best)
     }
 
+    /// The largest distance from the curve's points at 65 equal steps of the span's arc
+    /// length to the candidate (local units): each point's closest point on the candidate
+    /// by Gauss–Newton on (x(t) − q)·x′(t) = 0 from the last one's parameter. Every
+    /// iterate's distance is the distance to a point of the candidate, so the smallest seen
+    /// bounds the true one from above even where the iteration does not settle.
+    pub(super) fn max_distance(&self, curve: &impl TurningCurve, cand: &Candidate) -> Result<f64> {
+        let [sa, sb] = self.s;
+        let at: Vec<f64> = (0..=CHECK_STEPS)
+            .map(|i| {
+                if i == CHECK_STEPS {
+                    sb
+                } else {
+                    sa + (sb - sa) * i as f64 / CHECK_STEPS as f64
+                }
+            })
+            .collect();
+        let samples = curve.at_arc_lengths(&at)?;
+        let mut worst = 0.0f64;
+        let mut t = 0.0f64;
+        for sample in &samples {
+            let q = self.local(sample.point);
+            let mut best = f64::INFINITY;
+            for _ in 0..PROJECTION_STEPS {
+                let (x, dx) = cand.point_and_derivative(t);
+                let d = x - q;
+                best = best.min(d.hypot());
+                let step = d.dot(dx) / dx.hypot2();
+                if !step.is_finite() {
+                    break;
+                }
+                t = (t - step).clamp(0.0, 1.0);
+            }
+            best = best.min((cand.point(t) - q).hypot());
+            worst = worst.max(best);
+        }
+        Ok(worst)
+    }
+
     /// The candidate's turning at `t`, within [0, Θ], unwrapped next to `near`.
     fn turning_at(&self, cand: &Candidate, t: f64, near: f64) -> f64 {
         let (v, _) = cand.hodograph(t);
@@ -119,6 +178,12 @@ impl Span {
 }
 
 impl Candidate {
+    /// x(t) and x′(t) = V(t)/w(t)².
+    fn point_and_derivative(&self, t: f64) -> (Vec2, Vec2) {
+        let w = self.weight(t);
+        (self.point(t), self.hodograph(t).0 / (w * w))
+    }
+
     /// One Newton step on det(dir, V(t)) = 0 from `t`.
     pub(super) fn newton_step(&self, dir: Vec2, t: f64) -> f64 {
         let (v, dv) = self.hodograph(t);

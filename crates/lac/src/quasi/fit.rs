@@ -19,7 +19,7 @@
 
 use kurbo::{Point, Vec2};
 
-use super::deviation::Solve;
+use super::deviation::{has_flat_end, Solve};
 use super::{unfittable, Kind, QuasiPiece, TurningCurve};
 use crate::bezier::{power_basis, Hom, RationalCubic};
 use crate::error::Result;
@@ -113,6 +113,8 @@ pub(super) struct Span {
     pub(super) end: Vec2,
     /// |κ| at the two ends.
     pub(super) kappa: [f64; 2],
+    /// The curve's arc length at the two ends.
+    pub(super) s: [f64; 2],
     pub(super) signed_kappa: [f64; 2],
     /// The Gauss nodes of the objective.
     pub(super) nodes: Vec<Node>,
@@ -164,6 +166,7 @@ impl Span {
             turning,
             end: Vec2::ZERO,
             kappa: [a.kappa.abs() * scale, b.kappa.abs() * scale],
+            s: [a.s, b.s],
             signed_kappa: [a.kappa, b.kappa],
             nodes: Vec::with_capacity(2 * GAUSS_16.len()),
         };
@@ -387,7 +390,11 @@ impl Span {
         // Relative to the curve's length squared: in the caller's units it would overflow
         // for curves of size 1e155.
         let integral = integral * (self.scale / curve.length()).powi(2);
-        let max_deviation = self.max_deviation(curve, &cand)? * self.scale;
+        let max_deviation = if has_flat_end(curve) {
+            self.max_distance(curve, &cand)?
+        } else {
+            self.max_deviation(curve, &cand)?
+        } * self.scale;
         let curve_q = self.to_caller(q)?;
         let monotonicity = curve_q.curvature_monotonicity()?;
         Ok(Trial {
@@ -443,6 +450,11 @@ impl Candidate {
             |i: usize| self.c[0][i] + t * (self.c[1][i] + t * (self.c[2][i] + t * self.c[3][i]));
         let w = e(2);
         Vec2::new(e(0) / w, e(1) / w)
+    }
+
+    /// The weight w(t).
+    pub(super) fn weight(&self, t: f64) -> f64 {
+        self.c[0][2] + t * (self.c[1][2] + t * (self.c[2][2] + t * self.c[3][2]))
     }
 
     /// V(t) and V′(t).

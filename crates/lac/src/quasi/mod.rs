@@ -38,7 +38,11 @@ pub struct QuasiPiece {
     /// The turning of the original curve, from its start, at the piece's two ends (radians,
     /// non-negative, ascending).
     pub turning: (f64, f64),
-    /// Largest distance d(φ) to the original curve over the piece (caller's units).
+    /// Largest distance d(φ) to the original curve over the piece (caller's units). For a
+    /// curve with an end of (nearly) zero curvature, an inflection, where points that have
+    /// turned by the same angle lie far apart along a nearly straight stretch, the largest
+    /// distance from the curve's points to the piece (their closest points) instead: see
+    /// `deviation.rs`.
     pub max_deviation: f64,
 }
 
@@ -191,6 +195,8 @@ pub(crate) trait TurningCurve {
     fn end_curvatures(&self) -> (f64, f64);
     /// Samples where the tangent has turned by each of `phi` (ascending, within [0, Θ]).
     fn at_turning(&self, phi: &[f64]) -> Result<Vec<Sample>>;
+    /// Samples at the arc lengths `s` (ascending, within [0, length]).
+    fn at_arc_lengths(&self, s: &[f64]) -> Result<Vec<Sample>>;
 }
 
 impl<C: Curve + ?Sized> TurningCurve for C {
@@ -232,6 +238,10 @@ impl<C: Curve + ?Sized> TurningCurve for C {
             start += piece.length();
         }
         Ok(out)
+    }
+
+    fn at_arc_lengths(&self, s: &[f64]) -> Result<Vec<Sample>> {
+        self.samples_at_arc_lengths(s)
     }
 }
 

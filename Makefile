@@ -96,7 +96,8 @@ fixtures: $(VENV)/.installed
 	$(PY) tools/reference/space_fixtures.py -j 2
 
 # Criterion benchmarks (medians quoted in issue notes); the Clothoids timing for comparison, and
-# lac's solver and batch side by side with Clothoids on the same 20,000 clothoids.
+# lac's solver and batch side by side with Clothoids on the same 20,000 clothoids, and lac's G2
+# spline against a clothoid G2 spline on Clothoids' build_G1 (needs `make py` first).
 bench: $(VENV)/.installed
 	cargo bench -p lac --bench segment
 	cargo bench -p lac --bench compound
@@ -106,6 +107,7 @@ bench: $(VENV)/.installed
 	cargo bench -p lac-io --bench export -- --warm-up-time 1 --measurement-time 3
 	$(PY) tools/reference/bench_clothoids.py
 	$(PY) tools/bench_vs_clothoids.py --repeats 3
+	$(PY) tools/bench_spline_vs_clothoids.py --sets 200
 
 # The main job: a clothoid-to-spiral segment drawn as SVG with its curvature comb.
 example:

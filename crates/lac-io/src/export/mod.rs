@@ -320,6 +320,14 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
             let c = solved.curve();
             planar(&[(quasi_of(c)?, c.arc_length())])
         }
+        ExportCurve::Path(path)
+            if path.polygon().is_closed() && !path.straight_pieces().is_empty() =>
+        {
+            Err(ErrorBody::invalid_input(
+                "a closed path through an inflection is not exported yet (its straight pieces \
+                 are not yet ordered around the seam); open paths through inflections are",
+            ))
+        }
         ExportCurve::Path(path) => {
             // Piece by piece: each segment's chain keeps its end points, tangents and
             // curvatures, so the path's joints stay knots with the path's own continuity;

@@ -197,6 +197,8 @@ pub(crate) trait TurningCurve {
     fn at_turning(&self, phi: &[f64]) -> Result<Vec<Sample>>;
     /// Samples at the arc lengths `s` (ascending, within [0, length]).
     fn at_arc_lengths(&self, s: &[f64]) -> Result<Vec<Sample>>;
+    /// Is every piece of slope α < 0 (a curve that can reach zero curvature)?
+    fn can_inflect(&self) -> bool;
 }
 
 impl<C: Curve + ?Sized> TurningCurve for C {
@@ -242,6 +244,10 @@ impl<C: Curve + ?Sized> TurningCurve for C {
 
     fn at_arc_lengths(&self, s: &[f64]) -> Result<Vec<Sample>> {
         self.samples_at_arc_lengths(s)
+    }
+
+    fn can_inflect(&self) -> bool {
+        self.pieces().iter().all(|p| p.alpha() < 0.0)
     }
 }
 

@@ -115,9 +115,11 @@ def test_export_equals_the_command_line(cli, tmp_path):
         else:
             numbers = lambda t: re.findall(r"-?\d+\.\d+(?:[eE][-+]?\d+)?", t)  # noqa: E731
             assert len(text) > 200 and numbers(text)[-50:] == numbers(expected)[-50:]
+    # A path through an inflection exports too, its straight piece included.
     path = lac.Path(S_POLYGON, -1.0)
-    with pytest.raises(lac.InvalidInput, match="inflection"):
-        lac.export(path, "step")
+    text, report = lac.export(path, "step")
+    assert report["kind"] == "path" and report["continuity"] == "G2"
+    assert report["max_deviation"] <= report["tolerance"] and report["monotone_proven"] is True
     g2 = lac.Path([(0.0, 0.0), (3.0, 0.0), (4.0, 2.0), (2.0, 4.0), (-1.0, 2.0)], 1.0)
     text, report = lac.export(g2, "iges", tolerance=1e-6, relative=True, pieces=True)
     assert report["kind"] == "path" and report["single_spans"] and report["continuity"] == "G2"

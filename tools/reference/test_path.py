@@ -7,6 +7,7 @@ must agree to 1e-9 (relative), as must the command's own report.
 """
 
 import json
+import math
 import subprocess
 
 import pytest
@@ -181,22 +182,28 @@ def test_g2_path_inflections_reach_zero_curvature_in_the_reference():
     assert inflections == 4 + 2 * 2
 
 
-# Point sets with a G2 spline through them for these slopes (turning one way).
+# Point sets with a G2 spline through them for these slopes (turning one way, and a wave
+# whose spans through an inflection are each two segments meeting at zero curvature).
+WAVE = " ".join(f"{i},{math.sin(0.9 * i + 0.3):.4f}" for i in range(8))
 SPLINE_CASES = [
     ("0,0 2,0.3 3.5,1.5 4,3 3.2,4.6", False, [-1.0, -0.5, 0.0, 0.5, 1.0, 2.0]),
     ("1,0 0,1.2 -1,0 0,-0.8", True, [-1.0, 0.0, 1.0]),
     ("0,0 1,0.05 2,0.3 3,0.8 3.8,1.6 4.2,2.6", False, [-0.5, 0.5]),
+    (WAVE, False, [-0.25, -0.5, -1.0]),
 ]
 
 
 def test_g2_spline_joints_are_continuous_in_the_mpmath_reference():
-    """`lac spline`: every span's segment solved again by the mpmath reference from its
+    """`lac spline`: every piece's segment solved again by the mpmath reference from its
     reported control triangle; the spans pass through the given points, their tangents are
     continuous (the triangles' legs at a point are collinear) and so is the reference's
-    curvature, to 1e-9 (relative)."""
+    curvature, to 1e-9 (relative). The two halves of a span through an inflection meet where
+    the reference's curvature is zero (within 1e-9 of the halves' other ends), with opposite
+    signs on either side."""
     require("spline")
     mp.dps = 30
     checked, worst, worst_self, worst_tangent = 0, mpf(0), mpf(0), mpf(0)
+    inflections, worst_zero = 0, mpf(0)
     for through, closed, alphas in SPLINE_CASES:
         points = [tuple(map(float, p.split(","))) for p in through.split()]
         for alpha in alphas:
@@ -205,33 +212,61 @@ def test_g2_spline_joints_are_continuous_in_the_mpmath_reference():
             run = subprocess.run(args, capture_output=True, text=True, timeout=60)
             assert run.returncode == 0, run.stderr
             report = json.loads(run.stdout)
-            spans = report["spans"]
-            assert len(spans) == (len(points) if closed else len(points) - 1)
+            pieces = report["pieces"]
+            spans = [p["span"] for p in pieces]
+            assert sorted(set(spans)) == list(range(len(points) if closed else len(points) - 1))
             ends, legs = [], []
-            for k, span in enumerate(spans):
-                tri = span["control_points"]
-                assert tuple(tri[0]) == points[k] and tuple(tri[2]) == points[(k + 1) % len(points)]
+            for k, piece in enumerate(pieces):
+                tri = piece["control_points"]
+                span = piece["span"]
+                if k == 0 or spans[k - 1] != span:
+                    assert tuple(tri[0]) == points[span]
+                if k + 1 == len(pieces) or spans[k + 1] != span:
+                    assert tuple(tri[2]) == points[(span + 1) % len(points)]
                 pa, pb, pc = (mpc(*map(mpf, p)) for p in tri)
-                ref = solve_segment(pa, pb, pc, alpha, [0, 1])
-                ends.append((ref["curvature_start"], ref["curvature_end"]))
-                legs.append((pb - pa, pc - pb))
-                for got, want in zip(span["curvature"], (ref["curvature_start"],
-                                                          ref["curvature_end"])):
+                if k + 1 < len(pieces) and spans[k + 1] == span:
+                    # The first half of an S: its inflection at its end.
+                    k_infl, k_other = inflection_segment(tri, alpha, at_start=False)
+                    ends.append((k_other, k_infl))
+                elif k > 0 and spans[k - 1] == span:
+                    ends.append(inflection_segment(tri, alpha, at_start=True))
+                else:
+                    ref = solve_segment(pa, pb, pc, alpha, [0, 1])
+                    ends.append((ref["curvature_start"], ref["curvature_end"]))
+                legs.append((pb - pa, pc - pb, pa, pc))
+                scale = max(abs(e) for e in ends[-1])
+                for got, want in zip(piece["curvature"], ends[-1]):
+                    if abs(want) < mpf("1e-9") * scale:
+                        continue  # a half's end at the inflection: checked below
                     err = abs(mpf(got) - want) / abs(want)
                     worst_self = max(worst_self, err)
                     assert err <= mpf("1e-12"), (got, want)
-            pairs = len(spans) if closed else len(spans) - 1
+            pairs = len(pieces) if closed else len(pieces) - 1
             for k in range(pairs):
-                nxt = (k + 1) % len(spans)
+                nxt = (k + 1) % len(pieces)
                 before, after = ends[k][1], ends[nxt][0]
-                jump = abs(before - after) / max(abs(before), abs(after))
-                assert jump <= JUMP, (through, alpha, k, jump)
                 u, v = legs[k][1], legs[nxt][0]
                 tangent = abs(atan2(u.real * v.imag - u.imag * v.real, (u.conjugate() * v).real))
                 assert tangent <= mpf("1e-12"), (through, alpha, k, tangent)
-                worst, worst_tangent = max(worst, jump), max(worst_tangent, tangent)
+                worst_tangent = max(worst_tangent, tangent)
+                if spans[k] == spans[nxt]:
+                    # The inflection: zero curvature on both sides, the halves' ends within
+                    # rounding of each other.
+                    scale = max(abs(ends[k][0]), abs(ends[nxt][1]))
+                    zero = max(abs(before), abs(after)) / scale
+                    assert zero <= mpf("1e-9") and before * after <= 0, (through, alpha, k)
+                    assert ends[k][0] * ends[nxt][1] < 0
+                    assert abs(legs[k][3] - legs[nxt][2]) <= mpf("1e-11")
+                    worst_zero = max(worst_zero, zero)
+                    inflections += 1
+                    continue
+                jump = abs(before - after) / max(abs(before), abs(after))
+                assert jump <= JUMP, (through, alpha, k, jump)
+                worst = max(worst, jump)
                 checked += 1
     print(f"{checked} spline joints: largest curvature jump in the reference "
           f"{float(worst):.2e}, tangent mismatch {float(worst_tangent):.2e}; largest "
-          f"end-curvature error of lac {float(worst_self):.2e}")
-    assert checked == 6 * 3 + 3 * 4 + 2 * 4
+          f"end-curvature error of lac {float(worst_self):.2e}; {inflections} inflections, "
+          f"|κ| there at most {float(worst_zero):.2e} of the halves' other ends")
+    assert checked == 6 * 3 + 3 * 4 + 2 * 4 + 3 * 6
+    assert inflections == 3

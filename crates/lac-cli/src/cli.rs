@@ -187,16 +187,18 @@ pub(crate) enum Command {
                                 # a lac segment, compound, path or space result"
     )]
     Export(ExportArgs),
-    /// Draw a G2 spline of log-aesthetic segments through points: one segment per span,
-    /// the tangent angles at the points solved so that the curvature is continuous
+    /// Draw a G2 spline of log-aesthetic segments through points: one segment per span (for
+    /// alpha < 0, an S of two segments meeting at zero curvature where the span must
+    /// inflect), the tangent angles at the points solved so that the curvature is continuous
     ///
     /// Open splines take their end tangents from --start-angle/--end-angle (radians) or from
     /// the circles through the first and last three points. The JSON has "closed", "alpha",
-    /// "arc_length", "max_curvature_jump", "points", "angles", "spans" [{control_points,
-    /// arc_length, curvature:[start,end]}], "curvature_jumps" (at each joint) and "samples".
-    /// A span that would have to inflect, or where no continuous curvature is reached, is
+    /// "arc_length", "max_curvature_jump", "points", "angles", "pieces" [{span,
+    /// control_points, lambda, arc_length, curvature:[start,end]}], "inflections" [{span,
+    /// point, curvature}], "curvature_jumps" (at each joint) and "samples". A span that would
+    /// have to inflect with alpha >= 0, or where no continuous curvature is reached, is
     /// named in the error (kind no_g2_path, exit code 3); a span whose segment cannot be
-    /// drawn, likewise. Inflections are not supported in splines yet (see `lac path --g2`).
+    /// drawn, likewise.
     #[command(
         override_usage = "lac spline --through \"x0,y0 x1,y1 x2,y2 …\" --alpha A [--closed] \
                                 [--start-angle R --end-angle R]\n                \

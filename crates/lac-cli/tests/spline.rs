@@ -16,8 +16,9 @@ fn open_spline_passes_through_its_points_with_continuous_curvature() {
     let run = lac(&["spline", "--through", through, "--alpha", "-0.5"]);
     assert_eq!(run.code, 0, "{}", run.stderr);
     let v = json(&run);
-    let spans = v["spans"].as_array().unwrap();
+    let spans = v["pieces"].as_array().unwrap();
     assert_eq!(spans.len(), 4);
+    assert!(v["inflections"].as_array().unwrap().is_empty());
     let points = v["points"].as_array().unwrap();
     for (i, s) in spans.iter().enumerate() {
         assert_eq!(s["control_points"][0], points[i]);
@@ -58,6 +59,34 @@ fn open_spline_passes_through_its_points_with_continuous_curvature() {
     ]);
     assert_eq!(run.code, 0, "{}", run.stderr);
     assert!(run.stdout.contains("<svg") && run.stdout.contains("joint s = "));
+}
+
+#[test]
+fn a_span_through_an_inflection_is_two_pieces_meeting_at_zero_curvature() {
+    let wave = "0,0.2955 1,0.9320 2,0.8632 3,0.1411 4,-0.6878 5,-0.9962 6,-0.5507 7,0.3115";
+    let run = lac(&["spline", "--through", wave, "--alpha", "-1"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let v = json(&run);
+    let pieces = v["pieces"].as_array().unwrap();
+    let spans: Vec<u64> = pieces.iter().map(|p| p["span"].as_u64().unwrap()).collect();
+    assert_eq!(spans, [0, 1, 2, 3, 3, 4, 5, 6]);
+    let inflections = v["inflections"].as_array().unwrap();
+    assert_eq!(inflections.len(), 1);
+    assert_eq!(inflections[0]["span"], 3);
+    let (before, after) = (&pieces[3], &pieces[4]);
+    let (k0, k1) = (f(&before["curvature"][1]), f(&after["curvature"][0]));
+    assert!(
+        k0.abs().max(k1.abs()) <= 1e-9 && k0 * k1 <= 0.0,
+        "{k0} {k1}"
+    );
+    assert!(f(&before["curvature"][0]) * f(&after["curvature"][1]) < 0.0);
+    // The halves meet at the inflection point.
+    let m = &inflections[0]["point"];
+    for end in [&before["control_points"][2], &after["control_points"][0]] {
+        let d = (f(&end[0]) - f(&m[0])).hypot(f(&end[1]) - f(&m[1]));
+        assert!(d <= 1e-11, "{d}");
+    }
+    assert!(f(&v["max_curvature_jump"]) <= 1e-9);
 }
 
 #[test]

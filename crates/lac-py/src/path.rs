@@ -134,8 +134,11 @@ impl PyPath {
 /// end tangent directions are `ends` = (start, end) in radians, or those of the circles
 /// through its first and last three points.
 ///
+/// For `alpha < 0`, a span that must inflect is an S: two segments meeting at zero
+/// curvature (`inflections`, `spans_of_pieces`).
+///
 /// Raises `LacError` (kind `no_g2_path`, naming the span) where a span would have to inflect
-/// (not supported in splines yet; see `Path`) or no continuous curvature is reached.
+/// with `alpha >= 0`, or no continuous curvature is reached.
 #[pyclass(module = "lac", name = "Spline", frozen)]
 pub(crate) struct PySpline(lac::Spline);
 
@@ -194,14 +197,35 @@ impl PySpline {
         array1(py, self.0.angles().to_vec())
     }
 
-    /// Each span's control triangle (its first point, the intersection of its end
-    /// tangents, its last point), shape (k, 3, 2).
+    /// Each piece's control triangle (its first point, the intersection of its end
+    /// tangents, its last point), shape (k, 3, 2): one piece per span, two (halves ending a
+    /// hair short of the inflection) for a span through an inflection.
     #[getter]
     fn control_triangles<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray3<f64>>> {
         triangles(py, self.0.control_triangles())
     }
 
-    /// Each span's signed curvature at its start and end, shape (k, 2).
+    /// The span of each piece (span i runs from point i to the next), shape (k,).
+    #[getter]
+    fn spans_of_pieces<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<i64>> {
+        let spans = self.0.spans_of_pieces().iter().map(|&i| i as i64);
+        PyArray1::from_iter(py, spans)
+    }
+
+    /// The inflection points (only for alpha < 0), shape (m, 2); `inflection_spans` says
+    /// which span each lies on.
+    #[getter]
+    fn inflections<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        points2(py, self.0.inflections().iter().map(|f| f.point))
+    }
+
+    /// The span of each inflection, shape (m,).
+    #[getter]
+    fn inflection_spans<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<i64>> {
+        PyArray1::from_iter(py, self.0.inflections().iter().map(|f| f.span as i64))
+    }
+
+    /// Each piece's signed curvature at its start and end, shape (k, 2).
     #[getter]
     fn end_curvatures<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
         use lac::Curve;

@@ -3,6 +3,7 @@
 splines through points, CAD files in every format; and raise the library's errors."""
 
 import json
+import math
 import re
 import subprocess
 
@@ -69,12 +70,29 @@ def test_spline_equals_the_command_line(cli):
     assert spline.points.tolist() == [list(p) for p in SPLINE_POINTS]
     assert spline.angles.tolist() == ref["angles"]
     assert spline.control_triangles.shape == (4, 3, 2)
-    assert spline.control_triangles.tolist() == [s["control_points"] for s in ref["spans"]]
-    assert spline.end_curvatures.tolist() == [s["curvature"] for s in ref["spans"]]
+    assert spline.control_triangles.tolist() == [s["control_points"] for s in ref["pieces"]]
+    assert spline.end_curvatures.tolist() == [s["curvature"] for s in ref["pieces"]]
+    assert spline.spans_of_pieces.tolist() == [0, 1, 2, 3] and spline.inflections.shape == (0, 2)
     assert spline.curvature_jumps.tolist() == ref["curvature_jumps"]
     samples = spline.sample(9)
     assert samples.kappa.tolist() == [s["kappa"] for s in ref["samples"]]
     assert samples.points.tolist() == [[s["x"], s["y"]] for s in ref["samples"]]
+
+
+WAVE = [(float(i), math.sin(0.9 * i + 0.3)) for i in range(8)]
+
+
+def test_spline_through_an_inflection_equals_the_command_line(cli):
+    ref = cli("spline", "--through", arg(WAVE), "--alpha", "-0.5", "--samples", "9")
+    spline = lac.Spline(WAVE, -0.5)
+    assert spline.spans_of_pieces.tolist() == [p["span"] for p in ref["pieces"]]
+    assert spline.spans_of_pieces.tolist() == [0, 1, 2, 3, 3, 4, 5, 6]
+    assert spline.inflections.tolist() == [f["point"] for f in ref["inflections"]]
+    assert spline.inflection_spans.tolist() == [3]
+    assert spline.end_curvatures.tolist() == [p["curvature"] for p in ref["pieces"]]
+    assert spline.max_curvature_jump <= 1e-9
+    k = spline.sample(200).kappa
+    assert int(np.sum(k[:-1] * k[1:] < 0)) == 1
 
 
 def test_spline_options_and_errors(cli):

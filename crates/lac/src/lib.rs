@@ -93,8 +93,9 @@ pub use error::{Error, ErrorKind, NotDrawable, Result};
 pub use lcg::LcgLine;
 pub use monotone::{Monotonicity, MonotonicityReport};
 pub use path::{
-    Alphas, Continuity, ControlPolygon, G2Failure, G2Outcome, Joint, Path, Spline, StraightPiece,
-    G2_JUMP_LIMIT, G2_TOLERANCE, INFLECTION_LIMIT, MAX_POLYGON_POINTS,
+    Alphas, Continuity, ControlPolygon, G2Failure, G2Outcome, Joint, Path, Spline,
+    SplineInflection, StraightPiece, G2_JUMP_LIMIT, G2_TOLERANCE, INFLECTION_LIMIT,
+    MAX_POLYGON_POINTS,
 };
 pub use quasi::{QuasiCurve, QuasiPiece, MAX_PIECES};
 pub use segment::{Sample, Segment, SegmentDerivative, MAX_ABS_ALPHA, MAX_ADAPTIVE_SAMPLES};

@@ -8,6 +8,7 @@ import numpy.typing as npt
 
 FloatArray = npt.NDArray[np.float64]
 BoolArray = npt.NDArray[np.bool_]
+IntArray = npt.NDArray[np.int64]
 ArrayLike = npt.ArrayLike
 Points = Union[npt.ArrayLike, Sequence[Sequence[float]]]
 
@@ -312,7 +313,8 @@ class Path:
     def sample(self, n: int) -> Samples: ...
 
 class Spline:
-    """A G2 spline of log-aesthetic segments through points (one segment per span)."""
+    """A G2 spline of log-aesthetic segments through points (one segment per span; for
+    alpha < 0, two meeting at zero curvature on a span that must inflect)."""
     def __init__(
         self,
         points: npt.ArrayLike,
@@ -330,6 +332,12 @@ class Spline:
     def angles(self) -> FloatArray: ...
     @property
     def control_triangles(self) -> FloatArray: ...
+    @property
+    def spans_of_pieces(self) -> IntArray: ...
+    @property
+    def inflections(self) -> FloatArray: ...
+    @property
+    def inflection_spans(self) -> IntArray: ...
     @property
     def end_curvatures(self) -> FloatArray: ...
     @property

@@ -38,9 +38,10 @@ pub enum G2Failure {
         /// The slopes of the segments before and after the leg.
         alphas: [f64; 2],
     },
-    /// A segment next to this inflection leg has α < 0, but its zero-curvature end cannot
-    /// be resolved in double precision (the curvature there falls like d^(1/|α|) with the
-    /// distance d from the inflection point: for α below about −1.7 not to 1e-10).
+    /// A segment next to this inflection (a path's leg, a spline's span) has α < 0, but its
+    /// zero-curvature end cannot be resolved in double precision (the curvature there falls
+    /// like d^(1/|α|) with the distance d from the inflection point: for α below about −1.7
+    /// not to 1e-10 in a path, below about −1.3 not to 1e-9 in a spline).
     InflectionUnresolved {
         /// The segment's slope.
         alpha: f64,
@@ -51,10 +52,14 @@ pub enum G2Failure {
         /// The vertex.
         vertex: usize,
     },
-    /// A spline's span whose end tangents leave the chord on the same side (or whose
-    /// curvature would change sign at a point): it would need an inflection, which splines
-    /// do not pass through yet.
+    /// A spline's span whose end tangents leave the chord on the same side (or where no
+    /// single segment fits them): it needs an inflection, which a log-aesthetic curve has
+    /// only for α < 0; for α < 0, no S-shaped span whose halves turn by at most π fits.
     SpanInflects,
+    /// A spline's span passes through an inflection within a hair of one of its points (one
+    /// half of its S turns by less than 1e-3 rad): the half is too flat to be drawn in double
+    /// precision.
+    InflectionAtPoint,
     /// The two segments that reach zero curvature on this leg need more than its length:
     /// they overlap by `overlap` (a share of the leg).
     InflectionLegTooShort {
@@ -82,9 +87,10 @@ impl fmt::Display for G2Failure {
             ),
             G2Failure::InflectionUnresolved { alpha } => write!(
                 f,
-                "the polygon's turning changes direction on this leg; a segment with alpha = \
-                 {alpha} next to it cannot be brought to zero curvature in double precision \
-                 (use alpha between -1.5 and 0 next to inflections)"
+                "the curve passes through an inflection here; a segment with alpha = {alpha} \
+                 that ends there cannot be brought to zero curvature in double precision \
+                 (use alpha between -1.5 and 0 next to a path's inflections, between -1.3 \
+                 and 0 in a spline's)"
             ),
             G2Failure::InflectionsAtOneVertex { vertex } => write!(
                 f,
@@ -94,9 +100,16 @@ impl fmt::Display for G2Failure {
             ),
             G2Failure::SpanInflects => write!(
                 f,
-                "this span (from this point to the next) would have to inflect: the \
-                 curvature changes sign along it or at its ends, and splines through points \
-                 do not pass through inflections yet (G2 paths from a control polygon do)"
+                "this span (from this point to the next) would have to inflect: no single \
+                 segment fits its end tangents; a log-aesthetic curve passes through an \
+                 inflection only for alpha < 0 (and then its two halves may turn by at most \
+                 180 deg each): use alpha < 0, or add points where the curve turns"
+            ),
+            G2Failure::InflectionAtPoint => write!(
+                f,
+                "this span passes through an inflection almost at one of its points (one half \
+                 of its S turns by less than 0.001 rad, too flat to draw in double precision); \
+                 move that point off the curve's inflection, or add a point"
             ),
             G2Failure::InflectionLegTooShort { overlap } => write!(
                 f,

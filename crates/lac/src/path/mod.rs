@@ -42,6 +42,7 @@
 mod banded;
 mod g2;
 mod inflection;
+mod s_span;
 mod spline;
 
 use kurbo::Point;
@@ -53,7 +54,7 @@ use crate::segment::{check_alpha, Segment};
 use crate::turn::Turn;
 
 pub use g2::{G2Failure, G2Outcome, G2_TOLERANCE};
-pub use spline::Spline;
+pub use spline::{Spline, SplineInflection};
 
 /// The largest relative curvature jump a G2 path may have at a joint,
 /// |κ⁻ − κ⁺| / max(|κ⁻|, |κ⁺|).

@@ -1,20 +1,24 @@
 //! G2 splines through points (the interpolating mode, like Clothoids' G2 spline and Spiro):
 //! every span between consecutive points is one log-aesthetic [`Segment`], whose control
-//! triangle is the chord and the intersection of the tangent lines at its ends. The unknowns
-//! are the tangent angles at the points; the equations, curvature continuity at the
-//! interior points (every point of a closed spline). The curvature at the end of span i
-//! depends on the angles at its two ends only, so the Jacobian is tridiagonal (cyclic when
-//! closed) and Newton's method solves it like a path's joints.
+//! triangle is the chord and the intersection of the tangent lines at its ends, or, for
+//! α < 0, one log-aesthetic curve continued through its inflection (an S: two segments that
+//! meet at zero curvature, see `s_span`). The unknowns are the tangent angles at the points;
+//! the equations, curvature continuity at the interior points (every point of a closed
+//! spline). The curvatures at the ends of span i depend on the angles at its two ends only,
+//! so the Jacobian is tridiagonal (cyclic when closed) and Newton's method solves it like a
+//! path's joints.
 //!
-//! Not done: spans that must inflect (their end tangents on the same side of the chord: an
-//! "inflection pair" of segments) and points where the turning changes direction; such
-//! spans are refused, named, with [`G2Failure::SpanInflects`].
+//! A span is a single segment where one fits its end tangents (they leave the chord on
+//! opposite sides and the triangle is drawable) and an S otherwise. For α ≥ 0 no curve
+//! reaches zero curvature, so a span that would need an S is refused, named, with
+//! [`G2Failure::SpanInflects`]; so is a point where the curvature would have to be zero.
 
 use std::f64::consts::{PI, TAU};
 
 use kurbo::{Point, Vec2};
 
-use super::{banded, G2Failure, G2_JUMP_LIMIT, G2_TOLERANCE, MAX_POLYGON_POINTS};
+use super::s_span::{SSpan, Unit, HAIR};
+use super::{banded, G2Failure, G2_JUMP_LIMIT, G2_TOLERANCE, INFLECTION_LIMIT, MAX_POLYGON_POINTS};
 use crate::curve::Curve;
 use crate::error::{finite, Error, Result};
 use crate::segment::{check_alpha, end_curvatures_of, Segment};
@@ -28,6 +32,9 @@ const MAX_STEPS: usize = 60;
 const H: f64 = 1e-7;
 /// Largest change of any tangent angle in one step, radians.
 const MAX_STEP: f64 = 0.2;
+/// An S whose half turns by less than this (radians) has its inflection within a hair of
+/// a point.
+const TINY_HALF: f64 = 1e-3;
 
 /// A G2 spline of log-aesthetic segments through given points.
 ///
@@ -48,9 +55,35 @@ pub struct Spline {
     points: Vec<Point>,
     closed: bool,
     angles: Vec<f64>,
+    /// Control triangle of every piece.
     triangles: Vec<[Point; 3]>,
     segments: Vec<Segment>,
+    /// The span of every piece.
+    spans_of_pieces: Vec<usize>,
     jumps: Vec<f64>,
+    inflections: Vec<SplineInflection>,
+}
+
+/// Where a span of a [`Spline`] passes through an inflection, as measured on its two
+/// segments.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SplineInflection {
+    /// The span (from point `span` to the next).
+    pub span: usize,
+    /// The inflection point.
+    pub point: Point,
+    /// Signed curvature at the end of the segment before it and the start of the one after
+    /// it (within [`INFLECTION_LIMIT`] of the spline's largest |κ| at a point).
+    pub curvatures: [f64; 2],
+    /// Distance between the two segments' ends there, caller's units.
+    pub gap: f64,
+}
+
+/// The shape of one span: one segment (its control triangle) or an S.
+#[derive(Clone, Copy, Debug)]
+enum Shape {
+    Plain([Point; 3]),
+    S(SSpan),
 }
 
 /// The wrapped angle in (−π, π].
@@ -123,7 +156,9 @@ impl Spline {
             angles: Vec::new(),
             triangles: Vec::new(),
             segments: Vec::new(),
+            spans_of_pieces: Vec::new(),
             jumps: Vec::new(),
+            inflections: Vec::new(),
         };
         s.solve(alpha, ends)?;
         Ok(s)
@@ -137,57 +172,109 @@ impl Spline {
         }
     }
 
-    /// The control triangle of span `i` for tangent angles `phi`, or the reason it has none.
-    fn triangle(&self, phi: &[f64], i: usize) -> std::result::Result<[Point; 3], G2Failure> {
+    /// The shape of span `i` for tangent angles `phi` at slope `alpha` (`unit` is the
+    /// unit curve through the inflection, for α < 0) and its signed end curvatures, or why
+    /// it has none.
+    fn shape(
+        &self,
+        alpha: f64,
+        unit: Option<&Unit>,
+        phi: &[f64],
+        i: usize,
+    ) -> Result<(Shape, (f64, f64))> {
         let n = self.points.len();
         let (a, b) = (self.points[i], self.points[(i + 1) % n]);
-        let chord = b - a;
-        let psi = dir(chord);
-        let (ta, tb) = (wrap(phi[i] - psi), wrap(phi[(i + 1) % n] - psi));
+        let (ta, tb) = self.tangents(phi, i);
+        let c = (b - a).hypot();
+        let s_span = || self.s_span_at(unit, phi, i);
         // One segment turns one way: its tangents leave and reach the chord from opposite
         // sides, and turn by less than π.
-        if !(ta * tb < 0.0 && ta.abs() + tb.abs() < PI) {
-            return Err(G2Failure::SpanInflects);
+        if ta * tb < 0.0 && ta.abs() + tb.abs() < PI {
+            let u = c * tb.abs().sin() / (ta.abs() + tb.abs()).sin();
+            let t = [a, a + Vec2::from_angle(phi[i]) * u, b];
+            return match end_curvatures_of(t, alpha) {
+                Ok(k) => Ok((Shape::Plain(t), k)),
+                Err(e) => match s_span() {
+                    Some(s) => Ok((Shape::S(s), s.end_curvatures())),
+                    None => Err(Error::PathSegment {
+                        vertex: i,
+                        source: Box::new(e),
+                    }),
+                },
+            };
         }
-        let c = chord.hypot();
-        let u = c * tb.abs().sin() / (ta.abs() + tb.abs()).sin();
-        Ok([a, a + Vec2::from_angle(phi[i]) * u, b])
+        match s_span() {
+            Some(s) => Ok((Shape::S(s), s.end_curvatures())),
+            None => Err(Error::NoG2Path {
+                leg: i,
+                reason: G2Failure::SpanInflects,
+            }),
+        }
+    }
+
+    /// The angles of span `i`'s end tangents from its chord, in (−π, π].
+    fn tangents(&self, phi: &[f64], i: usize) -> (f64, f64) {
+        let n = self.points.len();
+        let psi = dir(self.points[(i + 1) % n] - self.points[i]);
+        (wrap(phi[i] - psi), wrap(phi[(i + 1) % n] - psi))
+    }
+
+    /// Span `i` as an S, if one fits its end tangents (only for α < 0).
+    fn s_span_at(&self, unit: Option<&Unit>, phi: &[f64], i: usize) -> Option<SSpan> {
+        let n = self.points.len();
+        let (ta, tb) = self.tangents(phi, i);
+        let c = (self.points[(i + 1) % n] - self.points[i]).hypot();
+        unit.and_then(|u| u.s_span(ta, tb, c))
     }
 
     /// End curvatures of every span.
-    fn curvatures(&self, alpha: f64, phi: &[f64]) -> Result<Ends> {
+    fn curvatures(&self, alpha: f64, unit: Option<&Unit>, phi: &[f64]) -> Result<Ends> {
         (0..self.spans())
-            .map(|i| {
-                let t = self
-                    .triangle(phi, i)
-                    .map_err(|reason| Error::NoG2Path { leg: i, reason })?;
-                end_curvatures_of(t, alpha).map_err(|e| Error::PathSegment {
-                    vertex: i,
-                    source: Box::new(e),
-                })
-            })
+            .map(|i| Ok(self.shape(alpha, unit, phi, i)?.1))
             .collect()
     }
 
-    /// ln|κ⁻/κ⁺| at each unknown point (a sign change counts as a failure of the span
-    /// after it).
-    fn residual(&self, k: &[(f64, f64)]) -> std::result::Result<Vec<f64>, usize> {
+    /// The points whose curvature is continuous in a solved spline (the interior points;
+    /// every point when closed).
+    fn unknowns(&self) -> Vec<usize> {
         let n = self.points.len();
-        let unknowns: Vec<usize> = if self.closed {
+        if self.closed {
             (0..n).collect()
         } else {
             (1..n - 1).collect()
-        };
-        unknowns
+        }
+    }
+
+    /// A length at each unknown point: the mean of its two chords.
+    fn lengths(&self) -> Vec<f64> {
+        let n = self.points.len();
+        let p = &self.points;
+        self.unknowns()
+            .iter()
+            .map(|&j| 0.5 * ((p[j] - p[(j + n - 1) % n]).hypot() + (p[(j + 1) % n] - p[j]).hypot()))
+            .collect()
+    }
+
+    /// The residual at each unknown point, (κ⁻ − κ⁺) times its length: unlike ln|κ⁻/κ⁺|,
+    /// it is smooth where the curvature changes sign, so that Newton's method can move a
+    /// span between a segment and an S (where one end's curvature passes through zero).
+    fn residual(&self, k: &[(f64, f64)], lengths: &[f64]) -> Vec<f64> {
+        let n = self.points.len();
+        self.unknowns()
+            .iter()
+            .zip(lengths)
+            .map(|(&j, l)| (k[(j + n - 1) % n].1 - k[j % k.len()].0) * l)
+            .collect()
+    }
+
+    /// The relative curvature jump |κ⁻ − κ⁺| / max(|κ⁻|, |κ⁺|) at each unknown point.
+    fn jumps(&self, k: &[(f64, f64)]) -> Vec<f64> {
+        let n = self.points.len();
+        self.unknowns()
             .iter()
             .map(|&j| {
-                let before = k[(j + n - 1) % n].1;
-                let after = k[j % k.len()].0;
-                if before * after <= 0.0 {
-                    Err(j % k.len())
-                } else {
-                    Ok((before / after).abs().ln())
-                }
+                let (before, after) = (k[(j + n - 1) % n].1, k[j % k.len()].0);
+                (before - after).abs() / before.abs().max(after.abs())
             })
             .collect()
     }
@@ -218,8 +305,19 @@ impl Spline {
             phi[0] = s;
             phi[n - 1] = e;
         }
-        // Continuation in α from the nearest of [0, 1] (where the circles' tangents are
-        // drawable for any sensible points), each stage warm-started from the last.
+        // For α < 0 every pair of end tangents has a segment or an S (up to half-turns of
+        // π), so Newton's method starts at α itself from the circles' tangents.
+        if alpha < 0.0 {
+            if let Ok((p2, r)) = self.newton(alpha, phi.clone()) {
+                if r.iter().all(|x| *x <= 0.5 * G2_JUMP_LIMIT) && self.finish(alpha, p2, r).is_ok()
+                {
+                    return Ok(());
+                }
+            }
+        }
+        // Otherwise, continuation in α from the nearest of [0, 1] (where the circles'
+        // tangents are drawable for any sensible points), each stage warm-started from the
+        // last.
         let start = alpha.clamp(0.0, 1.0);
         let stages = ((alpha - start).abs() / 0.25).ceil().max(0.0) as usize;
         let mut last = Err(Error::NumericalFailure {
@@ -247,50 +345,44 @@ impl Spline {
     }
 
     /// Newton's method on the unknown angles of `phi` at slope `alpha`: the angles and
-    /// residuals reached, or the span that fails at the start.
+    /// relative curvature jumps reached, or the span that fails at the start.
     fn newton(&self, alpha: f64, mut phi: Vec<f64>) -> Result<(Vec<f64>, Vec<f64>)> {
         let n = self.points.len();
-        let unknowns: Vec<usize> = if self.closed {
-            (0..n).collect()
-        } else {
-            (1..n - 1).collect()
-        };
+        let unit = Unit::new(alpha);
+        let unknowns = self.unknowns();
+        let lengths = self.lengths();
         let eval = |phi: &[f64]| -> Result<(Ends, Vec<f64>)> {
-            let k = self.curvatures(alpha, phi)?;
-            let r = self.residual(&k).map_err(|span| Error::NoG2Path {
-                leg: span,
-                reason: G2Failure::SpanInflects,
-            })?;
+            let k = self.curvatures(alpha, unit.as_ref(), phi)?;
+            let r = self.residual(&k, &lengths);
             Ok((k, r))
         };
         let norm = |r: &[f64]| r.iter().map(|x| x * x).sum::<f64>().sqrt();
         let (mut k, mut r) = eval(&phi)?;
         for _ in 0..MAX_STEPS {
-            if r.iter().all(|x| x.abs() <= G2_TOLERANCE) {
+            if self.jumps(&k).iter().all(|x| *x <= G2_TOLERANCE) {
                 break;
             }
-            // ∂ ln|κ_start|, ∂ ln|κ_end| of each span in the angles at its two ends.
+            // ∂κ_start, ∂κ_end of each span in the angles at its two ends.
             let spans = self.spans();
             let mut d = vec![[[0.0; 2]; 2]; spans];
             for (i, di) in d.iter_mut().enumerate() {
                 for (e, end) in [i, (i + 1) % n].into_iter().enumerate() {
                     let mut moved = phi.clone();
                     moved[end] += H;
-                    let t = self.triangle(&moved, i).ok();
-                    let Some(Ok((a, b))) = t.map(|t| end_curvatures_of(t, alpha)) else {
+                    let Ok((_, (a, b))) = self.shape(alpha, unit.as_ref(), &moved, i) else {
                         continue;
                     };
-                    di[e] = [(a / k[i].0).abs().ln() / H, (b / k[i].1).abs().ln() / H];
+                    di[e] = [(a - k[i].0) / H, (b - k[i].1) / H];
                 }
             }
             let m = unknowns.len();
             let (mut sub, mut diag, mut sup) = (vec![0.0; m], vec![0.0; m], vec![0.0; m]);
             for (u, &j) in unknowns.iter().enumerate() {
                 let (before, after) = ((j + n - 1) % n, j % spans);
-                // R_j = ln|κ_end(before)| − ln|κ_start(after)|
-                diag[u] = d[before][1][1] - d[after][0][0];
-                sub[u] = d[before][0][1];
-                sup[u] = -d[after][1][0];
+                // R_j = (κ_end(before) − κ_start(after)) · l_j
+                diag[u] = (d[before][1][1] - d[after][0][0]) * lengths[u];
+                sub[u] = d[before][0][1] * lengths[u];
+                sup[u] = -d[after][1][0] * lengths[u];
             }
             let rhs: Vec<f64> = r.iter().map(|x| -x).collect();
             let Some(dx) = banded::solve(&sub, &diag, &sup, &rhs, self.closed) else {
@@ -316,83 +408,161 @@ impl Spline {
             let Some((p2, k2, r2)) = next else { break };
             (phi, k, r) = (p2, k2, r2);
         }
-        Ok((phi, r))
+        let jumps = self.jumps(&k);
+        Ok((phi, jumps))
     }
 
     /// Check the answer of the last stage and build the segments.
     fn finish(&mut self, alpha: f64, phi: Vec<f64>, r: Vec<f64>) -> Result<()> {
         let n = self.points.len();
-        let unknowns: Vec<usize> = if self.closed {
-            (0..n).collect()
-        } else {
-            (1..n - 1).collect()
-        };
-        let (worst, jump) =
-            r.iter().enumerate().fold(
-                (0, 0.0f64),
-                |(i, m), (j, x)| {
-                    if x.abs() > m {
-                        (j, x.abs())
-                    } else {
-                        (i, m)
-                    }
-                },
-            );
+        let unknowns = self.unknowns();
+        let (worst, jump) = r.iter().enumerate().fold((0, 0.0f64), |(i, m), (j, x)| {
+            if x.abs() > m || x.is_nan() {
+                (j, x.abs())
+            } else {
+                (i, m)
+            }
+        });
         if jump > 0.5 * G2_JUMP_LIMIT {
             return Err(Error::NoG2Path {
                 leg: unknowns[worst],
                 reason: G2Failure::NoConvergence { jump },
             });
         }
-        // The checked segments, and the joints measured on them.
-        let triangles = (0..self.spans())
-            .map(|i| {
-                self.triangle(&phi, i)
-                    .map_err(|reason| Error::NoG2Path { leg: i, reason })
-            })
-            .collect::<Result<Vec<_>>>()?;
-        let segments = triangles
-            .iter()
-            .enumerate()
-            .map(|(i, &t)| {
+        // The checked segments (two for an S span), and the joints measured on them.
+        let unit = Unit::new(alpha);
+        let (mut triangles, mut segments, mut spans_of_pieces) = (vec![], vec![], vec![]);
+        let mut inflection_points = Vec::new();
+        for i in 0..self.spans() {
+            let piece = |t: [Point; 3]| {
                 Segment::from_control_points(t, alpha).map_err(|e| Error::PathSegment {
                     vertex: i,
                     source: Box::new(e),
                 })
-            })
-            .collect::<Result<Vec<_>>>()?;
+            };
+            let (a, b) = (self.points[i], self.points[(i + 1) % n]);
+            let mut s_span = |s: SSpan| -> Result<Vec<Segment>> {
+                inflection_points.push((i, s.inflection(a, b)));
+                let halves = s.halves(a, b, HAIR);
+                triangles.extend(halves);
+                // A half that cannot be drawn lies too near the edge of the drawable
+                // region for the segment solver: its inflection end is unresolved, or the
+                // inflection falls within a hair of a point (the half turns by almost
+                // nothing, its triangle flat to the rounding of its angles).
+                let reason = if s.theta[0].min(s.theta[1]) < TINY_HALF {
+                    G2Failure::InflectionAtPoint
+                } else {
+                    G2Failure::InflectionUnresolved { alpha }
+                };
+                halves
+                    .into_iter()
+                    .map(|t| {
+                        Segment::from_control_points(t, alpha).map_err(|_| Error::NoG2Path {
+                            leg: i,
+                            reason: reason.clone(),
+                        })
+                    })
+                    .collect()
+            };
+            let built = match self.shape(alpha, unit.as_ref(), &phi, i)?.0 {
+                Shape::Plain(t) => match piece(t) {
+                    Ok(segment) => {
+                        triangles.push(t);
+                        vec![segment]
+                    }
+                    // At the edge of the drawable region, where a segment's curvature
+                    // reaches zero at one end, the S family continues it.
+                    Err(e) => match self.s_span_at(unit.as_ref(), &phi, i) {
+                        Some(s) => s_span(s)?,
+                        None => return Err(e),
+                    },
+                },
+                Shape::S(s) => s_span(s)?,
+            };
+            for segment in built {
+                segments.push(segment);
+                spans_of_pieces.push(i);
+            }
+        }
         let size = self
             .points
             .iter()
             .map(|q| (*q - self.points[0]).hypot())
             .fold(0.0, f64::max);
+        // The curvature scale: the largest |κ| at a point.
+        let scale = segments
+            .iter()
+            .zip(&spans_of_pieces)
+            .enumerate()
+            .flat_map(|(k, (seg, &span))| {
+                let (k0, k1) = seg.end_curvatures();
+                let first = k == 0 || spans_of_pieces[k - 1] != span;
+                let last = k + 1 == segments.len() || spans_of_pieces[k + 1] != span;
+                [if first { k0 } else { 0.0 }, if last { k1 } else { 0.0 }]
+            })
+            .fold(0.0f64, |m, k| m.max(k.abs()));
         let pairs = if self.closed {
             segments.len()
         } else {
             segments.len() - 1
         };
-        let mut jumps = Vec::new();
-        for i in 0..pairs {
-            let (a, b) = (&segments[i], &segments[(i + 1) % segments.len()]);
+        let failure = || Error::NumericalFailure {
+            what: "the spline's joint check (a point's position, tangent or curvature does \
+                   not match)",
+        };
+        let (mut jumps, mut inflections) = (Vec::new(), Vec::new());
+        for k in 0..pairs {
+            let next = (k + 1) % segments.len();
+            let (a, b) = (&segments[k], &segments[next]);
             let gap = (a.end_point() - b.start_point()).hypot();
             let dt = wrap(
                 a.theta_of(&a.station_at_turning(a.turning_angle())?)
                     - b.theta_of(&b.station_at_turning(0.0)?),
             );
             let (k0, k1) = (a.end_curvatures().1, b.end_curvatures().0);
-            let jump = (k0 - k1).abs() / k0.abs().max(k1.abs());
-            if !(gap <= 1e-10 * size && dt.abs() <= 1e-10 && jump <= G2_JUMP_LIMIT) {
-                return Err(Error::NumericalFailure {
-                    what: "the spline's joint check (a point's position, tangent or \
-                           curvature does not match)",
-                });
+            if !(gap <= 1e-10 * size && dt.abs() <= 1e-10) {
+                return Err(failure());
             }
-            jumps.push(jump);
+            if spans_of_pieces[k] == spans_of_pieces[next] {
+                // The two halves of an S, at the inflection.
+                let flat = k0.abs().max(k1.abs());
+                if !(flat <= INFLECTION_LIMIT * scale && k0 * k1 <= 0.0) {
+                    return Err(Error::NoG2Path {
+                        leg: spans_of_pieces[k],
+                        reason: G2Failure::InflectionUnresolved { alpha },
+                    });
+                }
+                let span = spans_of_pieces[k];
+                let point = inflection_points
+                    .iter()
+                    .find(|(i, _)| *i == span)
+                    .map_or(a.end_point(), |(_, p)| *p);
+                inflections.push(SplineInflection {
+                    span,
+                    point,
+                    curvatures: [k0, k1],
+                    gap,
+                });
+            } else {
+                let jump = (k0 - k1).abs() / k0.abs().max(k1.abs());
+                if !(jump <= G2_JUMP_LIMIT && jump.is_finite()) {
+                    // Newton's answer met the tolerance on the curvatures it computed; the
+                    // segments as built differ from them (a curvature near zero at a
+                    // point, where both ends' digits are few).
+                    return Err(Error::NoG2Path {
+                        leg: spans_of_pieces[next],
+                        reason: G2Failure::NoConvergence { jump },
+                    });
+                }
+                jumps.push(jump);
+            }
         }
         self.angles = phi;
         self.triangles = triangles;
         self.segments = segments;
+        self.spans_of_pieces = spans_of_pieces;
         self.jumps = jumps;
+        self.inflections = inflections;
         Ok(())
     }
 
@@ -411,10 +581,23 @@ impl Spline {
         &self.angles
     }
 
-    /// The control triangle of each span as solved: (its first point, the intersection of
-    /// its end tangents, its last point), the points exactly as given.
+    /// The control triangle of each piece as solved: (its first point, the intersection of
+    /// its end tangents, its last point), the points exactly as given. A span through an
+    /// inflection has two pieces, each ending a hair (1e-12 of its length) short of the
+    /// inflection point.
     pub fn control_triangles(&self) -> &[[Point; 3]] {
         &self.triangles
+    }
+
+    /// The span of each piece (span i runs from point i to the next): one piece per span,
+    /// two for a span through an inflection.
+    pub fn spans_of_pieces(&self) -> &[usize] {
+        &self.spans_of_pieces
+    }
+
+    /// The inflections, one per span that passes through one (only for α < 0), in order.
+    pub fn inflections(&self) -> &[SplineInflection] {
+        &self.inflections
     }
 
     /// The relative curvature jump measured at each joint (the interior points; every

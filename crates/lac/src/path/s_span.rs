@@ -1,0 +1,337 @@
+//! The span of a spline that passes through an inflection (α < 0): one log-aesthetic curve
+//! continued through its point of zero curvature, drawn as two segments that meet there.
+//!
+//! For α < 0 every log-aesthetic curve is, up to similarity, a piece of one curve: with arc
+//! length u from its inflection, κ(u) = sign(u)·|u|^p, p = −1/α (SPEC §2, the inflection end
+//! at finite length; α = −1 is the clothoid, κ = u). Its tangent angle, measured from the
+//! inflection tangent, is t(u) = |u|^(p+1)/(p+1) on both sides, so the piece from u = −U₁ to
+//! U₂ starts at angle θ₁ = t(U₁), turns back to 0 at the inflection and on to θ₂ = t(U₂):
+//! an S. Its chord is F(θ₁) + F(θ₂), with
+//!
+//! ```text
+//! F(θ) = ∫₀^U e^{i t(u)} du = a^(1−a) ∫₀^θ τ^(a−1) e^{iτ} dτ
+//!      = a^(1−a) Σₖ iᵏ θ^(k+a) / (k! (k+a)),        a = 1/(p+1) = −α/(1−α) ∈ (0, 1),
+//! ```
+//!
+//! (at α = −1 a Fresnel integral), and its end curvatures are ∓(θ/a)^(1−a) per unit of
+//! scale. Given the span's end tangents relative to its chord (ta, tb), the S is fixed up to
+//! its size by the chord's direction A in the curve's own frame: θ₁ = σ·ta + A,
+//! θ₂ = σ·tb + A, and A = arg(F(θ₁) + F(θ₂)), one equation in A (σ = ±1 picks the mirror
+//! image). The spline's Newton iteration sees an S span like any other, through its two end
+//! curvatures, which depend on the two end tangents only.
+//!
+//! The two halves are built as segments by [`Segment::from_control_points`] on the control
+//! triangles of the pieces from each end to a hair short of the inflection: a share
+//! [`HAIR`] of the half's length, so that the halves' ends are within rounding of one
+//! another (a [`Segment`] has no station at zero curvature).
+
+use std::f64::consts::PI;
+
+use kurbo::{Point, Vec2};
+
+use crate::numeric::Complex;
+
+/// Largest turning of one half, radians: the series for F loses about a digit per radian
+/// beyond π, and a spline's span that turns by more is a loop, not an S.
+const MAX_HALF_TURNING: f64 = PI;
+
+/// The unit curve through its inflection for one α < 0.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Unit {
+    /// a = −α/(1−α).
+    a: f64,
+    /// a^(1−a).
+    k: f64,
+}
+
+impl Unit {
+    /// The unit curve of slope `alpha`, or `None` for α ≥ 0 (no inflection at finite
+    /// length).
+    pub(super) fn new(alpha: f64) -> Option<Unit> {
+        if !(alpha < 0.0 && alpha.is_finite()) {
+            return None;
+        }
+        let a = -alpha / (1.0 - alpha);
+        Some(Unit {
+            a,
+            k: a.powf(1.0 - a),
+        })
+    }
+
+    /// F(θ): the chord from the inflection to the point of tangent angle θ ≥ 0.
+    pub(super) fn chord(&self, theta: f64) -> Complex {
+        if theta <= 0.0 {
+            return Complex::ZERO;
+        }
+        // Σ (iθ)^k / k! / (k + a): terms fall below 1e-17 of the largest (about e^θ) by
+        // k = 40 for θ ≤ π.
+        let (mut re, mut im) = (0.0, 0.0);
+        let mut term = 1.0; // θ^k / k!
+        for k in 0..60 {
+            let t = term / (k as f64 + self.a);
+            match k % 4 {
+                0 => re += t,
+                1 => im += t,
+                2 => re -= t,
+                _ => im -= t,
+            }
+            if k as f64 > theta && term < 1e-18 {
+                break;
+            }
+            term *= theta / (k + 1) as f64;
+        }
+        Complex::new(re, im).scale(self.k * theta.powf(self.a))
+    }
+
+    /// dF/dθ = a^(1−a) θ^(a−1) e^{iθ}.
+    fn chord_derivative(&self, theta: f64) -> Complex {
+        Complex::cis(theta).scale(self.k * theta.powf(self.a - 1.0))
+    }
+
+    /// |κ| at the point of tangent angle θ, on the unit curve: (θ/a)^(1−a).
+    fn kappa(&self, theta: f64) -> f64 {
+        (theta / self.a).powf(1.0 - self.a)
+    }
+
+    /// The S span whose end tangents make the angles `ta` and `tb` (in (−π, π]) with its
+    /// chord of length `chord`, or `None` when there is none that turns by at most
+    /// [`MAX_HALF_TURNING`] each way. Of the two mirror images, the one that turns less.
+    pub(super) fn s_span(&self, ta: f64, tb: f64, chord: f64) -> Option<SSpan> {
+        [1.0, -1.0]
+            .into_iter()
+            .filter_map(|sigma| self.s_span_of(sigma, ta, tb, chord))
+            .min_by(|x, y| (x.theta[0] + x.theta[1]).total_cmp(&(y.theta[0] + y.theta[1])))
+    }
+
+    /// The S of orientation `sigma` (+1: it turns right first): the root A of
+    /// g(A) = arg(F(σ·ta + A) + F(σ·tb + A)) − A nearest to its smallest admissible value.
+    fn s_span_of(&self, sigma: f64, ta: f64, tb: f64, chord: f64) -> Option<SSpan> {
+        let (d, e) = (sigma * ta, sigma * tb);
+        let g = |a: f64| -> (f64, Complex) {
+            let c = self.chord(d + a) + self.chord(e + a);
+            (c.arg() - a, c)
+        };
+        let admissible = |a: f64| (d + a).max(e + a) <= MAX_HALF_TURNING;
+        // At the smallest A one half has zero turning: g > 0 there, or no root follows.
+        let mut lo = 0.0f64.max(-d).max(-e);
+        if !admissible(lo) || g(lo).0 <= 0.0 {
+            return None;
+        }
+        let mut step = 0.05;
+        let mut hi = lo;
+        loop {
+            let next = hi + step;
+            if !admissible(next) {
+                return None;
+            }
+            if g(next).0 <= 0.0 {
+                hi = next;
+                break;
+            }
+            lo = next;
+            hi = next;
+            step *= 1.6;
+        }
+        // Newton's method on g, kept inside the bracket [lo, hi] (bisection when it leaves).
+        let mut x = 0.5 * (lo + hi);
+        for _ in 0..100 {
+            let (gx, c) = g(x);
+            if gx > 0.0 {
+                lo = x;
+            } else {
+                hi = x;
+            }
+            let dc = self.chord_derivative(d + x) + self.chord_derivative(e + x);
+            let slope = dc.div(c).im - 1.0;
+            let newton = x - gx / slope;
+            let next = if slope < 0.0 && newton > lo && newton < hi {
+                newton
+            } else {
+                0.5 * (lo + hi)
+            };
+            if (next - x).abs() <= 4.0 * f64::EPSILON * x.abs().max(1.0) || hi - lo <= 1e-15 {
+                x = next;
+                break;
+            }
+            x = next;
+        }
+        let c = self.chord(d + x) + self.chord(e + x);
+        let theta = [d + x, e + x];
+        let scale = chord / c.norm();
+        (theta.iter().all(|t| *t >= 0.0) && scale.is_finite() && scale > 0.0).then_some(SSpan {
+            unit: *self,
+            sigma,
+            theta,
+            angle: x,
+            scale,
+        })
+    }
+}
+
+/// An S span in its own frame: which mirror image, how far each half turns, and its size.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct SSpan {
+    unit: Unit,
+    /// +1 when it turns right first (negative curvature at its start), −1 when left.
+    sigma: f64,
+    /// The turning of the half from the start to the inflection and of the half after it.
+    pub(super) theta: [f64; 2],
+    /// The chord's direction from the inflection tangent, in the curve's frame (A).
+    angle: f64,
+    /// Caller's lengths per unit-curve length.
+    scale: f64,
+}
+
+impl SSpan {
+    /// The signed curvature at its start and end.
+    pub(super) fn end_curvatures(&self) -> (f64, f64) {
+        let [t1, t2] = self.theta;
+        (
+            -self.sigma * self.unit.kappa(t1) / self.scale,
+            self.sigma * self.unit.kappa(t2) / self.scale,
+        )
+    }
+
+    /// Placement of the curve's frame for the chord from `start` to `end`: the point of the
+    /// caller's plane at unit-frame point z (measured from the inflection).
+    fn place(&self, start: Point, end: Point) -> impl Fn(Complex) -> Point {
+        let chord = end - start;
+        let psi = chord.y.atan2(chord.x) - self.sigma * self.angle;
+        let rot = Complex::cis(psi).scale(self.scale);
+        let z0 = -self.unit.chord(self.theta[0]);
+        let sigma = self.sigma;
+        move |z: Complex| {
+            let local = z - z0;
+            let local = if sigma < 0.0 { local.conj() } else { local };
+            let w = rot * local;
+            start + Vec2::new(w.re, w.im)
+        }
+    }
+
+    /// The inflection point, for the chord from `start` to `end`.
+    pub(super) fn inflection(&self, start: Point, end: Point) -> Point {
+        self.place(start, end)(Complex::ZERO)
+    }
+
+    /// The control triangles of the two halves from `start` and to `end`, each stopping a
+    /// share `hair` of its length short of the inflection.
+    pub(super) fn halves(&self, start: Point, end: Point, hair: f64) -> [[Point; 3]; 2] {
+        let place = self.place(start, end);
+        let unit = self.unit;
+        // The tangent angle a share `hair` of the half's length from the inflection:
+        // t ∝ u^(1/a).
+        let near = |theta: f64| theta * hair.powf(1.0 / unit.a);
+        let [t1, t2] = self.theta;
+        // Half 1 runs from −F(θ₁) (angle θ₁) to −F(near) (angle near); half 2 from
+        // F(near) to F(θ₂). The travel tangent at a point of angle t is e^{it} on both.
+        let first = triangle(-unit.chord(t1), t1, -unit.chord(near(t1)), near(t1));
+        let second = triangle(unit.chord(near(t2)), near(t2), unit.chord(t2), t2);
+        let mut out = [first.map(&place), second.map(&place)];
+        out[0][0] = start;
+        out[1][2] = end;
+        out
+    }
+}
+
+/// The control triangle (in the unit frame) of the piece from `p` (tangent angle `tp`) to
+/// `q` (tangent angle `tq`): its ends and the intersection of their tangents.
+fn triangle(p: Complex, tp: f64, q: Complex, tq: f64) -> [Complex; 3] {
+    let (dp, dq) = (Complex::cis(tp), Complex::cis(tq));
+    let w = q - p;
+    let cross = |u: Complex, v: Complex| u.re * v.im - u.im * v.re;
+    // p + s·dp = q − r·dq: s = (w × dq) / (dp × dq).
+    let s = cross(w, dq) / cross(dp, dq);
+    [p, p + dp.scale(s), q]
+}
+
+/// The share of a half's length left out next to the inflection. The curvature there is
+/// a share HAIR^(1/|α|) of the half's other end: 1e-12 for α = −1, below
+/// [`INFLECTION_LIMIT`](super::INFLECTION_LIMIT) down to α ≈ −1.3 (a spline checks it).
+/// Shorter hairs put the halves' triangles closer to the edge of the drawable region than
+/// the segment solver resolves.
+pub(super) const HAIR: f64 = 1e-12;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// F by Gauss–Legendre on the smooth form ∫₀^U e^{i t(u)} du.
+    fn chord_by_quadrature(alpha: f64, theta: f64) -> Complex {
+        let p = -1.0 / alpha;
+        let big_u = ((p + 1.0) * theta).powf(1.0 / (p + 1.0));
+        let n = 20_000;
+        let h = big_u / n as f64;
+        // Simpson's rule.
+        let f = |u: f64| Complex::cis(u.powf(p + 1.0) / (p + 1.0));
+        let mut sum = f(0.0) + f(big_u);
+        for i in 1..n {
+            let w = if i % 2 == 1 { 4.0 } else { 2.0 };
+            sum += f(i as f64 * h).scale(w);
+        }
+        sum.scale(h / 3.0)
+    }
+
+    #[test]
+    fn the_series_is_the_integral() {
+        for alpha in [-0.25, -0.5, -1.0, -1.5] {
+            let unit = Unit::new(alpha).unwrap();
+            for theta in [0.01, 0.5, 1.5, 3.0] {
+                let (s, q) = (unit.chord(theta), chord_by_quadrature(alpha, theta));
+                assert!((s - q).norm() < 1e-10, "{alpha} {theta}: {s:?} {q:?}");
+            }
+        }
+        // α = −1: the clothoid, F(θ) = ∫₀^√(2θ) e^{iu²/2} du; at θ = π/2, √π·(C, S)(1).
+        let f = Unit::new(-1.0).unwrap().chord(PI / 2.0);
+        let (c1, s1) = (0.779_893_400_376_822_8, 0.438_259_147_390_354_8);
+        let k = PI.sqrt();
+        assert!((f.re - k * c1).abs() < 1e-14 && (f.im - k * s1).abs() < 1e-14);
+    }
+
+    #[test]
+    fn an_s_span_meets_its_tangents() {
+        let unit = Unit::new(-0.5).unwrap();
+        for (ta, tb) in [(0.4, 0.3), (-0.2, -0.7), (0.05, 0.9), (0.3, -0.05)] {
+            let s = unit.s_span(ta, tb, 2.0).expect("an S");
+            let [t1, t2] = s.theta;
+            let c = unit.chord(t1) + unit.chord(t2);
+            assert!((c.arg() - s.angle).abs() < 1e-14);
+            assert!((s.sigma * (t1 - s.angle) - ta).abs() < 1e-14);
+            assert!((s.sigma * (t2 - s.angle) - tb).abs() < 1e-14);
+            assert!((c.norm() * s.scale - 2.0).abs() < 1e-14);
+        }
+    }
+
+    /// The halves built as segments (by the chord-angle solver, on their triangles) have
+    /// the end curvatures of the formula, and meet at zero curvature.
+    #[test]
+    fn the_halves_as_segments() {
+        use crate::segment::Segment;
+        for alpha in [-0.25, -0.5, -1.0, -1.3] {
+            let unit = Unit::new(alpha).unwrap();
+            for (ta, tb) in [
+                (0.4, 0.3),
+                (0.05, 0.9),
+                (0.9, 0.05),
+                (0.2, 0.02),
+                (-0.6, -0.1),
+            ] {
+                let s = unit.s_span(ta, tb, 2.0).expect("an S");
+                let (a, b) = (Point::new(0.5, -1.0), Point::new(1.7, 0.6));
+                let [h0, h1] = s.halves(a, b, HAIR);
+                let (k0, k1) = s.end_curvatures();
+                let first = Segment::from_control_points(h0, alpha).unwrap();
+                let second = Segment::from_control_points(h1, alpha).unwrap();
+                let (f0, f1) = first.end_curvatures();
+                let (g0, g1) = second.end_curvatures();
+                assert!((f0 - k0).abs() <= 1e-13 * k0.abs(), "{alpha} {ta} {tb}");
+                assert!((g1 - k1).abs() <= 1e-13 * k1.abs(), "{alpha} {ta} {tb}");
+                assert!(f1.abs().max(g0.abs()) <= 1e-9 * k0.abs().max(k1.abs()));
+                assert!(f1 * g0 <= 0.0 && k0 * k1 < 0.0);
+                let gap = (first.last_point() - second.first_point()).hypot();
+                assert!(gap <= 1e-11, "{gap}");
+                let m = s.inflection(a, b);
+                assert!((m - first.last_point()).hypot() <= 1e-11);
+            }
+        }
+    }
+}

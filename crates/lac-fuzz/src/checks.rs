@@ -5,7 +5,7 @@ use kurbo::{ParamCurve, Point, Vec2};
 use lac::{
     curvature_plot, log_curvature_graph, Alphas, CompoundCurve, ControlPolygon, Curve,
     Monotonicity, Path, QuasiCurve, RationalCubic, Sample, Segment, SpaceSegment, SpaceShape,
-    Tolerance, TorsionType, Vec3,
+    Spline, Tolerance, TorsionType, Vec3, INFLECTION_LIMIT,
 };
 
 use lac_io::export::json::{ExportDocument, NurbsRow};
@@ -163,6 +163,19 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
             check_path(&path, *closed, *g2)?;
             Ok(true)
         }
+        Input::Spline {
+            points,
+            alpha,
+            closed,
+            ends,
+        } => {
+            let pts: Vec<Point> = points.iter().map(|&p| pt(p)).collect();
+            let Ok(spline) = Spline::g2(&pts, *alpha, *closed, *ends) else {
+                return Ok(false);
+            };
+            check_spline(&spline)?;
+            Ok(true)
+        }
         Input::Space { points, .. } => {
             let pts = points.map(Vec3::from_array);
             let Some(Built::Space(seg)) = build(input) else {
@@ -306,7 +319,10 @@ fn build(input: &Input) -> Option<Built> {
                 .ok()
                 .map(Built::Space)
         }
-        Input::Monotone { .. } | Input::Analysis { .. } | Input::Export { .. } => None,
+        Input::Monotone { .. }
+        | Input::Analysis { .. }
+        | Input::Export { .. }
+        | Input::Spline { .. } => None,
     }
 }
 
@@ -677,6 +693,86 @@ fn check_path(path: &Path, closed: bool, g2: bool) -> Result<(), String> {
                 "curvature jumps after segment {i}: {ka:e} to {kb:e}"
             ));
         }
+    }
+    Ok(())
+}
+
+/// A spline: each piece on its control triangle (ends, end tangents, monotone curvature,
+/// chords between tangents); each span from its point to the next; consecutive pieces meet
+/// with continuous position and tangent, with curvature continuous (relative) at the points
+/// and zero on both sides (with a sign change) at a span's inflection.
+fn check_spline(spline: &Spline) -> Result<(), String> {
+    let pieces = spline.pieces();
+    let triangles = spline.control_triangles();
+    let spans = spline.spans_of_pieces();
+    let points = spline.points();
+    if pieces.len() != triangles.len() || pieces.len() != spans.len() || pieces.is_empty() {
+        return Err("pieces, triangles and spans disagree in number".to_string());
+    }
+    finite("arc length", &[spline.arc_length()])?;
+    for (seg, t) in pieces.iter().zip(triangles) {
+        check_curve(
+            seg,
+            &[t[0], t[1]],
+            &[t[1], t[2]],
+            9,
+            1e-3 * seg.arc_length(),
+        )?;
+    }
+    let all: Vec<Point> = triangles.iter().flatten().copied().collect();
+    let size = spline.arc_length();
+    let tol = bounds::POSITION * size + rounding(&all);
+    let n = pieces.len();
+    let kmax = pieces
+        .iter()
+        .map(|p| p.curvature_start().abs().max(p.curvature_end().abs()))
+        .fold(0.0, f64::max);
+    for k in 0..n {
+        let i = spans[k];
+        let first = k == 0 || spans[k - 1] != i;
+        let last = k + 1 == n || spans[k + 1] != i;
+        let (a, b) = (points[i], points[(i + 1) % points.len()]);
+        if first && dist(pieces[k].start_point(), a) > 64.0 * tol {
+            return Err(format!("span {i} does not start at its point"));
+        }
+        if last && dist(pieces[k].end_point(), b) > 64.0 * tol {
+            return Err(format!("span {i} does not end at its point"));
+        }
+    }
+    let pairs = n - usize::from(!spline.is_closed());
+    for k in 0..pairs {
+        let (a, b) = (&pieces[k], &pieces[(k + 1) % n]);
+        let (pa, pb) = (a.end_point(), b.start_point());
+        if dist(pa, pb) > 64.0 * tol {
+            return Err(format!("pieces {k} and {} {:e} apart", k + 1, dist(pa, pb)));
+        }
+        let ta = a.theta_at_s(a.arc_length()).map_err(|e| e.to_string())?;
+        let tb = b.theta_at_s(0.0).map_err(|e| e.to_string())?;
+        let tau = std::f64::consts::TAU;
+        let jump = (ta - tb) - tau * ((ta - tb) / tau).round();
+        if jump.abs() > bounds::TANGENT + 1e3 * tol / size {
+            return Err(format!("tangent jumps {jump:e} rad after piece {k}"));
+        }
+        let (ka, kb) = (a.curvature_end(), b.curvature_start());
+        if spans[k] == spans[(k + 1) % n] {
+            if !(ka.abs().max(kb.abs()) <= INFLECTION_LIMIT * kmax && ka * kb <= 0.0) {
+                return Err(format!(
+                    "no inflection in span {}: {ka:e}, {kb:e}",
+                    spans[k]
+                ));
+            }
+        } else if (ka - kb).abs() > bounds::JOINT_CURVATURE * ka.abs().max(kb.abs()) {
+            return Err(format!("curvature jumps after piece {k}: {ka:e} to {kb:e}"));
+        }
+    }
+    for q in spline
+        .sample_by_arc_length(65)
+        .map_err(|e| format!("sampling a solved spline failed: {e}"))?
+    {
+        finite(
+            "spline sample",
+            &[q.s, q.point.x, q.point.y, q.theta, q.kappa],
+        )?;
     }
     Ok(())
 }

@@ -508,3 +508,39 @@ pub(crate) fn export(rng: &mut Rng) -> Input {
         single_spans: rng.chance(0.2),
     }
 }
+
+pub(crate) fn spline(rng: &mut Rng) -> Input {
+    // The points of a path's polygon (around a circle, a zigzag, anything; degenerate and
+    // far-away variants), or a wave whose turning changes direction (S spans for α < 0).
+    let Input::Path {
+        mut points,
+        mut closed,
+        ..
+    } = path(rng)
+    else {
+        unreachable!("path() draws paths")
+    };
+    if rng.chance(0.3) {
+        let (n, step, phase) = (
+            3 + rng.below(10),
+            rng.uniform(0.3, 1.5),
+            rng.uniform(0.0, 6.3),
+        );
+        let amplitude = rng.uniform(0.1, 2.0);
+        points = (0..n)
+            .map(|i| {
+                let x = i as f64 * rng.uniform(0.7, 1.3);
+                [x, amplitude * (step * i as f64 + phase).sin()]
+            })
+            .collect();
+        closed = false;
+    }
+    let ends =
+        (!closed && rng.chance(0.2)).then(|| [rng.uniform(-3.2, 3.2), rng.uniform(-3.2, 3.2)]);
+    Input::Spline {
+        points,
+        alpha: alpha(rng),
+        closed,
+        ends,
+    }
+}

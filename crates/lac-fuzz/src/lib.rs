@@ -102,6 +102,17 @@ pub enum Input {
         /// Curvature continuous at the joints (else joints at the leg midpoints).
         g2: bool,
     },
+    /// `Spline::g2` through points.
+    Spline {
+        /// The points it passes through.
+        points: Vec<[f64; 2]>,
+        /// α.
+        alpha: f64,
+        /// A closed spline.
+        closed: bool,
+        /// An open spline's end tangent directions (None: the circles').
+        ends: Option<[f64; 2]>,
+    },
     /// `SpaceSegment::from_control_points`.
     Space {
         /// P0..P3.
@@ -152,11 +163,13 @@ pub enum EntryPoint {
     Path,
     /// CAD export of solved curves.
     Export,
+    /// G2 splines through points.
+    Spline,
 }
 
 impl EntryPoint {
     /// Every entry point.
-    pub const ALL: [EntryPoint; 9] = [
+    pub const ALL: [EntryPoint; 10] = [
         EntryPoint::Segment,
         EntryPoint::Compound3,
         EntryPoint::Compound4,
@@ -166,6 +179,7 @@ impl EntryPoint {
         EntryPoint::Space,
         EntryPoint::Path,
         EntryPoint::Export,
+        EntryPoint::Spline,
     ];
 
     /// Its name on the command line and in reports.
@@ -180,6 +194,7 @@ impl EntryPoint {
             EntryPoint::Space => "space",
             EntryPoint::Path => "path",
             EntryPoint::Export => "export",
+            EntryPoint::Spline => "spline",
         }
     }
 
@@ -218,6 +233,7 @@ impl EntryPoint {
             EntryPoint::Space => generate::space(rng),
             EntryPoint::Path => generate::path(rng),
             EntryPoint::Export => generate::export(rng),
+            EntryPoint::Spline => generate::spline(rng),
         }
     }
 }

@@ -28,6 +28,8 @@ type Ends = Vec<(f64, f64)>;
 
 /// Most Newton steps.
 const MAX_STEPS: usize = 60;
+/// Most stages of the continuation in α.
+const MAX_STAGES: f64 = 12.0;
 /// Step of the forward differences in the tangent angles, radians.
 const H: f64 = 1e-7;
 /// Largest change of any tangent angle in one step, radians.
@@ -319,7 +321,8 @@ impl Spline {
         // tangents are drawable for any sensible points), each stage warm-started from the
         // last.
         let start = alpha.clamp(0.0, 1.0);
-        let stages = ((alpha - start).abs() / 0.25).ceil().max(0.0) as usize;
+        // (Steps of 0.25 in α, at most MAX_STAGES of them: each stage is a Newton solve.)
+        let stages = ((alpha - start).abs() / 0.25).ceil().clamp(0.0, MAX_STAGES) as usize;
         let mut last = Err(Error::NumericalFailure {
             what: "the spline's continuation in alpha",
         });

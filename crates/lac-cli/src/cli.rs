@@ -756,9 +756,9 @@ pub(crate) struct ServeArgs {
 /// Arguments of `lac export`.
 #[derive(Debug, Args)]
 pub(crate) struct ExportArgs {
-    /// One result of lac segment, lac compound, lac path or lac space to export ("-":
-    /// standard input; nothing, without --points or --polygon: standard input when it is
-    /// not a terminal)
+    /// One result of lac segment, lac compound, lac path, lac spline or lac space to export
+    /// ("-": standard input; nothing, without --points, --polygon or --through: standard
+    /// input when it is not a terminal)
     #[arg(value_name = "FILE", conflicts_with = "points")]
     pub(crate) input: Option<PathBuf>,
 
@@ -783,6 +783,16 @@ pub(crate) struct ExportArgs {
     )]
     pub(crate) polygon: Option<String>,
 
+    /// A spline: the points it passes through "x0,y0 x1,y1 …" (at least three), with
+    /// --alpha, and --closed or --start-angle/--end-angle as lac spline takes them
+    #[arg(
+        long,
+        value_name = "POINTS",
+        allow_hyphen_values = true,
+        conflicts_with_all = ["points", "input", "polygon"]
+    )]
+    pub(crate) through: Option<String>,
+
     /// A path: one slope per segment "a1,a2,…"
     #[arg(
         long,
@@ -793,9 +803,28 @@ pub(crate) struct ExportArgs {
     )]
     pub(crate) alphas: Option<String>,
 
-    /// A path: close the polygon
-    #[arg(long, requires = "polygon")]
+    /// A path or spline: close the polygon (the spline through the points)
+    #[arg(long)]
     pub(crate) closed: bool,
+
+    /// A spline: the tangent direction at the first point, radians
+    #[arg(
+        long,
+        value_name = "R",
+        allow_hyphen_values = true,
+        requires_all = ["through", "end_angle"],
+        conflicts_with = "closed"
+    )]
+    pub(crate) start_angle: Option<f64>,
+
+    /// A spline: the tangent direction at the last point, radians
+    #[arg(
+        long,
+        value_name = "R",
+        allow_hyphen_values = true,
+        requires_all = ["through", "start_angle"]
+    )]
+    pub(crate) end_angle: Option<f64>,
 
     /// A path: solve the joints for continuous curvature (G2)
     #[arg(long, requires = "polygon", conflicts_with = "fractions")]

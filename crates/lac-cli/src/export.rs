@@ -1,13 +1,15 @@
-//! `lac export`: a segment, compound curve, path or space segment written for CAD systems as
+//! `lac export`: a segment, compound curve, path, spline or space segment written for CAD
+//! systems as
 //! rational degree-3 B-splines (DXF, STEP, IGES, JSON) or plain cubics (SVG) within a
 //! tolerance, with the deviation achieved measured on what was written
 //! ([`lac_io::export`]).
 
-use lac::Tolerance;
+use kurbo::Point;
+use lac::{Spline, Tolerance};
 use lac_io::export::{export, ExportCurve, Format, Meta, DEFAULT_TOLERANCE};
 use lac_io::json::{
     to_line, CurveInput, ErrorBody, LcgInput, PathInput, PathReport, SegmentInput, Solved,
-    SpaceInput,
+    SpaceInput, SplineReport,
 };
 
 use crate::cli::{ExportArgs, ExportFormat};
@@ -17,18 +19,28 @@ use crate::input::read_document;
 use crate::limits::Limits;
 use crate::output::write_document;
 use crate::path::path_input;
-use crate::points::{parse_points, parse_space_points};
+use crate::points::{kurbo_points, parse_points, parse_polygon, parse_space_points};
 
 /// What to give when there is nothing to read.
 const HINT: &str = "give --points with --alpha (and --alpha0/--alpha1/--ratio or --beta), \
-                    --polygon with --alpha or --alphas, or a FILE with a lac segment, \
-                    compound, path or space result, or pipe one in";
+                    --polygon with --alpha or --alphas, --through with --alpha, or a FILE \
+                    with a lac segment, compound, path, spline or space result, or pipe \
+                    one in";
 
 /// What the arguments ask to export.
 enum Input {
     Plane(CurveInput),
     Path(PathInput),
+    Spline(SplineInput),
     Space(SpaceInput),
+}
+
+/// A spline's points, slope, closure and end tangents (as `lac spline` takes them).
+struct SplineInput {
+    points: Vec<Point>,
+    alpha: f64,
+    closed: bool,
+    ends: Option<[f64; 2]>,
 }
 
 /// Run `lac export`.
@@ -42,7 +54,27 @@ pub(crate) fn run(args: &ExportArgs, limits: Limits) -> Result<(), ErrorBody> {
         (Some(t), None) => Tolerance::Absolute(t),
         (None, None) => Tolerance::Absolute(DEFAULT_TOLERANCE),
     };
-    let input = if let Some(polygon) = &args.polygon {
+    if args.closed && args.polygon.is_none() && args.through.is_none() {
+        return Err(errors::usage(
+            "--closed closes a path's polygon (--polygon) or a spline (--through)",
+        ));
+    }
+    let input = if let Some(through) = &args.through {
+        let Some(alpha) = args.alpha else {
+            return Err(errors::usage("a spline (--through) needs --alpha"));
+        };
+        if args.alpha0.is_some() || args.alpha1.is_some() || args.beta.is_some() {
+            return Err(errors::usage(
+                "a spline takes --alpha: drop --alpha0, --alpha1 and --beta",
+            ));
+        }
+        Input::Spline(SplineInput {
+            points: kurbo_points(&parse_polygon(through, 3, lac::MAX_POLYGON_POINTS)?),
+            alpha,
+            closed: args.closed,
+            ends: args.start_angle.zip(args.end_angle).map(|(a, b)| [a, b]),
+        })
+    } else if let Some(polygon) = &args.polygon {
         if args.alpha0.is_some() || args.alpha1.is_some() || args.beta.is_some() {
             return Err(errors::usage(
                 "a path takes --alpha or --alphas: drop --alpha0, --alpha1 and --beta",
@@ -100,6 +132,16 @@ pub(crate) fn run(args: &ExportArgs, limits: Limits) -> Result<(), ErrorBody> {
                 &meta,
             )?
         }
+        Input::Spline(s) => {
+            let spline = Spline::g2(&s.points, s.alpha, s.closed, s.ends)?;
+            export(
+                &ExportCurve::Spline(&spline),
+                format,
+                tolerance,
+                args.pieces,
+                &meta,
+            )?
+        }
         Input::Space(s) => {
             let segment = s.solve()?;
             export(
@@ -116,12 +158,32 @@ pub(crate) fn run(args: &ExportArgs, limits: Limits) -> Result<(), ErrorBody> {
     Ok(())
 }
 
-/// A document to export: `lac path`'s result (told by its `"segments"` and `"joints"`), a
-/// path's input (`{"points":[…],"alpha"|"alphas":…,"closed"|"g2"|"fractions":…}`), or what
-/// [`LcgInput`] reads (a segment, compound or space result).
+/// A document to export: `lac path`'s result (told by its `"segments"` and `"joints"`),
+/// `lac spline`'s (told by its `"pieces"` and `"angles"`: solved again through its points
+/// with its end tangents), a path's input
+/// (`{"points":[…],"alpha"|"alphas":…,"closed"|"g2"|"fractions":…}`), or what [`LcgInput`]
+/// reads (a segment, compound or space result).
 fn parse_document(text: &str) -> Result<Input, ErrorBody> {
     let value: Option<serde_json::Value> = serde_json::from_str(text).ok();
     let has = |key: &str| value.as_ref().is_some_and(|v| v.get(key).is_some());
+    if has("pieces") && has("angles") {
+        let report: SplineReport = serde_json::from_str(text)
+            .map_err(|e| ErrorBody::invalid_input(format!("a lac spline result: {e}")))?;
+        let ends = match (report.closed, report.angles.first(), report.angles.last()) {
+            (false, Some(&a), Some(&b)) => Some([a, b]),
+            _ => None,
+        };
+        return Ok(Input::Spline(SplineInput {
+            points: report
+                .points
+                .iter()
+                .map(|p| Point::new(p[0], p[1]))
+                .collect(),
+            alpha: report.alpha,
+            closed: report.closed,
+            ends,
+        }));
+    }
     if has("segments") && has("joints") {
         let report: PathReport = serde_json::from_str(text)
             .map_err(|e| ErrorBody::invalid_input(format!("a lac path result: {e}")))?;
@@ -140,8 +202,8 @@ fn parse_document(text: &str) -> Result<Input, ErrorBody> {
         LcgInput::Curve(c) => Ok(Input::Plane(c)),
         LcgInput::Space(s) => Ok(Input::Space(s)),
         LcgInput::Pieces(_) => Err(ErrorBody::invalid_input(
-            "lac export needs the exact curve (a lac segment, compound, path or space \
-             result), not Bézier pieces",
+            "lac export needs the exact curve (a lac segment, compound, path, spline or \
+             space result), not Bézier pieces",
         )),
     }
 }

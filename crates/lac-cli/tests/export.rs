@@ -290,3 +290,95 @@ fn path_refusals() {
         assert!(run.stdout.starts_with("ISO-10303-21;"));
     }
 }
+
+/// A wave of points whose turning changes direction: for α < 0 its spline passes through
+/// an inflection.
+const WAVE: &str = "0,0.2955 1,0.9320 2,0.8632 3,0.1411 4,-0.6878 5,-0.9962 6,-0.5507 7,0.3115";
+
+#[test]
+fn a_spline_exports_from_its_arguments_or_from_lac_splines_result() {
+    for alpha in ["-1", "-0.5", "-0.25", "0.5"] {
+        let points = if alpha == "0.5" {
+            "0,0 2,0.3 3.5,1.5 4,3"
+        } else {
+            WAVE
+        };
+        let curve = ["--through", points, "--alpha", alpha];
+        let direct = lac(&args(&curve, &["--format", "json", "--tolerance", "1e-7"]));
+        assert_eq!(direct.code, 0, "{alpha}: {}", direct.stderr);
+        let doc: serde_json::Value = serde_json::from_str(&direct.stdout).unwrap();
+        assert_eq!(doc["kind"], "spline");
+        assert_eq!(doc["continuity"], "G2");
+        assert_eq!(doc["monotone_proven"], true, "{alpha}");
+        assert!(doc["max_deviation"].as_f64().unwrap() <= 1e-7);
+        // lac spline's JSON, piped in, is the same spline and the same file.
+        let mut spline = vec!["spline"];
+        spline.extend_from_slice(&curve);
+        let solved = lac(&spline);
+        assert_eq!(solved.code, 0, "{}", solved.stderr);
+        let piped = lac_with_input(
+            &["export", "--format", "json", "--tolerance", "1e-7"],
+            solved.stdout.as_bytes(),
+        );
+        assert_eq!(piped.code, 0, "{}", piped.stderr);
+        assert_eq!(piped.stdout, direct.stdout);
+    }
+    // Closed: a curve whose ends meet; given end tangents.
+    let run = lac(&[
+        "export",
+        "--through",
+        "1,0 0,1.2 -1,0 0,-0.8",
+        "--closed",
+        "--alpha",
+        "-1",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let doc: serde_json::Value = serde_json::from_str(&run.stdout).unwrap();
+    let points = doc["curves"][0]["control_points"].as_array().unwrap();
+    let (first, last) = (&points[0], &points[points.len() - 1]);
+    for k in 0..2 {
+        let d = first[k].as_f64().unwrap() - last[k].as_f64().unwrap();
+        assert!(d.abs() < 1e-12, "{first} vs {last}");
+    }
+    let run = lac(&[
+        "export",
+        "--through",
+        "0,0 2,0.3 3.5,1.5 4,3",
+        "--alpha",
+        "0.5",
+        "--start-angle",
+        "0.1",
+        "--end-angle",
+        "2",
+        "--format",
+        "dxf",
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    // Refusals: a spline needs --alpha; --closed needs a polygon or points to pass through;
+    // a span that must inflect with α ≥ 0 is the solver's refusal.
+    assert_failure(
+        &lac(&["export", "--through", WAVE, "--format", "json"]),
+        2,
+        "usage",
+    );
+    assert_failure(
+        &lac(&args(&SEGMENT, &["--closed", "--format", "json"])),
+        2,
+        "usage",
+    );
+    assert_failure(
+        &lac(&[
+            "export",
+            "--through",
+            WAVE,
+            "--alpha",
+            "0.5",
+            "--format",
+            "json",
+        ]),
+        3,
+        "no_g2_path",
+    );
+}

@@ -413,3 +413,65 @@ fn g2_paths_through_inflections_export_within_the_tolerance_with_monotone_pieces
     }
     eprintln!("{inflecting} G2 paths through inflections of {tried} polygons, {pieces} pieces");
 }
+
+/// Seeded random splines through points turning either way (their spans through
+/// inflections each two pieces meeting at zero curvature) export within the tolerance, G2,
+/// every piece proven monotone. `LAC_INFLECTION_SPLINES=N` for a longer run (default 30).
+#[test]
+fn splines_through_inflections_export_within_the_tolerance_with_monotone_pieces() {
+    use lac::{Curve, Spline};
+    let mut rng = Rng(0x5eed_1234_abcd_0002);
+    let wanted: usize = std::env::var("LAC_INFLECTION_SPLINES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(30);
+    let (mut tried, mut inflecting, mut pieces) = (0, 0, 0);
+    while inflecting < wanted {
+        tried += 1;
+        assert!(tried < 20 * wanted, "too few splines through inflections");
+        let n = 4 + (rng.uniform(0.0, 4.0) as usize);
+        let (mut p, mut heading) = (Point::ORIGIN, 0.0f64);
+        let mut points = vec![p];
+        for _ in 0..n {
+            p += kurbo::Vec2::from_angle(heading) * rng.uniform(0.5, 1.5);
+            points.push(p);
+            let turn = rng.uniform(0.25, 1.3);
+            heading += if rng.uniform(0.0, 1.0) < 0.5 {
+                turn
+            } else {
+                -turn
+            };
+        }
+        let alpha = [-1.0, -0.75, -0.5, -0.25][(rng.uniform(0.0, 4.0) as usize).min(3)];
+        let Ok(spline) = Spline::g2(&points, alpha, false, None) else {
+            continue;
+        };
+        if spline.inflections().is_empty() {
+            continue;
+        }
+        inflecting += 1;
+        for tol in [1e-4, 1e-7] {
+            let tolerance = tol * spline.arc_length();
+            let done = export(
+                &ExportCurve::Spline(&spline),
+                Format::Json,
+                Tolerance::Absolute(tolerance),
+                false,
+                &meta(),
+            )
+            .unwrap_or_else(|e| panic!("{points:?} alpha {alpha} tol {tol}: {}", e.message));
+            let report = &done.report;
+            assert!(
+                report.max_deviation <= tolerance,
+                "{points:?} {alpha}: {report:?}"
+            );
+            assert_eq!(
+                (report.kind.as_str(), report.continuity.as_str()),
+                ("spline", "G2")
+            );
+            assert_eq!(report.monotone_proven, Some(true), "{points:?} {alpha}");
+            pieces += report.pieces;
+        }
+    }
+    eprintln!("{inflecting} splines through inflections of {tried} point sets, {pieces} pieces");
+}

@@ -9,17 +9,19 @@ use pyo3::types::PyDict;
 
 use crate::curve::{PyCompoundCurve, PySegment};
 use crate::errors::{from_body, invalid};
-use crate::path::PyPath;
+use crate::path::{PyPath, PySpline};
 use crate::space::PySpaceSegment;
 
 /// What `export` fits and writes: a copy of the curve, so that the GIL can be released.
 enum Owned {
     Plane(Solved),
     Path(lac::Path),
+    Spline(lac::Spline),
     Space(lac::SpaceSegment),
 }
 
-/// Write `curve` (a `Segment`, `CompoundCurve`, `Path` or `SpaceSegment`) as a CAD file:
+/// Write `curve` (a `Segment`, `CompoundCurve`, `Path`, `Spline` or `SpaceSegment`) as a CAD
+/// file:
 /// returns the file's text and its report (a dict: `pieces`, `tolerance`, `max_deviation`
 /// measured densely on what was written, `fit_deviation`, `continuity`, `monotone_proven`,
 /// …, as `lac export` prints it).
@@ -60,12 +62,14 @@ pub(crate) fn export<'py>(
         Owned::Plane(Solved::Compound((*c.get().inner).clone()))
     } else if let Ok(p) = curve.cast::<PyPath>() {
         Owned::Path(p.get().0.clone())
+    } else if let Ok(s) = curve.cast::<PySpline>() {
+        Owned::Spline(s.get().0.clone())
     } else if let Ok(s) = curve.cast::<PySpaceSegment>() {
         Owned::Space(s.get().0.clone())
     } else {
         return Err(invalid(
             py,
-            "curve must be a Segment, CompoundCurve, Path or SpaceSegment",
+            "curve must be a Segment, CompoundCurve, Path, Spline or SpaceSegment",
         ));
     };
     let meta = Meta::now(name);
@@ -73,6 +77,7 @@ pub(crate) fn export<'py>(
         let curve = match &owned {
             Owned::Plane(s) => ExportCurve::Plane(s),
             Owned::Path(p) => ExportCurve::Path(p),
+            Owned::Spline(s) => ExportCurve::Spline(s),
             Owned::Space(s) => ExportCurve::Space(s),
         };
         lac_io::export::export(&curve, format, tolerance, pieces, &meta)

@@ -140,7 +140,7 @@ impl PyPath {
 /// Raises `LacError` (kind `no_g2_path`, naming the span) where a span would have to inflect
 /// with `alpha >= 0`, or no continuous curvature is reached.
 #[pyclass(module = "lac", name = "Spline", frozen)]
-pub(crate) struct PySpline(lac::Spline);
+pub(crate) struct PySpline(pub(crate) lac::Spline);
 
 #[pymethods]
 impl PySpline {

@@ -93,6 +93,14 @@ def test_spline_through_an_inflection_equals_the_command_line(cli):
     assert spline.max_curvature_jump <= 1e-9
     k = spline.sample(200).kappa
     assert int(np.sum(k[:-1] * k[1:] < 0)) == 1
+    # Exported as the command line does.
+    text, report = lac.export(spline, "step", tolerance=1e-7)
+    done = subprocess.run(
+        [lac_bin(), "export", "--format", "step", "--tolerance", "1e-7", "--through", arg(WAVE),
+         "--alpha", "-0.5"], capture_output=True, text=True, check=True)
+    assert report == json.loads(done.stderr.strip().splitlines()[-1])
+    assert report["kind"] == "spline" and report["continuity"] == "G2"
+    assert report["max_deviation"] <= 1e-7 and report["monotone_proven"] is True
 
 
 def test_spline_options_and_errors(cli):
@@ -147,7 +155,7 @@ def test_export_equals_the_command_line(cli, tmp_path):
     assert json.loads(text)["curves"][0]["dimension"] == 3 and report["continuity"] == "C1"
     with pytest.raises(lac.InvalidInput, match="format"):
         lac.export(seg, "obj")
-    with pytest.raises(lac.InvalidInput, match="Segment, CompoundCurve"):
+    with pytest.raises(lac.InvalidInput, match="Segment, CompoundCurve, Path, Spline"):
         lac.export([(0, 0), (1, 0), (1, 1)], "step")
     with pytest.raises(lac.LacError, match="tolerance"):
         lac.export(seg, "step", tolerance=1e-20)

@@ -116,6 +116,79 @@ pub fn path_items(path: &Path) -> Vec<PathItem<'_>> {
     out
 }
 
+/// The share of a spline half's length, next to its inflection, that the export takes as
+/// straight: where |κ| is below 1e-12 of the half's other end (κ ∝ u^(1/|α|) in the arc
+/// length u from the inflection, so a share 1e-12^|α|; nothing below [`MIN_FLAT_SHARE`]). The curve there departs from its tangent by less than 1e-12 × the
+/// share² of the half's length, far below any tolerance, while a quasi chain would need
+/// pieces down to 1e-48 of its turning (α = −0.25) to follow its flattening.
+fn flat_share(alpha: f64) -> f64 {
+    let share = 1e-12f64.powf(-alpha);
+    if alpha < 0.0 && share >= MIN_FLAT_SHARE {
+        share
+    } else {
+        0.0
+    }
+}
+
+/// The shortest flat stretch taken as straight (α ≥ −0.5): shorter ones, where the quasi
+/// chains follow the halves to their ends, would leave a straight piece of a few 1e-9 of
+/// the spline, too short for a knot span.
+const MIN_FLAT_SHARE: f64 = 1e-6;
+
+/// A spline's pieces in order for export: the halves of a span through an inflection
+/// shortened by [`flat_share`] of their length at the inflection (solved again on their
+/// control triangles with the inflection-side leg shortened by as much: points so near a
+/// flat end are beyond the resolution of the tangent angle that places them on the
+/// segment), with the straight piece between them.
+pub fn spline_items(spline: &lac::Spline) -> Result<Vec<SplineItem>> {
+    let pieces = spline.pieces();
+    let triangles = spline.control_triangles();
+    let spans = spline.spans_of_pieces();
+    let n = pieces.len();
+    let mut out = Vec::new();
+    for (k, seg) in pieces.iter().enumerate() {
+        let cut = flat_share(seg.alpha()) * seg.arc_length();
+        let ends_flat = k + 1 < n && spans[k + 1] == spans[k] && cut > 0.0;
+        let starts_flat = k > 0 && spans[k - 1] == spans[k] && cut > 0.0;
+        let [a, p, b] = triangles[k];
+        let piece = if ends_flat {
+            Segment::from_control_points([a, p, b - (b - p).normalize() * cut], seg.alpha())?
+        } else if starts_flat {
+            Segment::from_control_points([a + (p - a).normalize() * cut, p, b], seg.alpha())?
+        } else {
+            seg.clone()
+        };
+        if starts_flat {
+            let from = match out.last() {
+                Some(SplineItem::Segment(s)) => s.end_point(),
+                _ => seg.start_point(),
+            };
+            out.push(SplineItem::Line(from, piece.start_point()));
+        }
+        out.push(SplineItem::Segment(piece));
+    }
+    Ok(out)
+}
+
+/// One piece of a spline as exported: a segment (owned: a half is shortened) or the
+/// straight piece at an inflection.
+pub enum SplineItem {
+    /// A log-aesthetic segment.
+    Segment(Segment),
+    /// A straight piece.
+    Line(Point, Point),
+}
+
+impl SplineItem {
+    /// As a path's item.
+    pub fn as_path_item(&self) -> PathItem<'_> {
+        match self {
+            SplineItem::Segment(s) => PathItem::Segment(s),
+            SplineItem::Line(a, b) => PathItem::Line(*a, *b),
+        }
+    }
+}
+
 /// A path: its segments and straight pieces in the order of travel.
 pub struct PathExact<'a>(pub Vec<PathItem<'a>>);
 
@@ -240,6 +313,9 @@ fn chord_shares(points: &[[f64; 3]]) -> Vec<f64> {
     out
 }
 
+/// Parameter steps per span of the table that starts the curve → B-spline projections.
+const SHARE_STEPS: usize = 1024;
+
 /// The span parameter where the share `f` of its length is reached, interpolated in the
 /// table of `chord_shares` at equal parameter steps.
 fn parameter_at_share(shares: &[f64], f: f64) -> f64 {
@@ -278,7 +354,19 @@ pub fn deviation(exact: &dyn Exact, nurbs: &Nurbs, per_span: usize) -> Result<f6
             let t = a + (b - a) * f;
             s.push(((t - t0) / (t1 - t0) * len).clamp(0.0, len));
         }
-        shares.push(share);
+        // For the other direction, a finer table where a span's speed varies by orders of
+        // magnitude (one coarse step holding over 8 steps' fair share of its length).
+        let uneven = share
+            .windows(2)
+            .any(|w| w[1] - w[0] > 8.0 / per_span as f64);
+        if uneven {
+            let fine: Vec<[f64; 3]> = (0..=SHARE_STEPS)
+                .map(|j| span.jet(j as f64 / SHARE_STEPS as f64).point)
+                .collect();
+            shares.push(chord_shares(&fine));
+        } else {
+            shares.push(share);
+        }
     }
     let mut best = vec![f64::INFINITY; queries.len()];
     // Only the stations whose Newton step has not settled are evaluated again.

@@ -140,23 +140,27 @@ impl Nurbs {
         }
         let mut control_points = Vec::with_capacity(3 * spans.len() + 1);
         let mut weights = Vec::with_capacity(3 * spans.len() + 1);
+        let mut last_size = 0.0f64;
         for (i, span) in spans.iter().enumerate() {
             let span = span.normalized().ok_or(bad("positive finite weights"))?;
+            let size = distance(span.points[0], span.points[3]);
             if i == 0 {
                 control_points.push(span.points[0]);
                 weights.push(1.0);
             } else {
                 // The pieces of a chain are fitted each in its own frame: their join points
-                // agree to rounding. The join is written once (the earlier piece's).
+                // agree to rounding (of the larger of the two pieces, when one is tiny). The
+                // join is written once (the earlier piece's).
                 let last = control_points[control_points.len() - 1];
                 let gap = distance(last, span.points[0]);
-                let size = distance(span.points[0], span.points[3]).max(f64::MIN_POSITIVE);
-                if gap.is_nan() || gap > 1e-9 * size {
+                let scale = size.max(last_size).max(f64::MIN_POSITIVE);
+                if gap.is_nan() || gap > 1e-9 * scale {
                     return Err(bad("consecutive spans that share their join point"));
                 }
             }
             control_points.extend_from_slice(&span.points[1..]);
             weights.extend_from_slice(&span.weights[1..]);
+            last_size = size;
         }
         if !control_points.iter().flatten().all(|x| x.is_finite()) {
             return Err(bad("finite control points"));

@@ -424,7 +424,7 @@ def pixel_center(size: int, row: int, col: int) -> tuple[float, float]:
     """The centre (x, y) of a pixel of a size x size region map."""
 
 def export(
-    curve: Segment | CompoundCurve | Path | SpaceSegment,
+    curve: Segment | CompoundCurve | Path | Spline | SpaceSegment,
     format: str = "step",
     tolerance: float = 1e-6,
     relative: bool = False,

@@ -50,6 +50,12 @@ CURVES = [
     # zero curvature on either side of a straight piece.
     ("spath", "path",
      ["--polygon", "0,0 1.5,0 3,0.8 6,3.2 7.5,4 9,4", "--alpha", "-0.5", "--g2"]),
+    # A closed G2 path through two inflections (a figure eight): a straight piece on each
+    # crossing leg, one of them the leg that closes the polygon, so the last piece of the
+    # curve is straight and ends where the first segment starts.
+    ("eight", "path",
+     ["--polygon", "1.5,-1 3,-1.8 4.5,-1 4.5,1 3,1.8 1.5,1 -1.5,-1 -3,-1.8 -4.5,-1 -4.5,1 "
+      "-3,1.8 -1.5,1", "--alpha", "-1", "--closed", "--g2"]),
 ]
 # A G1 path (curvature jumps at its joints): read back, G1 at the joints, not G2.
 G1_PATH = ("g1path", "path", ["--polygon", "0,0 3,0 4,2 2,4 -1,2", "--alphas", "1,0.5,0.8"])

@@ -291,6 +291,74 @@ fn path_refusals() {
     }
 }
 
+/// A closed polygon in a figure eight: its G2 path passes through two inflections, with
+/// a straight piece on each crossing leg, one of them the leg that closes the polygon (so
+/// the curve's last piece is straight and ends where its first segment starts).
+const FIGURE_EIGHT: &str = "1.5,-1 3,-1.8 4.5,-1 4.5,1 3,1.8 1.5,1 -1.5,-1 -3,-1.8 -4.5,-1 \
+                            -4.5,1 -3,1.8 -1.5,1";
+
+#[test]
+fn a_closed_path_through_inflections_is_one_closed_g2_curve() {
+    for (alpha, tolerance) in [("-1", "1e-6"), ("-0.5", "1e-8")] {
+        let curve = [
+            "--polygon",
+            FIGURE_EIGHT,
+            "--closed",
+            "--g2",
+            "--alpha",
+            alpha,
+        ];
+        let run = lac(&args(
+            &curve,
+            &["--format", "json", "--tolerance", tolerance],
+        ));
+        assert_eq!(run.code, 0, "{}", run.stderr);
+        let doc: serde_json::Value = serde_json::from_str(&run.stdout).unwrap();
+        assert_eq!(doc["continuity"], "G2", "{doc}");
+        assert_eq!(doc["monotone_proven"], true);
+        let max = doc["max_deviation"].as_f64().unwrap();
+        assert!(max <= tolerance.parse::<f64>().unwrap(), "{max}");
+        // One curve that closes on itself, through every joint and straight piece of the
+        // path in its order of travel: the path's own points are on it.
+        let points = doc["curves"][0]["control_points"].as_array().unwrap();
+        let (first, last) = (&points[0], &points[points.len() - 1]);
+        for k in 0..2 {
+            let d = first[k].as_f64().unwrap() - last[k].as_f64().unwrap();
+            assert!(d.abs() < 1e-12, "{first} vs {last}");
+        }
+        let path = lac(&[
+            "path",
+            "--polygon",
+            FIGURE_EIGHT,
+            "--closed",
+            "--g2",
+            "--alpha",
+            alpha,
+            "--format",
+            "json",
+        ]);
+        assert_eq!(path.code, 0, "{}", path.stderr);
+        let report: serde_json::Value = serde_json::from_str(&path.stdout).unwrap();
+        let straight = report["straight_pieces"].as_array().unwrap();
+        let legs: Vec<u64> = straight
+            .iter()
+            .map(|p| p["leg"].as_u64().unwrap())
+            .collect();
+        assert_eq!(legs, [5, 11], "{report}");
+        // The curve starts where the first segment does (the end of the closing leg's
+        // straight piece).
+        let start = &report["segments"][0]["control_points"][0];
+        for k in 0..2 {
+            let d = first[k].as_f64().unwrap() - start[k].as_f64().unwrap();
+            assert!(d.abs() < 1e-12, "{first} vs {start}");
+        }
+        // The length of the exported curve is the path's.
+        let length = doc["arc_length"].as_f64().unwrap();
+        let path_length = report["arc_length"].as_f64().unwrap();
+        assert!((length - path_length).abs() <= 1e-9 * path_length);
+    }
+}
+
 /// A wave of points whose turning changes direction: for α < 0 its spline passes through
 /// an inflection.
 const WAVE: &str = "0,0.2955 1,0.9320 2,0.8632 3,0.1411 4,-0.6878 5,-0.9962 6,-0.5507 7,0.3115";

@@ -414,6 +414,95 @@ fn g2_paths_through_inflections_export_within_the_tolerance_with_monotone_pieces
     eprintln!("{inflecting} G2 paths through inflections of {tried} polygons, {pieces} pieces");
 }
 
+/// Seeded random closed G2 paths through inflections (figure eights with every vertex
+/// moved, started at any vertex, so the seam falls anywhere, also on or next to a straight
+/// piece) export as one closed curve within the tolerance, G2, every piece proven monotone,
+/// starting and ending (by the test's own de Boor) where the path does.
+/// `LAC_CLOSED_INFLECTION_PATHS=N` for a longer run (default 20).
+#[test]
+fn closed_g2_paths_through_inflections_export_as_one_closed_curve() {
+    use lac::{Alphas, ControlPolygon, Curve, Path};
+    let mut rng = Rng(0x5eed_8888_0c1e_0002);
+    let wanted: usize = std::env::var("LAC_CLOSED_INFLECTION_PATHS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(20);
+    let eight = [
+        (1.5, -1.0),
+        (3.0, -1.8),
+        (4.5, -1.0),
+        (4.5, 1.0),
+        (3.0, 1.8),
+        (1.5, 1.0),
+        (-1.5, -1.0),
+        (-3.0, -1.8),
+        (-4.5, -1.0),
+        (-4.5, 1.0),
+        (-3.0, 1.8),
+        (-1.5, 1.0),
+    ];
+    let (mut tried, mut done, mut at_seam) = (0, 0, 0);
+    while done < wanted {
+        tried += 1;
+        assert!(
+            tried < 50 * wanted,
+            "too few closed G2 paths through inflections"
+        );
+        let first = rng.uniform(0.0, 12.0) as usize % 12;
+        let points: Vec<Point> = (0..12)
+            .map(|i| {
+                let (x, y) = eight[(first + i) % 12];
+                Point::new(x + rng.uniform(-0.3, 0.3), y + rng.uniform(-0.3, 0.3))
+            })
+            .collect();
+        let alpha = [-1.0, -0.75, -0.5][(rng.uniform(0.0, 3.0) as usize).min(2)];
+        let polygon = ControlPolygon::closed(&points).unwrap();
+        let Ok(path) = Path::g2(&polygon, &Alphas::One(alpha), None) else {
+            continue;
+        };
+        if path.straight_pieces().is_empty() {
+            continue;
+        }
+        done += 1;
+        if path.straight_pieces().iter().any(|l| l.leg == 11) {
+            at_seam += 1;
+        }
+        let start = path.segments()[0].start_point();
+        for tol in [1e-4, 1e-7] {
+            let tolerance = tol * path.arc_length();
+            let e = export(
+                &ExportCurve::Path(&path),
+                Format::Json,
+                Tolerance::Absolute(tolerance),
+                false,
+                &meta(),
+            )
+            .unwrap_or_else(|e| panic!("{points:?} alpha {alpha} tol {tol}: {}", e.message));
+            let report = &e.report;
+            assert!(
+                report.max_deviation <= tolerance,
+                "{points:?} {alpha}: {report:?}"
+            );
+            assert_eq!(report.continuity, "G2");
+            assert_eq!(report.monotone_proven, Some(true), "{points:?} {alpha}");
+            assert!((report.arc_length - path.arc_length()).abs() <= 1e-9 * path.arc_length());
+            let doc: ExportDocument = serde_json::from_str(&e.document).unwrap();
+            assert_eq!(doc.curves.len(), 1);
+            let n = nurbs_of(&doc, 0);
+            let (t0, t1) = (n.knots[0], n.knots[n.knots.len() - 1]);
+            for t in [t0, t1] {
+                let d = dist(de_boor(&n, t), [start.x, start.y, 0.0]);
+                assert!(d <= 1e-12 * path.arc_length(), "{points:?} {alpha}: {d}");
+            }
+        }
+    }
+    eprintln!(
+        "{done} closed G2 paths through inflections of {tried} polygons, {at_seam} with a \
+         straight piece on the closing leg"
+    );
+    assert!(at_seam > 0, "no straight piece at the seam was tried");
+}
+
 /// Seeded random splines through points turning either way (their spans through
 /// inflections each two pieces meeting at zero curvature) export within the tolerance, G2,
 /// every piece proven monotone. `LAC_INFLECTION_SPLINES=N` for a longer run (default 30).

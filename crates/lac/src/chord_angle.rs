@@ -76,9 +76,22 @@ pub(crate) struct ChordAngle {
 }
 
 struct Eval {
+    mu: f64,
     g: f64,
     slope: f64,
+    /// d ln|P|/dμ, P the chord of both pieces.
+    dln_chord: f64,
     pieces: Pieces,
+}
+
+/// How a solved piece moves with the chord angle asked for: what a caller iterating on the
+/// control points needs for exact derivatives, without solving again.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Sensitivity {
+    /// dμ/dθe.
+    pub(crate) dmu_dtheta_e: f64,
+    /// d ln|P|/dμ, P the piece's chord in the standard form.
+    pub(crate) dln_chord_dmu: f64,
 }
 
 impl ChordAngle {
@@ -184,8 +197,10 @@ impl ChordAngle {
         let dphi_dlambda = dp.div(p).im;
         let dlambda_dmu = w_bind / self.total;
         Eval {
+            mu,
             g: phi - self.theta_e,
             slope: dphi_dlambda * dlambda_dmu,
+            dln_chord: dp.div(p).re * dlambda_dmu,
             pieces: Pieces { parts },
         }
     }
@@ -243,9 +258,12 @@ impl ChordAngle {
         // φ − θe: the chord angle φ and θe both lie in [θd/2, θd) ⊂ [0, π) (the shorter
         // leg first), so this is the argument of P e^{−iθe}, taken without atan2 near the
         // root.
+        let ratio = integral.d_lambda.div(p);
         Some(Eval {
+            mu,
             g: (p * unturn).arg_near_zero(),
-            slope: integral.d_lambda.div(p).im * w / theta_d,
+            slope: ratio.im * w / theta_d,
+            dln_chord: ratio.re * w / theta_d,
             pieces: Pieces {
                 parts: [start, piece],
             },
@@ -351,9 +369,14 @@ impl ChordAngle {
 
     /// Find μ, hence Λ, such that the chord angle is θe. Requires Θ/2 ≤ θe.
     pub(crate) fn solve(&self) -> Result<Pieces> {
+        self.solve_eval().map(|e| e.pieces)
+    }
+
+    /// [`ChordAngle::solve`], with the last evaluation (its slopes are the solution's).
+    fn solve_eval(&self) -> Result<Eval> {
         // An isosceles configuration is a circular arc for every α.
         if self.theta_e - 0.5 * self.total <= 4.0 * f64::EPSILON * self.total {
-            return Ok(self.eval(0.0).pieces);
+            return Ok(self.eval(0.0));
         }
         let (mu_max, is_limit) = self.mu_max();
         let not_drawable = |top: &Eval| {
@@ -456,18 +479,18 @@ impl ChordAngle {
                 f64::INFINITY
             };
             if converged {
-                return self.verified(g, e.pieces);
+                return self.verified(e);
             }
         }
-        self.verified(g, self.eval(mu).pieces)
+        self.verified(self.eval(mu))
     }
 
     /// The pieces, if the chord angle they make is the one asked for: a collapsed bracket
     /// or the iteration cap is not a solution unless the residual says so (the residuals
     /// seen on the reference set are below 2e-14 rad).
-    fn verified(&self, g: f64, pieces: Pieces) -> Result<Pieces> {
-        if g.abs() <= RESIDUAL_TOLERANCE * self.total.max(1.0) {
-            Ok(pieces)
+    fn verified(&self, e: Eval) -> Result<Eval> {
+        if e.g.abs() <= RESIDUAL_TOLERANCE * self.total.max(1.0) {
+            Ok(e)
         } else {
             Err(Error::NumericalFailure {
                 what: "the chord-angle equation (the search did not converge)",
@@ -476,17 +499,78 @@ impl ChordAngle {
     }
 }
 
-/// Find the single piece whose chord angle at its start is `theta_e`, for turning
-/// `theta_d`. Requires 0 < θd < π and θd/2 ≤ θe < θd (the shorter leg first).
-pub(crate) fn solve(alpha: f64, theta_d: f64, theta_e: f64) -> Result<Piece> {
-    // ρ = 1 at the end that stays regular as Λ grows (SPEC §3 step 4).
-    let (theta, i) = if alpha > 1.0 {
+/// A single piece at some μ, and how it moves: the solution of [`solve`], or one evaluation
+/// of [`eval_at`] on the way to it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Solution {
+    pub(crate) piece: Piece,
+    pub(crate) mu: f64,
+    /// The piece's chord angle less the one asked for (rounding, for a solution).
+    pub(crate) g: f64,
+    /// `None` where the slopes are not usable numbers.
+    pub(crate) sensitivity: Option<Sensitivity>,
+}
+
+/// The standard-form arrangement of a single piece: ρ = 1 at the end that stays regular as
+/// Λ grows (SPEC §3 step 4); the turning on either side of the reference point, and which
+/// of the two pieces is the one.
+fn single(alpha: f64, theta_d: f64) -> ([f64; 2], usize) {
+    if alpha > 1.0 {
         ([theta_d, 0.0], 0)
     } else {
         ([0.0, theta_d], 1)
-    };
-    let pieces = ChordAngle::new([alpha, alpha], theta, theta_e).solve()?;
-    Ok(pieces.parts[i])
+    }
+}
+
+impl Solution {
+    fn of(e: Eval, i: usize) -> Solution {
+        let dmu_dtheta_e = 1.0 / e.slope;
+        let sensitivity =
+            (dmu_dtheta_e.is_finite() && e.dln_chord.is_finite()).then_some(Sensitivity {
+                dmu_dtheta_e,
+                dln_chord_dmu: e.dln_chord,
+            });
+        Solution {
+            piece: e.pieces.parts[i],
+            mu: e.mu,
+            g: e.g,
+            sensitivity,
+        }
+    }
+}
+
+/// Find the single piece whose chord angle at its start is `theta_e`, for turning
+/// `theta_d`. Requires 0 < θd < π and θd/2 ≤ θe < θd (the shorter leg first).
+pub(crate) fn solve(alpha: f64, theta_d: f64, theta_e: f64) -> Result<Solution> {
+    let (theta, i) = single(alpha, theta_d);
+    let e = ChordAngle::new([alpha, alpha], theta, theta_e).solve_eval()?;
+    Ok(Solution::of(e, i))
+}
+
+/// The single piece of [`solve`] at the search's first guess of μ, not solved (see
+/// [`eval_at`]).
+pub(crate) fn eval_at_guess(alpha: f64, theta_d: f64, theta_e: f64) -> Option<Solution> {
+    let (theta, _) = single(alpha, theta_d);
+    let problem = ChordAngle::new([alpha, alpha], theta, theta_e);
+    let guess = problem
+        .clothoid
+        .and_then(|_| guess::clothoid(theta_d, theta_e))
+        .unwrap_or_else(|| problem.at_circle().2);
+    eval_at(alpha, theta_d, theta_e, guess)
+}
+
+/// The single piece of [`solve`] at `mu`, not solved: one evaluation, for a caller that
+/// iterates on μ together with its own unknowns (`None` outside 0 < μ ≤ the search's
+/// range, or where the numbers are not finite).
+pub(crate) fn eval_at(alpha: f64, theta_d: f64, theta_e: f64, mu: f64) -> Option<Solution> {
+    let (theta, i) = single(alpha, theta_d);
+    let problem = ChordAngle::new([alpha, alpha], theta, theta_e);
+    if !(mu > 0.0 && mu <= problem.mu_max().0) {
+        return None;
+    }
+    let out = Solution::of(problem.eval(mu), i);
+    (out.g.is_finite() && out.piece.chord.norm().is_finite() && out.sensitivity.is_some())
+        .then_some(out)
 }
 
 #[cfg(test)]

@@ -530,3 +530,37 @@ fn share_of_random_polygons_with_inflections_with_a_g2_path() {
         assert!(worst <= 1e-9);
     }
 }
+
+#[test]
+fn a_closed_path_whose_closing_leg_inflects_ends_where_it_starts() {
+    // A figure eight started next to a crossing: the leg that closes the polygon is an
+    // inflection leg, so the path's last piece is the straight piece on it, which ends
+    // where the first segment starts.
+    let poly = ControlPolygon::closed(&pts(&[
+        (1.5, -1.0),
+        (3.0, -1.8),
+        (4.5, -1.0),
+        (4.5, 1.0),
+        (3.0, 1.8),
+        (1.5, 1.0),
+        (-1.5, -1.0),
+        (-3.0, -1.8),
+        (-4.5, -1.0),
+        (-4.5, 1.0),
+        (-3.0, 1.8),
+        (-1.5, 1.0),
+    ]))
+    .unwrap();
+    for alpha in [-1.0, -0.5] {
+        let path = Path::g2(&poly, &Alphas::One(alpha), None).unwrap();
+        let legs: Vec<usize> = path.straight_pieces().iter().map(|p| p.leg).collect();
+        assert_eq!(legs, [5, 11]);
+        // (To rounding: the segment's first point is evaluated from its placement.)
+        let start = path.start_point();
+        assert!((path.end_point() - start).hypot() < 1e-14);
+        let samples = path.sample_by_arc_length(101).unwrap();
+        assert!((samples[100].point - start).hypot() < 1e-14);
+        assert_eq!(samples[100].kappa, 0.0);
+        assert!((samples[100].s - path.arc_length()).abs() <= 1e-12 * path.arc_length());
+    }
+}

@@ -315,13 +315,17 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
         }
         .into()
     };
-    let quasi_of = |c: &dyn Curve| -> Result<QuasiCurve, ErrorBody> {
+    let fit = |c: &dyn Curve, target: f64| -> Result<QuasiCurve, ErrorBody> {
         Ok(if plain {
             c.to_cubics(Tolerance::Absolute(target))?
         } else {
             c.to_rational_cubics(Tolerance::Absolute(target))?
         })
     };
+    let quasi_of = |c: &dyn Curve| fit(c, target);
+    // A piece of a chain (a path's segment, a spline's half) shorter than the tolerance is
+    // fitted within its own length: the curve's tolerance, not the piece's, was asked for.
+    let piece_of = |c: &dyn Curve| fit(c, target.min(c.arc_length()));
     let planar = |chains: &[(QuasiCurve, f64)]| -> Result<Fitted, ErrorBody> {
         let pieces = || chains.iter().flat_map(|(q, _)| &q.pieces);
         let spans: Vec<Span> = pieces()
@@ -359,14 +363,6 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
             let c = solved.curve();
             planar(&[(quasi_of(c)?, c.arc_length())])
         }
-        ExportCurve::Path(path)
-            if path.polygon().is_closed() && !path.straight_pieces().is_empty() =>
-        {
-            Err(ErrorBody::invalid_input(
-                "a closed path through an inflection is not exported yet (its straight pieces \
-                 are not yet ordered around the seam); open paths through inflections are",
-            ))
-        }
         ExportCurve::Path(path) => {
             // Piece by piece: each segment's chain keeps its end points, tangents and
             // curvatures, so the path's joints stay knots with the path's own continuity;
@@ -374,7 +370,7 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
             let chains = path_items(path)
                 .iter()
                 .map(|item| match item {
-                    PathItem::Segment(seg) => Ok((quasi_of(*seg)?, seg.arc_length())),
+                    PathItem::Segment(seg) => Ok((piece_of(*seg)?, seg.arc_length())),
                     PathItem::Line(a, b) => Ok((straight(*a, *b)?, item.length())),
                 })
                 .collect::<Result<Vec<_>, ErrorBody>>()?;
@@ -386,7 +382,7 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
             let chains = spline_items(spline)?
                 .iter()
                 .map(|item| match item {
-                    SplineItem::Segment(seg) => Ok((quasi_of(seg)?, seg.arc_length())),
+                    SplineItem::Segment(seg) => Ok((piece_of(seg)?, seg.arc_length())),
                     SplineItem::Line(a, b) => Ok((straight(*a, *b)?, (*b - *a).hypot())),
                 })
                 .collect::<Result<Vec<_>, ErrorBody>>()?;

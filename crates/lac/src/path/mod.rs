@@ -21,8 +21,16 @@
 //! curvatures are κ0 = e^{G0(ln r)}/a and κ1 = e^{G1(ln r)}/b with G0, G1 scale-free. With
 //! x = ln(t/(1 − t)) on each free leg, the joint equation between the segment ending and the
 //! one starting on that leg is `G1(before) − G0(after) − x = 0` (ln of the curvature ratio),
-//! whose derivatives follow from dG/d ln r (one extra segment solve per segment, by a
-//! forward difference) and d ln r / dx = −t (start leg), −(1 − t) (end leg).
+//! whose derivatives follow from dG/d ln r (exact, from the segment's own chord-angle
+//! solution: its μ moves with the chord angle by 1/(dφ/dμ), and its end curvatures and
+//! chord with μ) and d ln r / dx = −t (start leg), −(1 − t) (end leg).
+//!
+//! The segments are not solved at every step: Newton's method runs on the fractions and
+//! each segment's μ together, one chord-angle evaluation per segment a step (a solve takes
+//! 2–3), each segment's end curvatures corrected to first order for the chord angle it
+//! still misses. It stops when the joints are continuous and every segment's chord angle is
+//! its triangle's to 1e-14 rad; where that iteration does not end at a G2 path, the
+//! iteration with every segment solved at every step is the fallback.
 //!
 //! Inflections. Where the polygon's turning changes direction (an *inflection leg*), a G2
 //! path's curvature passes through zero: the segments on either side (α < 0 only) end at
@@ -701,9 +709,14 @@ impl Path {
         self.segments[0].start_point()
     }
 
-    /// The last point.
+    /// The last point: the last segment's end, or where the straight piece after it ends
+    /// (a closed path whose closing leg is an inflection leg ends on it, where its first
+    /// segment starts).
     pub fn end_point(&self) -> Point {
-        self.segments[self.segments.len() - 1].end_point()
+        match self.items().last() {
+            Some(Item::Line(p)) => p.to,
+            _ => self.segments[self.segments.len() - 1].end_point(),
+        }
     }
 
     /// `n ≥ 2` samples equally spaced in arc length over the whole path (straight pieces

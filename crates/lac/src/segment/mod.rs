@@ -2,7 +2,7 @@
 
 use ::kurbo::{Point, Vec2};
 
-use crate::chord_angle::{solve, Piece};
+use crate::chord_angle::{self, Solution};
 use crate::error::{finite, Error, Result};
 use crate::lcg::LcgLine;
 use crate::numeric::{clamp, Complex};
@@ -137,43 +137,233 @@ pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
     })
 }
 
-/// The control triangle of `points` and the standard-form piece that fits it, solved from
-/// its shorter leg (SPEC §3 step 2: there the chord angle is at least θd/2); `reversed` when
-/// that is the last leg, so the piece runs from P2 to P0.
-fn solve_triangle(points: [Point; 3], alpha: f64) -> Result<(Triangle, Piece, bool)> {
-    let tri = control_triangle(points)?;
-    let (u, v) = (points[1] - points[0], points[2] - points[1]);
-    let reversed = longer(u, v);
-    let theta_e = if reversed {
-        tri.turning - tri.theta_e
-    } else {
-        tri.theta_e
-    };
-    let piece = solve(alpha, tri.turning, theta_e.max(0.5 * tri.turning))?;
-    Ok((tri, piece, reversed))
+/// A segment solved from its control points but not yet built: its end curvatures and
+/// their derivatives for a solver that iterates on control points (a path's G2 joints),
+/// and the segment itself once that solver is done, without solving again.
+pub(crate) struct Solved {
+    points: [Point; 3],
+    alpha: f64,
+    tri: Triangle,
+    /// The standard-form piece, solved from the shorter leg (SPEC §3 step 2: there the
+    /// chord angle is at least θd/2), with its μ; `reversed` when that is the last leg, so
+    /// the piece runs from P2 to P0.
+    solution: Solution,
+    reversed: bool,
+    /// The chord angle asked of the piece.
+    theta_e: f64,
+}
+
+impl Solved {
+    /// Solve the segment on `points` with slope `alpha` (not checked: see
+    /// [`Segment::from_control_points`]).
+    pub(crate) fn new(points: [Point; 3], alpha: f64) -> Result<Solved> {
+        let (tri, reversed, theta_e) = Self::arrange(points)?;
+        let solution = chord_angle::solve(alpha, tri.turning, theta_e)?;
+        Ok(Solved {
+            points,
+            alpha,
+            tri,
+            solution,
+            reversed,
+            theta_e,
+        })
+    }
+
+    /// The triangle of `points`, whether the piece is solved from the last leg, and the
+    /// chord angle asked of it there.
+    fn arrange(points: [Point; 3]) -> Result<(Triangle, bool, f64)> {
+        let tri = control_triangle(points)?;
+        let (u, v) = (points[1] - points[0], points[2] - points[1]);
+        let reversed = longer(u, v);
+        let theta_e = if reversed {
+            tri.turning - tri.theta_e
+        } else {
+            tri.theta_e
+        };
+        let theta_e = theta_e.max(0.5 * tri.turning);
+        Ok((tri, reversed, theta_e))
+    }
+
+    /// The segment on `points` with slope `alpha`, not solved: its piece taken at the
+    /// chord-angle search's first guess (see [`Solved::advanced`]).
+    pub(crate) fn guessed(points: [Point; 3], alpha: f64) -> Option<Solved> {
+        let (tri, reversed, theta_e) = Self::arrange(points).ok()?;
+        if theta_e - 0.5 * tri.turning <= 1e-6 * tri.turning {
+            return None;
+        }
+        let solution = chord_angle::eval_at_guess(alpha, tri.turning, theta_e)?;
+        Some(Solved {
+            points,
+            alpha,
+            tri,
+            solution,
+            reversed,
+            theta_e,
+        })
+    }
+
+    /// The segment on `points` (this one's control points moved, with the same vertex
+    /// angle), not solved: its piece taken once at the μ that this one's derivatives
+    /// predict, for a solver that iterates on μ and on the control points together (its
+    /// chord angle misses by [`Solved::chord_angle_miss`]). `None` where that prediction
+    /// is not to be trusted (the piece would be solved from the other leg, or next to the
+    /// circular arc of equal legs); then solve it with [`Solved::new`]. The share `step` of
+    /// this one's own miss is corrected (1 for a whole Newton step, less for a damped one).
+    pub(crate) fn advanced(&self, points: [Point; 3], step: f64) -> Option<Solved> {
+        let (tri, reversed, theta_e) = Self::arrange(points).ok()?;
+        let sens = self.solution.sensitivity?;
+        let clear = theta_e - 0.5 * tri.turning > 1e-6 * tri.turning
+            && self.theta_e - 0.5 * self.tri.turning > 1e-6 * self.tri.turning;
+        if reversed != self.reversed || !clear {
+            return None;
+        }
+        let miss = step * self.solution.g;
+        let mu = self.solution.mu + sens.dmu_dtheta_e * (theta_e - self.theta_e - miss);
+        let solution = chord_angle::eval_at(self.alpha, tri.turning, theta_e, mu)?;
+        Some(Solved {
+            points,
+            alpha: self.alpha,
+            tri,
+            solution,
+            reversed,
+            theta_e,
+        })
+    }
+
+    /// How far the piece's chord angle is from the one asked for (radians; rounding when
+    /// solved by [`Solved::new`]).
+    pub(crate) fn chord_angle_miss(&self) -> f64 {
+        self.solution.g
+    }
+
+    /// d ln|κ|/dμ at the first and the other end of the piece (in the order it was
+    /// solved), at fixed control points: ln κ_std by 0 and −1 per μ (+1 and 0 for α > 1),
+    /// and the scale by d ln|P_std|/dμ.
+    fn per_mu(&self) -> Option<[f64; 2]> {
+        let q = self.solution.sensitivity?.dln_chord_dmu;
+        let (at_start, at_end) = if self.alpha > 1.0 {
+            (1.0, 0.0)
+        } else {
+            (0.0, -1.0)
+        };
+        Some([at_start + q, at_end + q])
+    }
+
+    /// The first-order change of ln|κ0| and ln|κ1| when μ is brought to the solution of
+    /// the chord-angle equation at these control points (zero for a solved segment, to
+    /// rounding).
+    pub(crate) fn log_corrections(&self) -> Option<[f64; 2]> {
+        let sens = self.solution.sensitivity?;
+        let [first, other] = self.per_mu()?;
+        let dmu = -self.solution.g * sens.dmu_dtheta_e;
+        let out = if self.reversed {
+            [other * dmu, first * dmu]
+        } else {
+            [first * dmu, other * dmu]
+        };
+        out.iter().all(|d| d.is_finite()).then_some(out)
+    }
+
+    /// The control points.
+    pub(crate) fn points(&self) -> [Point; 3] {
+        self.points
+    }
+
+    /// The signed curvature at the first and last control point.
+    pub(crate) fn end_curvatures(&self) -> Result<(f64, f64)> {
+        let piece = &self.solution.piece;
+        let (first, last) = if self.reversed {
+            (piece.end, piece.start)
+        } else {
+            (piece.start, piece.end)
+        };
+        let c = self.points[2] - self.points[0];
+        let scale = c.x.hypot(c.y) / piece.chord.norm();
+        let k = |st: &Station| self.tri.turn.sign() * st.kappa() / scale;
+        let out = (k(&first), k(&last));
+        if out.0.is_finite() && out.1.is_finite() && out.0 != 0.0 && out.1 != 0.0 {
+            Ok(out)
+        } else {
+            Err(Error::Unrepresentable {
+                what: "curvature (it scales as 1/length)",
+            })
+        }
+    }
+
+    /// With a = |P1 − P0|, b = |P2 − P1| and the last point moved along its leg:
+    /// d(ln|κ0| + ln a)/d ln(a/b) and d(ln|κ1| + ln b)/d ln(a/b), exactly (from the
+    /// chord-angle solution's own derivatives), or `None` where they are not numbers.
+    ///
+    /// With the leg the piece was solved from of length f, the other o, ρ = o/f and
+    /// C = |P2 − P0|/f = √(1 + 2ρ cos θd + ρ²): the chord angle at the first point is
+    /// θe = atan2(ρ sin θd, 1 + ρ cos θd), so dθe/d ln ρ = ρ sin θd/C²; the end curvatures
+    /// are κ = κ_std |P_std|/|P2 − P0|, so ln|κ| + ln f = ln κ_std + ln|P_std| − ln C (plus
+    /// ln ρ at the other end), with d ln C/d ln ρ = ρ(cos θd + ρ)/C². Of the piece, μ moves
+    /// with θe by 1/(dφ/dμ), ln κ_std at its ends by 0 and −1 per μ (+1 and 0 for α > 1),
+    /// and ln|P_std| by Re(P′/P) dΛ/dμ.
+    pub(crate) fn log_slopes(&self) -> Option<[f64; 2]> {
+        let sens = self.solution.sensitivity?;
+        let [p0, p1, p2] = self.points;
+        let (u, v) = (p1 - p0, p2 - p1);
+        let (first, other) = if self.reversed { (v, u) } else { (u, v) };
+        let rho = other.x.hypot(other.y) / first.x.hypot(first.y);
+        let (sin, cos) = self.tri.turning.sin_cos();
+        let c2 = 1.0 + 2.0 * rho * cos + rho * rho;
+        let dtheta_e = rho * sin / c2;
+        let dln_c = rho * (cos + rho) / c2;
+        let [first_mu, other_mu] = self.per_mu()?;
+        let mu_per_rho = sens.dmu_dtheta_e * dtheta_e;
+        // d/d ln ρ of the first and the other end's ln|κ| + ln(leg).
+        let d_first = first_mu * mu_per_rho - dln_c;
+        let d_other = other_mu * mu_per_rho - dln_c + 1.0;
+        // ln(a/b) is −ln ρ when the piece was solved from P0's leg, +ln ρ from P2's.
+        let out = if self.reversed {
+            [d_other, d_first]
+        } else {
+            [-d_first, -d_other]
+        };
+        out.iter().all(|d| d.is_finite()).then_some(out)
+    }
+
+    /// The segment, checked.
+    pub(crate) fn into_segment(self) -> Result<Segment> {
+        let Solved {
+            points,
+            alpha,
+            tri,
+            solution,
+            reversed,
+            ..
+        } = self;
+        let piece = solution.piece;
+        let (first, last, chord) = if reversed {
+            (piece.end, piece.start, -piece.chord)
+        } else {
+            (piece.start, piece.end, piece.chord)
+        };
+        // The standard form turns left along increasing θ; traversed backwards it turns right.
+        let mirrored = (tri.turn == Turn::Left) == reversed;
+        let c = points[2] - points[0];
+        let c = Complex::new(c.x, if mirrored { -c.y } else { c.y });
+        let placement = Placement {
+            origin: points[0],
+            rot: c.div(chord),
+            mirrored,
+            turn: tri.turn,
+            theta_first: tri.theta_first,
+        };
+        let segment = Segment::new(alpha, piece.form, [first, last], chord, placement);
+        segment.check()?;
+        crate::curve::check_visible_ends(std::slice::from_ref(&segment))?;
+        Ok(segment)
+    }
 }
 
 /// The signed end curvatures of the segment on `points` with slope `alpha`, without
 /// building or checking it: for solvers that iterate on them (a path's G2 joints), whose
 /// final answer is built by [`Segment::from_control_points`] and checked there.
 pub(crate) fn end_curvatures_of(points: [Point; 3], alpha: f64) -> Result<(f64, f64)> {
-    let (tri, piece, reversed) = solve_triangle(points, alpha)?;
-    let (first, last) = if reversed {
-        (piece.end, piece.start)
-    } else {
-        (piece.start, piece.end)
-    };
-    let c = points[2] - points[0];
-    let scale = c.x.hypot(c.y) / piece.chord.norm();
-    let k = |st: &Station| tri.turn.sign() * st.kappa() / scale;
-    let out = (k(&first), k(&last));
-    if out.0.is_finite() && out.1.is_finite() && out.0 != 0.0 && out.1 != 0.0 {
-        Ok(out)
-    } else {
-        Err(Error::Unrepresentable {
-            what: "curvature (it scales as 1/length)",
-        })
-    }
+    Solved::new(points, alpha)?.end_curvatures()
 }
 
 /// A planar log-aesthetic curve segment defined like a quadratic Bézier curve: it starts
@@ -254,27 +444,7 @@ impl Segment {
     /// points, or [`Error::NotDrawable`] when no segment of this α fits the triangle.
     pub fn from_control_points(points: [Point; 3], alpha: f64) -> Result<Segment> {
         check_alpha("alpha", alpha)?;
-        let (tri, piece, reversed) = solve_triangle(points, alpha)?;
-        let (first, last, chord) = if reversed {
-            (piece.end, piece.start, -piece.chord)
-        } else {
-            (piece.start, piece.end, piece.chord)
-        };
-        // The standard form turns left along increasing θ; traversed backwards it turns right.
-        let mirrored = (tri.turn == Turn::Left) == reversed;
-        let c = points[2] - points[0];
-        let c = Complex::new(c.x, if mirrored { -c.y } else { c.y });
-        let placement = Placement {
-            origin: points[0],
-            rot: c.div(chord),
-            mirrored,
-            turn: tri.turn,
-            theta_first: tri.theta_first,
-        };
-        let segment = Segment::new(alpha, piece.form, [first, last], chord, placement);
-        segment.check()?;
-        crate::curve::check_visible_ends(std::slice::from_ref(&segment))?;
-        Ok(segment)
+        Solved::new(points, alpha)?.into_segment()
     }
 
     /// The one constructor: the piece of `form` from station `ends[0]` to `ends[1]` (in the

@@ -135,3 +135,46 @@ fn a_long_caption_wraps_under_a_narrow_drawing_one_entry_to_a_text() {
     );
     assert!(caption.iter().all(|c| c.0 >= 12.0));
 }
+
+/// The caption names what each place between pieces is: a joint, an inflection (a spline's
+/// S, whose halves meet at zero curvature) or a straight piece (also the one on the leg that
+/// closes a polygon, which ends the path where it starts).
+#[test]
+fn the_caption_tells_joints_inflections_and_straight_pieces_apart() {
+    let wave = "0,0.2955 1,0.9320 2,0.8632 3,0.1411 4,-0.6878 5,-0.9962 6,-0.5507 7,0.3115";
+    let run = lac(&[
+        "spline",
+        "--through",
+        wave,
+        "--alpha",
+        "-0.5",
+        "--format",
+        "svg",
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert_eq!(run.stdout.matches("inflection s = ").count(), 1);
+    assert_eq!(run.stdout.matches("joint s = ").count(), 6);
+    let eight = "1.5,-1 3,-1.8 4.5,-1 4.5,1 3,1.8 1.5,1 -1.5,-1 -3,-1.8 -4.5,-1 -4.5,1 \
+                 -3,1.8 -1.5,1";
+    let run = lac(&[
+        "path",
+        "--polygon",
+        eight,
+        "--closed",
+        "--g2",
+        "--alpha",
+        "-0.5",
+        "--format",
+        "svg",
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let straight: Vec<&str> = run
+        .stdout
+        .match_indices("straight s = ")
+        .map(|(i, _)| &run.stdout[i..i + 40])
+        .collect();
+    assert_eq!(straight.len(), 2, "{straight:?}");
+    // The second ends at the arc length.
+    assert!(straight[1].contains("to 23.426"), "{straight:?}");
+    assert_eq!(run.stdout.matches("inflection s = ").count(), 0);
+}

@@ -325,6 +325,10 @@ fn gap(a: &Segment, b: &Segment) -> f64 {
     }
 }
 
+/// A joint where the curvature is at most this share of the curve's largest |κ| is an
+/// inflection (the halves of a spline's S end at 1e-12 of their other end's).
+const INFLECTION_SHARE: f64 = 1e-9;
+
 fn caption(pieces: &[Segment], layers: &Layers, extras: &Extras) -> Block {
     let evolute = extras.evolute;
     let mut facts: Vec<Entry> = slopes(pieces)
@@ -336,6 +340,10 @@ fn caption(pieces: &[Segment], layers: &Layers, extras: &Extras) -> Block {
             .into_iter()
             .map(|text| Entry::plain(CURVE, text)),
     );
+    let largest = pieces
+        .iter()
+        .map(|p| p.curvature_start().abs().max(p.curvature_end().abs()))
+        .fold(0.0, f64::max);
     let mut s = 0.0;
     for (i, piece) in pieces[..pieces.len() - 1].iter().enumerate() {
         s += piece.arc_length();
@@ -347,15 +355,31 @@ fn caption(pieces: &[Segment], layers: &Layers, extras: &Extras) -> Block {
             ));
             s += line;
         } else {
+            // Pieces that meet at zero curvature (a spline's S, or a path's inflection with
+            // a straight piece of zero length) meet at an inflection.
+            let name = if piece.curvature_end().abs() <= INFLECTION_SHARE * largest {
+                "inflection"
+            } else {
+                "joint"
+            };
             facts.push(Entry::keyed(
                 Key::Dot(JOINT),
-                format!("joint s = {}", short(s)),
+                format!("{name} s = {}", short(s)),
             ));
         }
     }
     let mut length = s + pieces[pieces.len() - 1].arc_length();
     if extras.closed {
-        length += gap(&pieces[pieces.len() - 1], &pieces[0]);
+        // The straight piece on the leg that closes the polygon, if there is one, ends the
+        // path where it started.
+        let line = gap(&pieces[pieces.len() - 1], &pieces[0]);
+        if line > 0.0 {
+            facts.push(Entry::keyed(
+                Key::Dot(JOINT),
+                format!("straight s = {} to {}", short(length), short(length + line)),
+            ));
+        }
+        length += line;
     }
     facts.push(Entry::plain(
         CURVE,

@@ -344,6 +344,25 @@ impl Rng {
     }
 }
 
+/// `path` exported as JSON within `tol` of its arc length, checked: within the tolerance,
+/// G2, every piece proven monotone (`what` names the path in a failure).
+fn exported_g2(path: &lac::Path, tol: f64, what: &str) -> Exported {
+    let tolerance = tol * path.arc_length();
+    let done = export(
+        &ExportCurve::Path(path),
+        Format::Json,
+        Tolerance::Absolute(tolerance),
+        false,
+        &meta(),
+    )
+    .unwrap_or_else(|e| panic!("{what} tol {tol}: {}", e.message));
+    let report = &done.report;
+    assert!(report.max_deviation <= tolerance, "{what}: {report:?}");
+    assert_eq!(report.continuity, "G2");
+    assert_eq!(report.monotone_proven, Some(true), "{what}");
+    done
+}
+
 #[test]
 fn g2_paths_through_inflections_export_within_the_tolerance_with_monotone_pieces() {
     use lac::{Alphas, ControlPolygon, Path};
@@ -392,23 +411,8 @@ fn g2_paths_through_inflections_export_within_the_tolerance_with_monotone_pieces
         }
         inflecting += 1;
         for tol in [1e-4, 1e-7] {
-            let tolerance = tol * path.arc_length();
-            let done = export(
-                &ExportCurve::Path(&path),
-                Format::Json,
-                Tolerance::Absolute(tolerance),
-                false,
-                &meta(),
-            )
-            .unwrap_or_else(|e| panic!("{points:?} alpha {alpha} tol {tol}: {}", e.message));
-            let report = &done.report;
-            assert!(
-                report.max_deviation <= tolerance,
-                "{points:?} {alpha}: {report:?}"
-            );
-            assert_eq!(report.continuity, "G2");
-            assert_eq!(report.monotone_proven, Some(true), "{points:?} {alpha}");
-            pieces += report.pieces;
+            let done = exported_g2(&path, tol, &format!("{points:?} alpha {alpha}"));
+            pieces += done.report.pieces;
         }
     }
     eprintln!("{inflecting} G2 paths through inflections of {tried} polygons, {pieces} pieces");
@@ -469,22 +473,8 @@ fn closed_g2_paths_through_inflections_export_as_one_closed_curve() {
         }
         let start = path.segments()[0].start_point();
         for tol in [1e-4, 1e-7] {
-            let tolerance = tol * path.arc_length();
-            let e = export(
-                &ExportCurve::Path(&path),
-                Format::Json,
-                Tolerance::Absolute(tolerance),
-                false,
-                &meta(),
-            )
-            .unwrap_or_else(|e| panic!("{points:?} alpha {alpha} tol {tol}: {}", e.message));
+            let e = exported_g2(&path, tol, &format!("{points:?} alpha {alpha}"));
             let report = &e.report;
-            assert!(
-                report.max_deviation <= tolerance,
-                "{points:?} {alpha}: {report:?}"
-            );
-            assert_eq!(report.continuity, "G2");
-            assert_eq!(report.monotone_proven, Some(true), "{points:?} {alpha}");
             assert!((report.arc_length - path.arc_length()).abs() <= 1e-9 * path.arc_length());
             let doc: ExportDocument = serde_json::from_str(&e.document).unwrap();
             assert_eq!(doc.curves.len(), 1);

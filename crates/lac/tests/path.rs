@@ -299,10 +299,10 @@ fn s_shaped_g2_path_passes_through_zero_curvature_on_a_straight_piece() {
     );
 }
 
-#[test]
-fn closed_figure_eight_has_two_straight_pieces() {
-    // Two loops turning opposite ways, joined by two long crossing legs.
-    let poly = ControlPolygon::closed(&pts(&[
+/// Two loops turning opposite ways, joined by two long crossing legs, from its vertex
+/// `first` on (the leg from vertex 11 to 0 is a crossing leg).
+fn figure_eight(first: usize) -> Vec<Point> {
+    let points = [
         (-1.5, 1.0),
         (1.5, -1.0),
         (3.0, -1.8),
@@ -315,8 +315,14 @@ fn closed_figure_eight_has_two_straight_pieces() {
         (-4.5, -1.0),
         (-4.5, 1.0),
         (-3.0, 1.8),
-    ]))
-    .unwrap();
+    ];
+    let n = points.len();
+    pts(&(0..n).map(|i| points[(first + i) % n]).collect::<Vec<_>>())
+}
+
+#[test]
+fn closed_figure_eight_has_two_straight_pieces() {
+    let poly = ControlPolygon::closed(&figure_eight(0)).unwrap();
     for alpha in [-1.0, -0.5] {
         let path = Path::g2(&poly, &Alphas::One(alpha), None).unwrap();
         assert_eq!(path.straight_pieces().len(), 2);
@@ -536,21 +542,7 @@ fn a_closed_path_whose_closing_leg_inflects_ends_where_it_starts() {
     // A figure eight started next to a crossing: the leg that closes the polygon is an
     // inflection leg, so the path's last piece is the straight piece on it, which ends
     // where the first segment starts.
-    let poly = ControlPolygon::closed(&pts(&[
-        (1.5, -1.0),
-        (3.0, -1.8),
-        (4.5, -1.0),
-        (4.5, 1.0),
-        (3.0, 1.8),
-        (1.5, 1.0),
-        (-1.5, -1.0),
-        (-3.0, -1.8),
-        (-4.5, -1.0),
-        (-4.5, 1.0),
-        (-3.0, 1.8),
-        (-1.5, 1.0),
-    ]))
-    .unwrap();
+    let poly = ControlPolygon::closed(&figure_eight(1)).unwrap();
     for alpha in [-1.0, -0.5] {
         let path = Path::g2(&poly, &Alphas::One(alpha), None).unwrap();
         let legs: Vec<usize> = path.straight_pieces().iter().map(|p| p.leg).collect();

@@ -157,16 +157,26 @@ impl Solved {
     /// Solve the segment on `points` with slope `alpha` (not checked: see
     /// [`Segment::from_control_points`]).
     pub(crate) fn new(points: [Point; 3], alpha: f64) -> Result<Solved> {
-        let (tri, reversed, theta_e) = Self::arrange(points)?;
-        let solution = chord_angle::solve(alpha, tri.turning, theta_e)?;
-        Ok(Solved {
+        let arranged = Self::arrange(points)?;
+        let solution = chord_angle::solve(alpha, arranged.0.turning, arranged.2)?;
+        Ok(Self::with(points, alpha, arranged, solution))
+    }
+
+    /// The segment on `points`, arranged by [`Solved::arrange`], with its piece.
+    fn with(
+        points: [Point; 3],
+        alpha: f64,
+        (tri, reversed, theta_e): (Triangle, bool, f64),
+        solution: Solution,
+    ) -> Solved {
+        Solved {
             points,
             alpha,
             tri,
             solution,
             reversed,
             theta_e,
-        })
+        }
     }
 
     /// The triangle of `points`, whether the piece is solved from the last leg, and the
@@ -187,19 +197,13 @@ impl Solved {
     /// The segment on `points` with slope `alpha`, not solved: its piece taken at the
     /// chord-angle search's first guess (see [`Solved::advanced`]).
     pub(crate) fn guessed(points: [Point; 3], alpha: f64) -> Option<Solved> {
-        let (tri, reversed, theta_e) = Self::arrange(points).ok()?;
-        if theta_e - 0.5 * tri.turning <= 1e-6 * tri.turning {
+        let arranged = Self::arrange(points).ok()?;
+        let (turning, theta_e) = (arranged.0.turning, arranged.2);
+        if theta_e - 0.5 * turning <= 1e-6 * turning {
             return None;
         }
-        let solution = chord_angle::eval_at_guess(alpha, tri.turning, theta_e)?;
-        Some(Solved {
-            points,
-            alpha,
-            tri,
-            solution,
-            reversed,
-            theta_e,
-        })
+        let solution = chord_angle::eval_at_guess(alpha, turning, theta_e)?;
+        Some(Self::with(points, alpha, arranged, solution))
     }
 
     /// The segment on `points` (this one's control points moved, with the same vertex
@@ -210,24 +214,18 @@ impl Solved {
     /// circular arc of equal legs); then solve it with [`Solved::new`]. The share `step` of
     /// this one's own miss is corrected (1 for a whole Newton step, less for a damped one).
     pub(crate) fn advanced(&self, points: [Point; 3], step: f64) -> Option<Solved> {
-        let (tri, reversed, theta_e) = Self::arrange(points).ok()?;
+        let arranged = Self::arrange(points).ok()?;
+        let (turning, reversed, theta_e) = (arranged.0.turning, arranged.1, arranged.2);
         let sens = self.solution.sensitivity?;
-        let clear = theta_e - 0.5 * tri.turning > 1e-6 * tri.turning
+        let clear = theta_e - 0.5 * turning > 1e-6 * turning
             && self.theta_e - 0.5 * self.tri.turning > 1e-6 * self.tri.turning;
         if reversed != self.reversed || !clear {
             return None;
         }
         let miss = step * self.solution.g;
         let mu = self.solution.mu + sens.dmu_dtheta_e * (theta_e - self.theta_e - miss);
-        let solution = chord_angle::eval_at(self.alpha, tri.turning, theta_e, mu)?;
-        Some(Solved {
-            points,
-            alpha: self.alpha,
-            tri,
-            solution,
-            reversed,
-            theta_e,
-        })
+        let solution = chord_angle::eval_at(self.alpha, turning, theta_e, mu)?;
+        Some(Self::with(points, self.alpha, arranged, solution))
     }
 
     /// How far the piece's chord angle is from the one asked for (radians; rounding when

@@ -413,8 +413,8 @@ pub(crate) fn space(rng: &mut Rng) -> Input {
 }
 
 pub(crate) fn path(rng: &mut Rng) -> Input {
-    let n = 2 + rng.below(11);
-    let closed = rng.chance(0.3);
+    let mut n = 2 + rng.below(11);
+    let mut closed = rng.chance(0.3);
     let mut points: Vec<[f64; 2]> = match rng.below(10) {
         // Around a circle (turning one way, as a G2 path wants), radii and steps jittered.
         0..=5 => {
@@ -441,6 +441,33 @@ pub(crate) fn path(rng: &mut Rng) -> Input {
                 ]
             })
             .collect(),
+        // A figure eight, closed, every vertex moved and started anywhere: two loops
+        // turning opposite ways, so a G2 path (α < 0) passes through two inflections, with
+        // a straight piece on each crossing leg, the seam on or next to one of them.
+        7 => {
+            const EIGHT: [[f64; 2]; 12] = [
+                [1.5, -1.0],
+                [3.0, -1.8],
+                [4.5, -1.0],
+                [4.5, 1.0],
+                [3.0, 1.8],
+                [1.5, 1.0],
+                [-1.5, -1.0],
+                [-3.0, -1.8],
+                [-4.5, -1.0],
+                [-4.5, 1.0],
+                [-3.0, 1.8],
+                [-1.5, 1.0],
+            ];
+            (n, closed) = (EIGHT.len(), true);
+            let first = rng.below(n);
+            (0..n)
+                .map(|i| {
+                    let [x, y] = EIGHT[(first + i) % n];
+                    [x + rng.uniform(-0.3, 0.3), y + rng.uniform(-0.3, 0.3)]
+                })
+                .collect()
+        }
         // Anything.
         _ => (0..n).map(|_| [rng.number(), rng.number()]).collect(),
     };

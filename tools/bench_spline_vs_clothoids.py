@@ -16,9 +16,10 @@ from the tangents of the circles through each point and its neighbours and get t
 tangents (those of the circles through the first and last three points, lac's default).
 
 Two kinds of point sets: "one-way" (every turn of the polygon through the points has the same
-sign) and "any" (turns of random sign). A clothoid span can pass through an inflection; a lac
-span cannot yet (a span whose end tangents lie on the same side of its chord is refused), so
-on "any" sets lac solves fewer.
+sign) and "any" (turns of random sign). On "any" sets many spans must inflect: a clothoid
+span passes through its inflection, and lac draws such a span as an S (one log-aesthetic
+curve continued through its point of zero curvature, two segments that meet there), which at
+alpha = -1 is the same clothoid arc.
 
 Prints one JSON object: per kind, the share each solved, the median time per solve (lac: the
 Rust solve through its binding; Clothoids: the Python Newton loop around the C++ `build_G1`,

@@ -624,6 +624,38 @@ fn check_samples(samples: &[Sample], tol: f64, len: f64) -> Result<(), String> {
     Ok(())
 }
 
+/// Each piece of a path or spline on its control triangle (ends, end tangents, monotone
+/// curvature, chords between tangents).
+fn on_triangles(pieces: &[Segment], triangles: &[[Point; 3]]) -> Result<(), String> {
+    for (seg, t) in pieces.iter().zip(triangles) {
+        check_curve(
+            seg,
+            &[t[0], t[1]],
+            &[t[1], t[2]],
+            9,
+            1e-3 * seg.arc_length(),
+        )?;
+    }
+    Ok(())
+}
+
+/// Piece `k` (`a`) and the next (`b`) of a path or spline of length `size` meet: positions
+/// within 64 `tol`, tangents within the tangent bound.
+fn meet(a: &Segment, b: &Segment, k: usize, tol: f64, size: f64) -> Result<(), String> {
+    let (pa, pb) = (a.end_point(), b.start_point());
+    if dist(pa, pb) > 64.0 * tol {
+        return Err(format!("pieces {k} and {} {:e} apart", k + 1, dist(pa, pb)));
+    }
+    let ta = a.theta_at_s(a.arc_length()).map_err(|e| e.to_string())?;
+    let tb = b.theta_at_s(0.0).map_err(|e| e.to_string())?;
+    let tau = std::f64::consts::TAU;
+    let jump = (ta - tb) - tau * ((ta - tb) / tau).round();
+    if jump.abs() > bounds::TANGENT + 1e3 * tol / size {
+        return Err(format!("tangent jumps {jump:e} rad after piece {k}"));
+    }
+    Ok(())
+}
+
 /// A path: each segment on its control triangle (ends, end tangents, monotone curvature,
 /// chords between tangents); consecutive segments (and the last and first of a closed path)
 /// meet with continuous position and tangent, and curvature too in G2; the whole is finite.
@@ -638,15 +670,7 @@ fn check_path(path: &Path, closed: bool, g2: bool) -> Result<(), String> {
         ));
     }
     finite("arc length", &[path.arc_length()])?;
-    for (seg, t) in pieces.iter().zip(&triangles) {
-        check_curve(
-            seg,
-            &[t[0], t[1]],
-            &[t[1], t[2]],
-            9,
-            1e-3 * seg.arc_length(),
-        )?;
-    }
+    on_triangles(pieces, &triangles)?;
     let all: Vec<Point> = triangles.iter().flatten().copied().collect();
     let size = path.arc_length();
     let tol = bounds::POSITION * size + rounding(&all);
@@ -672,21 +696,7 @@ fn check_path(path: &Path, closed: bool, g2: bool) -> Result<(), String> {
         .fold(0.0, f64::max);
     for i in 0..pairs {
         let (a, b) = (&pieces[i], &pieces[(i + 1) % pieces.len()]);
-        let (pa, pb) = (a.end_point(), b.start_point());
-        if dist(pa, pb) > 64.0 * tol {
-            return Err(format!(
-                "segments {i} and {} {:e} apart",
-                i + 1,
-                dist(pa, pb)
-            ));
-        }
-        let ta = a.theta_at_s(a.arc_length()).map_err(|e| e.to_string())?;
-        let tb = b.theta_at_s(0.0).map_err(|e| e.to_string())?;
-        let tau = std::f64::consts::TAU;
-        let jump = (ta - tb) - tau * ((ta - tb) / tau).round();
-        if jump.abs() > bounds::TANGENT + 1e3 * tol / size {
-            return Err(format!("tangent jumps {jump:e} rad after segment {i}"));
-        }
+        meet(a, b, i, tol, size)?;
         let (ka, kb) = (a.curvature_end(), b.curvature_start());
         if g2 && (ka - kb).abs() > bounds::JOINT_CURVATURE * kmax {
             return Err(format!(
@@ -710,15 +720,7 @@ fn check_spline(spline: &Spline) -> Result<(), String> {
         return Err("pieces, triangles and spans disagree in number".to_string());
     }
     finite("arc length", &[spline.arc_length()])?;
-    for (seg, t) in pieces.iter().zip(triangles) {
-        check_curve(
-            seg,
-            &[t[0], t[1]],
-            &[t[1], t[2]],
-            9,
-            1e-3 * seg.arc_length(),
-        )?;
-    }
+    on_triangles(pieces, triangles)?;
     let all: Vec<Point> = triangles.iter().flatten().copied().collect();
     let size = spline.arc_length();
     let tol = bounds::POSITION * size + rounding(&all);
@@ -742,17 +744,7 @@ fn check_spline(spline: &Spline) -> Result<(), String> {
     let pairs = n - usize::from(!spline.is_closed());
     for k in 0..pairs {
         let (a, b) = (&pieces[k], &pieces[(k + 1) % n]);
-        let (pa, pb) = (a.end_point(), b.start_point());
-        if dist(pa, pb) > 64.0 * tol {
-            return Err(format!("pieces {k} and {} {:e} apart", k + 1, dist(pa, pb)));
-        }
-        let ta = a.theta_at_s(a.arc_length()).map_err(|e| e.to_string())?;
-        let tb = b.theta_at_s(0.0).map_err(|e| e.to_string())?;
-        let tau = std::f64::consts::TAU;
-        let jump = (ta - tb) - tau * ((ta - tb) / tau).round();
-        if jump.abs() > bounds::TANGENT + 1e3 * tol / size {
-            return Err(format!("tangent jumps {jump:e} rad after piece {k}"));
-        }
+        meet(a, b, k, tol, size)?;
         let (ka, kb) = (a.curvature_end(), b.curvature_start());
         if spans[k] == spans[(k + 1) % n] {
             if !(ka.abs().max(kb.abs()) <= INFLECTION_LIMIT * kmax && ka * kb <= 0.0) {

@@ -144,6 +144,24 @@ pub enum Error {
         /// Why.
         reason: crate::path::G2Failure,
     },
+    /// The span of a G2 spline from point `span` to the next cannot be drawn as one
+    /// segment.
+    #[error("the span from point P{span} cannot be drawn: {source}")]
+    SplineSpan {
+        /// The span (0-based): from point `span` to the next.
+        span: usize,
+        /// Why its segment cannot be drawn.
+        source: Box<Error>,
+    },
+    /// No spline through the points with continuous curvature (G2) was found: the span
+    /// from point `span` to the next is where it fails.
+    #[error("no G2 spline: on the span from point P{span} to the next, {reason}")]
+    NoG2Spline {
+        /// The span (0-based): from point `span` to the next.
+        span: usize,
+        /// Why.
+        reason: crate::path::G2Failure,
+    },
     /// A computation that should succeed for a solved curve did not (an overflow, or a
     /// bound of the family reached through rounding). This is a defect: please report the
     /// input that caused it.
@@ -188,7 +206,7 @@ pub enum ErrorKind {
     Unrepresentable,
     /// [`Error::NumericalFailure`].
     NumericalFailure,
-    /// [`Error::NoG2Path`].
+    /// [`Error::NoG2Path`] and [`Error::NoG2Spline`].
     NoG2Path,
 }
 
@@ -232,7 +250,8 @@ impl Error {
             Error::Unrepresentable { .. } => ErrorKind::Unrepresentable,
             Error::NumericalFailure { .. } => ErrorKind::NumericalFailure,
             Error::PathSegment { source, .. } => source.kind(),
-            Error::NoG2Path { .. } => ErrorKind::NoG2Path,
+            Error::NoG2Path { .. } | Error::NoG2Spline { .. } => ErrorKind::NoG2Path,
+            Error::SplineSpan { source, .. } => source.kind(),
         }
     }
 }

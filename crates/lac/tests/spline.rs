@@ -97,10 +97,10 @@ fn a_span_that_must_inflect_is_named_for_alpha_at_least_zero() {
         Point::new(8.0, 0.0),
     ];
     match Spline::g2(&points, 0.5, false, None) {
-        Err(Error::NoG2Path {
+        Err(Error::NoG2Spline {
             reason: G2Failure::SpanInflects,
-            leg,
-        }) => assert!(leg <= 3),
+            span,
+        }) => assert!(span <= 3),
         other => panic!("{other:?}"),
     }
     assert!(Spline::g2(&points[..2], 0.5, false, None).is_err());
@@ -259,7 +259,7 @@ fn share_of_random_point_sets_turning_either_way() {
                 }
                 Err(e) => {
                     let name = match e {
-                        Error::NoG2Path { reason, .. } => format!("{reason:?}"),
+                        Error::NoG2Spline { reason, .. } => format!("{reason:?}"),
                         other => format!("{other:?}"),
                     };
                     let name: String = name.split([' ', '{', '(']).take(1).collect();

@@ -103,14 +103,14 @@ impl fmt::Display for G2Failure {
             ),
             G2Failure::SpanInflects => write!(
                 f,
-                "this span (from this point to the next) would have to inflect: no single \
-                 segment fits its end tangents; a log-aesthetic curve passes through an \
-                 inflection only for alpha < 0 (and then its two halves may turn by at most \
-                 180 deg each): use alpha < 0, or add points where the curve turns"
+                "it would have to inflect: no single segment fits its end tangents; a \
+                 log-aesthetic curve passes through an inflection only for alpha < 0 (and \
+                 then its two halves may turn by at most 180 deg each): use alpha < 0, or \
+                 add points where the curve turns"
             ),
             G2Failure::InflectionAtPoint => write!(
                 f,
-                "this span passes through an inflection almost at one of its points (one half \
+                "it passes through an inflection almost at one of its points (one half \
                  of its S turns by less than 0.001 rad, too flat to draw in double precision); \
                  move that point off the curve's inflection, or add a point"
             ),

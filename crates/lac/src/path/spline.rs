@@ -103,9 +103,9 @@ impl Spline {
     /// directions are `ends` (radians) or those of the circles through its first and last
     /// three points.
     ///
-    /// Errors: [`Error::NoG2Path`] naming the span (`leg` i is the span from point i) that
+    /// Errors: [`Error::NoG2Spline`] naming the span (from point `span` to the next) that
     /// must inflect ([`G2Failure::SpanInflects`]) or where the curvature could not be made
-    /// continuous, or [`Error::PathSegment`] naming the span whose segment cannot be drawn;
+    /// continuous, or [`Error::SplineSpan`] naming the span whose segment cannot be drawn;
     /// bad input.
     pub fn g2(
         points: &[Point],
@@ -198,8 +198,8 @@ impl Spline {
                 Ok(k) => Ok((Shape::Plain(t), k)),
                 Err(e) => match s_span() {
                     Some(s) => Ok((Shape::S(s), s.end_curvatures())),
-                    None => Err(Error::PathSegment {
-                        vertex: i,
+                    None => Err(Error::SplineSpan {
+                        span: i,
                         source: Box::new(e),
                     }),
                 },
@@ -207,8 +207,8 @@ impl Spline {
         }
         match s_span() {
             Some(s) => Ok((Shape::S(s), s.end_curvatures())),
-            None => Err(Error::NoG2Path {
-                leg: i,
+            None => Err(Error::NoG2Spline {
+                span: i,
                 reason: G2Failure::SpanInflects,
             }),
         }
@@ -427,8 +427,8 @@ impl Spline {
             }
         });
         if jump > 0.5 * G2_JUMP_LIMIT {
-            return Err(Error::NoG2Path {
-                leg: unknowns[worst],
+            return Err(Error::NoG2Spline {
+                span: unknowns[worst],
                 reason: G2Failure::NoConvergence { jump },
             });
         }
@@ -438,8 +438,8 @@ impl Spline {
         let mut inflection_points = Vec::new();
         for i in 0..self.spans() {
             let piece = |t: [Point; 3]| {
-                Segment::from_control_points(t, alpha).map_err(|e| Error::PathSegment {
-                    vertex: i,
+                Segment::from_control_points(t, alpha).map_err(|e| Error::SplineSpan {
+                    span: i,
                     source: Box::new(e),
                 })
             };
@@ -460,8 +460,8 @@ impl Spline {
                 halves
                     .into_iter()
                     .map(|t| {
-                        Segment::from_control_points(t, alpha).map_err(|_| Error::NoG2Path {
-                            leg: i,
+                        Segment::from_control_points(t, alpha).map_err(|_| Error::NoG2Spline {
+                            span: i,
                             reason: reason.clone(),
                         })
                     })
@@ -530,8 +530,8 @@ impl Spline {
                 // The two halves of an S, at the inflection.
                 let flat = k0.abs().max(k1.abs());
                 if !(flat <= INFLECTION_LIMIT * scale && k0 * k1 <= 0.0) {
-                    return Err(Error::NoG2Path {
-                        leg: spans_of_pieces[k],
+                    return Err(Error::NoG2Spline {
+                        span: spans_of_pieces[k],
                         reason: G2Failure::InflectionUnresolved { alpha },
                     });
                 }
@@ -552,8 +552,8 @@ impl Spline {
                     // Newton's answer met the tolerance on the curvatures it computed; the
                     // segments as built differ from them (a curvature near zero at a
                     // point, where both ends' digits are few).
-                    return Err(Error::NoG2Path {
-                        leg: spans_of_pieces[next],
+                    return Err(Error::NoG2Spline {
+                        span: spans_of_pieces[next],
                         reason: G2Failure::NoConvergence { jump },
                     });
                 }

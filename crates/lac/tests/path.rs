@@ -556,3 +556,43 @@ fn a_closed_path_whose_closing_leg_inflects_ends_where_it_starts() {
         assert!((samples[100].s - path.arc_length()).abs() <= 1e-12 * path.arc_length());
     }
 }
+
+#[test]
+fn an_inflection_that_cannot_reach_zero_curvature_is_named_not_a_numerical_failure() {
+    // Found by the random-polygon share above (α = −1.5, inflection legs ×3): the segments
+    // next to the leg P4-P5 stop 1e-9 short of zero curvature, so the straight piece's
+    // check fails. That is the documented limit of α next to an inflection, reported as
+    // such, not as a numerical failure "to report".
+    let p = [
+        (0.0, 0.0),
+        (1.2008140127643374, 0.0),
+        (2.08889293060965, -0.9488248339513897),
+        (3.1880835223592943, -4.670583372937199),
+        (3.7033687389047616, -5.183287759018379),
+        (6.283734551082601, -6.281032725372666),
+        (6.808961666826523, -6.970045232647131),
+        (6.66383536450807, -7.76828562779175),
+    ]
+    .map(|(x, y)| Point::new(x, y));
+    let poly = ControlPolygon::open(&p).unwrap();
+    let alphas = Alphas::One(-1.5);
+    match Path::g2(&poly, &alphas, None) {
+        Err(Error::NoG2Path {
+            leg: 4,
+            reason: G2Failure::InflectionUnresolved { alpha },
+        }) => assert_eq!(alpha, -1.5),
+        other => panic!("{other:?}"),
+    }
+    // No G1 path can be drawn either (the segment at P2 is not drawable at α = −1.5 with
+    // its joints at the fractions reached or at the midpoints): the G2 reason is the error.
+    assert!(matches!(
+        Path::g2_or_nearest_g1(&poly, &alphas, None),
+        Err(Error::NoG2Path {
+            reason: G2Failure::InflectionUnresolved { .. },
+            ..
+        })
+    ));
+    // A little closer to 0, the same polygon has its G2 path through both inflections.
+    let path = Path::g2(&poly, &Alphas::One(-1.4), None).unwrap();
+    assert_eq!(path.straight_pieces().len(), 2);
+}

@@ -92,8 +92,8 @@ impl fmt::Display for G2Failure {
                 f,
                 "the curve passes through an inflection here; a segment with alpha = {alpha} \
                  that ends there cannot be brought to zero curvature in double precision \
-                 (use alpha between -1.5 and 0 next to a path's inflections, between -1.3 \
-                 and 0 in a spline's)"
+                 (use an alpha closer to 0: above about -1.5 next to a path's inflections, \
+                 above about -1.3 in a spline's)"
             ),
             G2Failure::InflectionsAtOneVertex { vertex } => write!(
                 f,
@@ -713,28 +713,27 @@ pub(super) fn solve(
             leg,
             reason: G2Failure::InflectionLegTooShort { overlap },
         };
-        let path = Path::g1(
-            polygon,
-            &super::Alphas::PerSegment(alphas.to_vec()),
-            Some(&fractions),
-        )?;
-        return Ok(G2Outcome {
-            path,
-            failure: Some(failure),
-        });
+        return nearest_g1(polygon, alphas, &fractions, failure);
     }
     if jump_ok {
-        let path = Path::assemble(
+        let failure = match Path::assemble(
             polygon.clone(),
             alphas.to_vec(),
             [t, t_end],
             segments,
             Continuity::G2,
-        )?;
-        return Ok(G2Outcome {
-            path,
-            failure: None,
-        });
+        ) {
+            Ok(path) => {
+                return Ok(G2Outcome {
+                    path,
+                    failure: None,
+                })
+            }
+            // An inflection whose segments could not reach zero curvature.
+            Err(failure @ Error::NoG2Path { .. }) => failure,
+            Err(e) => return Err(e),
+        };
+        return nearest_g1(polygon, alphas, &fractions, failure);
     }
     let (worst, jump) = residual
         .iter()
@@ -747,15 +746,27 @@ pub(super) fn solve(
         leg: infl.unknown[worst],
         reason: G2Failure::NoConvergence { jump },
     };
-    let path = Path::g1(
-        polygon,
-        &super::Alphas::PerSegment(alphas.to_vec()),
-        Some(&fractions),
-    )?;
-    Ok(G2Outcome {
-        path,
-        failure: Some(failure),
-    })
+    nearest_g1(polygon, alphas, &fractions, failure)
+}
+
+/// The outcome of a G2 search that failed with `failure`: the G1 path at the joint
+/// fractions it reached, or at the leg midpoints where that one cannot be drawn; `failure`
+/// itself as the error when neither can (why G2 failed is then the more useful error).
+fn nearest_g1(
+    polygon: &ControlPolygon,
+    alphas: &[f64],
+    fractions: &[f64],
+    failure: Error,
+) -> Result<G2Outcome> {
+    let alphas = super::Alphas::PerSegment(alphas.to_vec());
+    match Path::g1(polygon, &alphas, Some(fractions)).or_else(|_| Path::g1(polygon, &alphas, None))
+    {
+        Ok(path) => Ok(G2Outcome {
+            path,
+            failure: Some(failure),
+        }),
+        Err(_) => Err(failure),
+    }
 }
 
 #[cfg(test)]

@@ -531,14 +531,27 @@ impl Path {
                 let piece = straight_piece(&polygon, &segments, &fractions, &fractions_end, leg)?;
                 let ok = piece.gap <= G1_LIMIT * size
                     && piece.tangent_jump <= G1_LIMIT
-                    && fractions_end[leg] <= fractions[leg]
-                    && piece.curvature_before.abs() <= INFLECTION_LIMIT * scale
-                    && piece.curvature_after.abs() <= INFLECTION_LIMIT * scale;
+                    && fractions_end[leg] <= fractions[leg];
                 if !ok {
                     return Err(Error::NumericalFailure {
-                        what: "the path's inflection check (a straight piece's ends, tangents \
-                               or zero curvature do not match)",
+                        what: "the path's inflection check (a straight piece's ends or \
+                               tangents do not match)",
                     });
+                }
+                // A segment whose end could not be brought to zero curvature (α near the
+                // bottom of the range that resolves it): the inflection is unresolved there.
+                let (before, after) = polygon.segments_at_leg(leg);
+                for (k, i) in [
+                    (piece.curvature_before, before),
+                    (piece.curvature_after, after),
+                ] {
+                    // (A NaN curvature fails too.)
+                    if k.abs() > INFLECTION_LIMIT * scale || k.is_nan() {
+                        return Err(Error::NoG2Path {
+                            leg,
+                            reason: G2Failure::InflectionUnresolved { alpha: alphas[i] },
+                        });
+                    }
                 }
                 straight.push(piece);
                 continue;

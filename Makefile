@@ -26,10 +26,11 @@ rust:
 	cargo clippy --locked --workspace --all-targets -- -D warnings
 	$(CARGO_TEST)
 
-# `--no-run` is a no-op after `rust`; alone, it (re)builds the test-profile binary.
+# `--no-run` is a no-op after `rust`; alone, it (re)builds the test-profile binary. The
+# cross-checks run on all cores (pytest-xdist): about 80 s instead of 160 s here.
 python: $(VENV)/.installed
 	$(CARGO_TEST) --no-run --quiet
-	LAC_BIN=$(LAC_BIN) $(PY) -m pytest -q tools/reference
+	LAC_BIN=$(LAC_BIN) $(PY) -m pytest -q -n auto tools/reference
 
 # The editor in a real browser: Debian's chromium (installed when missing; CI runs as root),
 # playwright-core from npm, the same `lac` binary serving on a free port of 127.0.0.1.

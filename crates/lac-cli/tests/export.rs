@@ -40,6 +40,16 @@ fn args<'a>(curve: &[&'a str], extra: &[&'a str]) -> Vec<&'a str> {
     v
 }
 
+/// The first curve of an exported JSON document ends where it starts (to 1e-12).
+fn assert_closes(doc: &serde_json::Value) {
+    let points = doc["curves"][0]["control_points"].as_array().unwrap();
+    let (first, last) = (&points[0], &points[points.len() - 1]);
+    for k in 0..2 {
+        let d = first[k].as_f64().unwrap() - last[k].as_f64().unwrap();
+        assert!(d.abs() < 1e-12, "{first} vs {last}");
+    }
+}
+
 #[test]
 fn the_report_goes_to_standard_error_and_the_format_follows_the_extension() {
     let dir = tempfile::tempdir().unwrap();
@@ -214,12 +224,7 @@ fn a_closed_path_is_a_curve_whose_ends_meet() {
         let run = lac(&args(&curve, &["--format", "json"]));
         assert_eq!(run.code, 0, "{}", run.stderr);
         let doc: serde_json::Value = serde_json::from_str(&run.stdout).unwrap();
-        let points = doc["curves"][0]["control_points"].as_array().unwrap();
-        let (first, last) = (&points[0], &points[points.len() - 1]);
-        for k in 0..2 {
-            let d = first[k].as_f64().unwrap() - last[k].as_f64().unwrap();
-            assert!(d.abs() < 1e-12, "{first} vs {last}");
-        }
+        assert_closes(&doc);
         assert_eq!(doc["continuity"], if g.is_empty() { "G1" } else { "G2" });
     }
 }
@@ -320,12 +325,7 @@ fn a_closed_path_through_inflections_is_one_closed_g2_curve() {
         assert!(max <= tolerance.parse::<f64>().unwrap(), "{max}");
         // One curve that closes on itself, through every joint and straight piece of the
         // path in its order of travel: the path's own points are on it.
-        let points = doc["curves"][0]["control_points"].as_array().unwrap();
-        let (first, last) = (&points[0], &points[points.len() - 1]);
-        for k in 0..2 {
-            let d = first[k].as_f64().unwrap() - last[k].as_f64().unwrap();
-            assert!(d.abs() < 1e-12, "{first} vs {last}");
-        }
+        assert_closes(&doc);
         let path = lac(&[
             "path",
             "--polygon",
@@ -348,6 +348,7 @@ fn a_closed_path_through_inflections_is_one_closed_g2_curve() {
         // The curve starts where the first segment does (the end of the closing leg's
         // straight piece).
         let start = &report["segments"][0]["control_points"][0];
+        let first = &doc["curves"][0]["control_points"][0];
         for k in 0..2 {
             let d = first[k].as_f64().unwrap() - start[k].as_f64().unwrap();
             assert!(d.abs() < 1e-12, "{first} vs {start}");
@@ -404,12 +405,7 @@ fn a_spline_exports_from_its_arguments_or_from_lac_splines_result() {
     ]);
     assert_eq!(run.code, 0, "{}", run.stderr);
     let doc: serde_json::Value = serde_json::from_str(&run.stdout).unwrap();
-    let points = doc["curves"][0]["control_points"].as_array().unwrap();
-    let (first, last) = (&points[0], &points[points.len() - 1]);
-    for k in 0..2 {
-        let d = first[k].as_f64().unwrap() - last[k].as_f64().unwrap();
-        assert!(d.abs() < 1e-12, "{first} vs {last}");
-    }
+    assert_closes(&doc);
     let run = lac(&[
         "export",
         "--through",

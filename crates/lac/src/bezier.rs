@@ -289,7 +289,15 @@ impl RationalCubic {
                 .map(|&(x, w)| w * (speed(mid - half * x) + speed(mid + half * x)))
                 .sum::<f64>()
         };
-        adaptive(&rule, t0, t1, accuracy.max(0.0))
+        // The speed's features narrow as the weights grow unlike (where the small ones
+        // dominate, the point moves through a short span of t): more starting panels.
+        let w = self.weights;
+        let ratio = w.iter().fold(0.0f64, |m, &x| m.max(x))
+            / w.iter().fold(f64::INFINITY, |m, &x| m.min(x));
+        // (A NaN ratio, from a curve of NaN, takes the fewest.)
+        let panels = (PANELS as f64 * ratio.sqrt()).min(MAX_PANELS as f64) as usize;
+        let panels = panels.max(PANELS);
+        adaptive(&rule, t0, t1, accuracy.max(0.0), panels)
     }
 }
 
@@ -299,8 +307,10 @@ impl RationalCubic {
 /// hundred.
 const MAX_SPLITS: usize = 1 << 14;
 
-/// The intervals [`adaptive`] starts on.
+/// The intervals [`adaptive`] starts on for equal weights (times the square root of the
+/// ratio of the largest weight to the smallest for others), and at most.
 const PANELS: usize = 8;
+const MAX_PANELS: usize = 1024;
 
 /// The length "to rounding", relative: the least error estimate the quadrature works
 /// toward, relative to the whole length (the speeds come from the power basis, a few ulps
@@ -355,22 +365,22 @@ impl Ord for Interval {
 }
 
 /// ∫ over [a, b] by `rule`, globally adaptive: the interval with the largest error
-/// estimate is split next, until the estimates sum to at most `tol` or to rounding
+/// estimate is split next, until the estimates sum to at most half `tol` or to rounding
 /// ([`ROUNDING_FLOOR`] of the whole), or [`MAX_SPLITS`] are spent. Splitting where the
 /// error is largest puts the work where the speed has a sharp peak; intervals where the
 /// speed's own rounding keeps the two estimates apart are left while larger errors remain
 /// (splitting by depth first spent every split there, and a bound on the splits then left
 /// a peak elsewhere unresolved: found by comparing lengths at accuracy 1e-3 and 0).
-fn adaptive(rule: &impl Fn(f64, f64) -> f64, a: f64, b: f64, tol: f64) -> f64 {
-    // Started on PANELS intervals: on one, the two estimates of a speed with a sharp peak
-    // can agree by chance, both missing the peak (seen: 2e-4 off at accuracy 1e-9).
-    let h = (b - a) / PANELS as f64;
+fn adaptive(rule: &impl Fn(f64, f64) -> f64, a: f64, b: f64, tol: f64, panels: usize) -> f64 {
+    // Started on `panels` intervals: on too wide a one, the two estimates of a speed with a
+    // narrow wiggle can agree, both sampling past it.
+    let h = (b - a) / panels as f64;
     let mut heap = std::collections::BinaryHeap::new();
     let (mut value, mut error) = (0.0, 0.0);
-    for k in 0..PANELS {
+    for k in 0..panels {
         let (lo, hi) = (
             a + k as f64 * h,
-            if k + 1 == PANELS {
+            if k + 1 == panels {
                 b
             } else {
                 a + (k + 1) as f64 * h
@@ -383,7 +393,7 @@ fn adaptive(rule: &impl Fn(f64, f64) -> f64, a: f64, b: f64, tol: f64) -> f64 {
     }
     for _ in 0..MAX_SPLITS {
         // (A NaN, from a curve of NaN, stops at once.)
-        if !(error > tol && error > ROUNDING_FLOOR * value.abs()) {
+        if !(error > 0.5 * tol && error > ROUNDING_FLOOR * value.abs()) {
             break;
         }
         let Some(worst) = heap.pop() else {

@@ -250,10 +250,11 @@ fn arclen_to_rounding_returns() {
     assert!((c.arclen(0.0) - len).abs() <= 1e-9);
     // Seeded random curves, coordinates 1e-3 to 1e3 and weights 1e-3 to 1e3, at accuracy
     // 0 and 1e-300: each returns (before the bound on the splits, some took minutes at
-    // 1e-6), finite, at least the chord, and the same for both (both ask for rounding).
-    // The answers agree with dense polylines where checked (to 1e-11); at looser
-    // accuracies a sharp peak of speed narrower than the nodes can still be missed (the
-    // error is estimated by comparing two rules that both miss it): left open.
+    // 1e-6), finite, at least the chord, and the same for both (both ask for rounding);
+    // those checked against dense polylines agree to 1e-12. At 1e-3, 1e-6 and 1e-9 of the
+    // length each is within about that of the length to rounding (with 8 starting panels
+    // whatever the weights, 498.37644 came back at 1e-9 for 498.37683: a narrow wiggle
+    // of speed both rules sampled past).
     let mut state = 7u64;
     let mut next = move || {
         state = state
@@ -271,6 +272,15 @@ fn arclen_to_rounding_returns() {
         };
         tried += 1;
         let (l0, l1) = (c.arclen(0.0), c.arclen(1e-300));
+        // The error is estimated (two rules compared), not bounded: over these 600
+        // requests the worst was 1.19 times the accuracy asked.
+        for share in [1e-3, 1e-6, 1e-9] {
+            let l = c.arclen(share * l0);
+            assert!(
+                (l - l0).abs() <= 2.0 * share * l0,
+                "{p:?} {w:?}: {l} at {share} of {l0}"
+            );
+        }
         let chord = (p[3] - p[0]).hypot();
         assert!(
             l0.is_finite() && l0 == l1 && l0 >= chord * (1.0 - 1e-12),

@@ -326,17 +326,7 @@ fn a_closed_path_through_inflections_is_one_closed_g2_curve() {
         // One curve that closes on itself, through every joint and straight piece of the
         // path in its order of travel: the path's own points are on it.
         assert_closes(&doc);
-        let path = lac(&[
-            "path",
-            "--polygon",
-            FIGURE_EIGHT,
-            "--closed",
-            "--g2",
-            "--alpha",
-            alpha,
-            "--format",
-            "json",
-        ]);
+        let path = lac(&[&["path"][..], &curve, &["--format", "json"]].concat());
         assert_eq!(path.code, 0, "{}", path.stderr);
         let report: serde_json::Value = serde_json::from_str(&path.stdout).unwrap();
         let straight = report["straight_pieces"].as_array().unwrap();

@@ -403,10 +403,13 @@ fn caption(pieces: &[Segment], layers: &Layers, extras: &Extras) -> Block {
     Block::new(CAPTION_SIZE).list(facts).list(key)
 }
 
-/// "α = …" for one piece, "α0 = …", "α1 = …" for several.
+/// "α = …" for one piece or for several that share it (a path or spline with one α),
+/// "α0 = …", "α1 = …" for several that do not.
 fn slopes(pieces: &[Segment]) -> Vec<String> {
-    if let [piece] = pieces {
-        return vec![format!("α = {}", as_given(piece.alpha()))];
+    if let [piece, rest @ ..] = pieces {
+        if rest.iter().all(|p| p.alpha() == piece.alpha()) {
+            return vec![format!("α = {}", as_given(piece.alpha()))];
+        }
     }
     pieces
         .iter()

@@ -208,7 +208,6 @@ impl RationalCubic {
     /// the same fixed rule; [`ParamCurveArclen::arclen`] takes an accuracy instead.
     pub fn arc_length_between(&self, t0: f64, t1: f64) -> f64 {
         let (t0, t1) = (t0.clamp(0.0, 1.0), t1.clamp(0.0, 1.0));
-        const PANELS: usize = 8;
         let h = (t1 - t0) / PANELS as f64;
         let mut sum = 0.0;
         for k in 0..PANELS {

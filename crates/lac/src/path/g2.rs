@@ -597,17 +597,7 @@ pub(super) fn solve(
     let infl = match inflections(polygon, alphas) {
         Ok(infl) => infl,
         Err((leg, reason)) => {
-            let failure = Error::NoG2Path { leg, reason };
-            // (When not even the midpoint G1 path can be drawn, the reason G2 failed is
-            // the more useful error.)
-            let Ok(path) = Path::g1(polygon, &super::Alphas::PerSegment(alphas.to_vec()), None)
-            else {
-                return Err(failure);
-            };
-            return Ok(G2Outcome {
-                path,
-                failure: Some(failure),
-            });
+            return nearest_g1(polygon, alphas, None, Error::NoG2Path { leg, reason });
         }
     };
     // Only the joints on other legs are unknowns.
@@ -713,7 +703,7 @@ pub(super) fn solve(
             leg,
             reason: G2Failure::InflectionLegTooShort { overlap },
         };
-        return nearest_g1(polygon, alphas, &fractions, failure);
+        return nearest_g1(polygon, alphas, Some(&fractions), failure);
     }
     if jump_ok {
         let failure = match Path::assemble(
@@ -733,7 +723,7 @@ pub(super) fn solve(
             Err(failure @ Error::NoG2Path { .. }) => failure,
             Err(e) => return Err(e),
         };
-        return nearest_g1(polygon, alphas, &fractions, failure);
+        return nearest_g1(polygon, alphas, Some(&fractions), failure);
     }
     let (worst, jump) = residual
         .iter()
@@ -746,20 +736,24 @@ pub(super) fn solve(
         leg: infl.unknown[worst],
         reason: G2Failure::NoConvergence { jump },
     };
-    nearest_g1(polygon, alphas, &fractions, failure)
+    nearest_g1(polygon, alphas, Some(&fractions), failure)
 }
 
 /// The outcome of a G2 search that failed with `failure`: the G1 path at the joint
-/// fractions it reached, or at the leg midpoints where that one cannot be drawn; `failure`
-/// itself as the error when neither can (why G2 failed is then the more useful error).
+/// `fractions` it reached (if any), or at the leg midpoints where that one cannot be drawn;
+/// `failure` itself as the error when neither can (why G2 failed is then the more useful
+/// error).
 fn nearest_g1(
     polygon: &ControlPolygon,
     alphas: &[f64],
-    fractions: &[f64],
+    fractions: Option<&[f64]>,
     failure: Error,
 ) -> Result<G2Outcome> {
     let alphas = super::Alphas::PerSegment(alphas.to_vec());
-    match Path::g1(polygon, &alphas, Some(fractions)).or_else(|_| Path::g1(polygon, &alphas, None))
+    let reached = fractions.map(|f| Path::g1(polygon, &alphas, Some(f)));
+    match reached
+        .filter(Result::is_ok)
+        .unwrap_or_else(|| Path::g1(polygon, &alphas, None))
     {
         Ok(path) => Ok(G2Outcome {
             path,

@@ -150,7 +150,8 @@ pub(crate) enum Command {
     /// leg joins them (the leg must be long: such a segment's inflection-side leg is 2-5
     /// times its other). When no G2 path is found the error (kind no_g2_path, exit code 3)
     /// names the joint's leg, says why, and gives the fractions of the nearest G1 path (pass
-    /// them as --fractions without --g2).
+    /// them as --fractions without --g2; also as numbers in "g1_fractions", absent where no
+    /// G1 path can be drawn either).
     #[command(
         override_usage = "lac path --polygon \"x0,y0 x1,y1 x2,y2 …\" (--alpha A | --alphas \"a1,a2,…\") \
                                 [--closed] [--g2 | --fractions \"t1,t2,…\"]\n                \

@@ -48,6 +48,10 @@ pub struct ErrorBody {
     /// For `not_drawable` space segments whose Ω is too large: the largest Ω that works.
     #[serde(skip_serializing_if = "Option::is_none", default)]
     pub omega_max: Option<f64>,
+    /// For a `no_g2_path` path: the joint fractions of the nearest G1 path, where one can
+    /// be drawn (pass them as `fractions` without `g2`); absent where none can.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub g1_fractions: Option<Vec<f64>>,
 }
 
 /// How a front end should treat a failure.
@@ -71,6 +75,7 @@ impl ErrorBody {
             kind: kind.into(),
             message: message.into(),
             omega_max: None,
+            g1_fractions: None,
         }
     }
 
@@ -119,6 +124,7 @@ impl From<lac::Error> for ErrorBody {
             kind,
             message: err.to_string(),
             omega_max,
+            g1_fractions: None,
         }
     }
 }
@@ -2262,18 +2268,15 @@ impl PathInput {
         match outcome.failure {
             None => Ok(outcome.path),
             Some(err) => {
-                let fractions: Vec<String> = outcome
-                    .path
-                    .joint_fractions()
-                    .iter()
-                    .map(|f| format!("{f:.6}"))
-                    .collect();
+                let fractions = outcome.path.joint_fractions();
+                let shown: Vec<String> = fractions.iter().map(|f| format!("{f:.6}")).collect();
                 let mut body = ErrorBody::from(err);
                 body.message = format!(
                     "{}; the nearest G1 path has its joints at the leg fractions [{}]",
                     body.message,
-                    fractions.join(", ")
+                    shown.join(", ")
                 );
+                body.g1_fractions = Some(fractions);
                 Err(body)
             }
         }

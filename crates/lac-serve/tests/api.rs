@@ -829,6 +829,23 @@ async fn a_path_answer_is_lac_paths_report_with_each_segments_lcg_line() {
     .await;
     assert_eq!(g1.status, StatusCode::OK, "{}", g1.text);
     assert_eq!(g1.json["continuity"], "g1");
+    // Its joint fractions come as numbers too (the page offers the G1 path only then).
+    let fractions = refused.json["error"]["g1_fractions"].as_array().unwrap();
+    assert_eq!(fractions.len(), g1.json["joints"].as_array().unwrap().len());
+    // Where no G1 path can be drawn either (α = −1.8: not even the midpoint one), the
+    // refusal says why G2 failed and carries no fractions.
+    let neither = post(
+        &app(),
+        "/api/path",
+        r#"{"points":[[0,0],[1,0],[1.5,1],[4,1.2],[4.5,2]],"alpha":-1.8,"g2":true}"#,
+    )
+    .await;
+    assert_eq!(neither.kind(), "no_g2_path", "{}", neither.text);
+    assert!(
+        neither.json["error"].get("g1_fractions").is_none(),
+        "{}",
+        neither.text
+    );
     let short = post(
         &app(),
         "/api/path",

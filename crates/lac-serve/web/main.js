@@ -286,7 +286,10 @@ function renderMessage() {
   let text = problem.message.replace(/^not drawable: /, '');
   if (state.error && state.answer) text += ' (the last good curve is drawn faintly).';
   $('message-text').textContent = text;
-  if (state.error && state.error.kind === 'no_g2_path' && state.mode === 'path') {
+  // Only where the library found a G1 path for this polygon (else the button would lead
+  // to another refusal).
+  if (state.error && state.error.kind === 'no_g2_path' && state.mode === 'path'
+      && Array.isArray(state.error.g1_fractions)) {
     fix.hidden = false;
     fix.textContent = 'Use the G1 path';
     fix.onclick = () => {

@@ -1,6 +1,6 @@
 //! The log-aesthetic space curve family in standard form (seed 003 §3, SPEC §6).
 
-use super::taylor::{Expansion, State};
+use super::taylor::{Accuracy, Expansion, State};
 use super::Frame;
 use crate::error::{finite, Error, Result};
 use crate::numeric::{expm1_ratio, ln1p_ratio};
@@ -374,13 +374,13 @@ impl SpaceForm {
     fn walk_to(&self, targets: impl Iterator<Item = (usize, f64)>, out: &mut [Option<Frame>]) {
         let mut state = State::start();
         let mut expansion = Expansion::new(self, &state);
-        let mut h_max = expansion.step_size();
+        let mut h_max = expansion.step_size(Accuracy::Full);
         for (index, s) in targets {
             while (s - state.s).abs() > h_max {
                 let h = h_max.copysign(s - state.s);
                 state = expansion.state_at(h);
                 expansion = Expansion::new(self, &state);
-                h_max = expansion.step_size();
+                h_max = expansion.step_size(Accuracy::Full);
             }
             out[index] = Some(self.frame_from(&expansion.state_at(s - state.s)));
         }

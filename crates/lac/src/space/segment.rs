@@ -7,7 +7,7 @@ use super::mat3::Mat3;
 use super::shoot::{
     end_angles, integrate_to, shoot, shoot_each, Budget, Checkpoints, Cone, Shot, SOLVE_STEPS,
 };
-use super::taylor::{Expansion, State};
+use super::taylor::{Accuracy, Expansion, State};
 use super::Frame;
 use crate::error::{finite, Error, NotDrawable, Result};
 use crate::segment::Segment;
@@ -31,6 +31,11 @@ const GENTLE_TURNING: f64 = 1.5 * std::f64::consts::PI;
 
 /// Newton stops when both components of the end-tangent residual are below this (radians).
 const RESIDUAL_TOLERANCE: f64 = 1e-13;
+
+/// Newton's iterations shoot at [`Accuracy::Search`] until the residual is below this
+/// (radians), far above that accuracy's errors (about 1e-9), and at [`Accuracy::Full`] from
+/// there on, so that every converged solve is exact to rounding.
+const SEARCH_RESIDUAL: f64 = 1e-6;
 
 /// The shape asked of a [`SpaceSegment`]: the slopes α, β of its logarithmic curvature and
 /// torsion graphs, the torsion graph's parameter Ω and the torsion type (seed 003 §4). The
@@ -667,6 +672,7 @@ fn solve_space(
         &form,
         found.s_end,
         Checkpoints::Keep,
+        Accuracy::Full,
         &Budget::new(SOLVE_STEPS),
     )
     .filter(|shot| problem.residual3(shot).iter().all(|r| r.abs() < 1e-10))
@@ -800,7 +806,8 @@ impl Problem<'_> {
                     lambda,
                     ln_nu: base + f64::from(k) * 0.25 * std::f64::consts::LN_10,
                 };
-                for shot in shoot_each(&self.form(&p, omega), &cone, self.budget) {
+                let form = self.form(&p, omega);
+                for shot in shoot_each(&form, &cone, Accuracy::Search, self.budget) {
                     let r = self.target.residual(&shot);
                     starts.push((r[0].hypot(r[1]), p, shot.end.s));
                 }
@@ -814,16 +821,25 @@ impl Problem<'_> {
     }
 
     /// Damped Newton on the three residuals of [`Problem::residual3`] in (Λ, ln ν, s), with
-    /// a forward-difference Jacobian and the safeguards of [`Problem::newton`].
+    /// a forward-difference Jacobian and the safeguards and accuracies of
+    /// [`Problem::newton`].
     fn newton3(&self, mut p: Solution, mut s_end: f64, omega: f64) -> Option<Converged> {
-        let eval = |p: &Solution, s: f64| {
-            integrate_to(&self.form(p, omega), s, Checkpoints::Discard, self.budget)
+        let mut accuracy = Accuracy::Search;
+        let eval = |p: &Solution, s: f64, accuracy: Accuracy| {
+            let form = self.form(p, omega);
+            integrate_to(&form, s, Checkpoints::Discard, accuracy, self.budget)
                 .map(|shot| self.residual3(&shot))
         };
-        let mut r = eval(&p, s_end)?;
+        let size_of = |r: &[f64; 3]| r.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let mut r = eval(&p, s_end, accuracy)?;
         let (mut slow, mut last) = (0, f64::INFINITY);
         for _ in 0..40 {
-            let size = r.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            if accuracy == Accuracy::Search && size_of(&r) < SEARCH_RESIDUAL {
+                accuracy = Accuracy::Full;
+                r = eval(&p, s_end, accuracy)?;
+                last = f64::INFINITY;
+            }
+            let size = size_of(&r);
             if size < RESIDUAL_TOLERANCE {
                 let form = self.form(&p, omega);
                 let turning = form
@@ -851,7 +867,7 @@ impl Problem<'_> {
                     1 => q.ln_nu += hk,
                     _ => sq += hk,
                 }
-                let rq = eval(&q, sq)?;
+                let rq = eval(&q, sq, accuracy)?;
                 for i in 0..3 {
                     jac[i][k] = (rq[i] - r[i]) / hk;
                 }
@@ -873,8 +889,8 @@ impl Problem<'_> {
                     lambda,
                     ln_nu: p.ln_nu + d[1],
                 };
-                if let Some(rq) = eval(&q, s_end + d[2]) {
-                    if rq.iter().fold(0.0f64, |m, x| m.max(x.abs())) < size {
+                if let Some(rq) = eval(&q, s_end + d[2], accuracy) {
+                    if size_of(&rq) < size {
                         p = q;
                         s_end += d[2];
                         r = rq;
@@ -891,17 +907,13 @@ impl Problem<'_> {
         None
     }
 
-    fn residual(&self, p: &Solution, omega: f64) -> Option<[f64; 2]> {
-        self.shot(p, omega).map(|shot| self.target.residual(&shot))
+    fn residual(&self, p: &Solution, omega: f64, accuracy: Accuracy) -> Option<[f64; 2]> {
+        self.shot(p, omega, accuracy)
+            .map(|shot| self.target.residual(&shot))
     }
 
-    fn shot(&self, p: &Solution, omega: f64) -> Option<Shot> {
-        shoot(
-            &self.form(p, omega),
-            &self.cone(),
-            Checkpoints::Discard,
-            self.budget,
-        )
+    fn shot(&self, p: &Solution, omega: f64, accuracy: Accuracy) -> Option<Shot> {
+        shoot(&self.form(p, omega), &self.cone(), accuracy, self.budget)
     }
 
     /// Solve at `omega`, directly from a near-helix start, else by continuation in Ω from
@@ -996,7 +1008,7 @@ impl Problem<'_> {
             let ln_nu = base + f64::from(scan.next) * step;
             scan.next += 1;
             let p = Solution { lambda, ln_nu };
-            let Some(shot) = self.shot(&p, omega) else {
+            let Some(shot) = self.shot(&p, omega, Accuracy::Search) else {
                 scan.prev = None;
                 continue;
             };
@@ -1019,13 +1031,21 @@ impl Problem<'_> {
     /// Damped Newton on the two residuals in (Λ, ln ν) with a forward-difference Jacobian;
     /// a trial point where the curve misses the cone is pulled back toward the current one
     /// (seed 003's rule for its simplex), and a negative Λ is replaced by a tenth of the
-    /// current one.
+    /// current one. Its shots are at [`Accuracy::Search`] until the residual is below
+    /// [`SEARCH_RESIDUAL`], at [`Accuracy::Full`] after.
     fn newton(&self, mut p: Solution, omega: f64) -> Option<Converged> {
-        let mut shot = self.shot(&p, omega)?;
+        let mut accuracy = Accuracy::Search;
+        let mut shot = self.shot(&p, omega, accuracy)?;
         let mut r = self.target.residual(&shot);
         let mut slow = 0;
         let mut last = f64::INFINITY;
         for _ in 0..60 {
+            if accuracy == Accuracy::Search && r[0].abs().max(r[1].abs()) < SEARCH_RESIDUAL {
+                accuracy = Accuracy::Full;
+                shot = self.shot(&p, omega, accuracy)?;
+                r = self.target.residual(&shot);
+                last = f64::INFINITY;
+            }
             let size = r[0].abs().max(r[1].abs());
             if size < RESIDUAL_TOLERANCE {
                 let form = self.form(&p, omega);
@@ -1049,7 +1069,7 @@ impl Problem<'_> {
             let hl = 1e-7 * p.lambda.max(1e-3);
             let hn = 1e-7;
             let column = |q: Solution, h: f64| -> Option<[f64; 2]> {
-                let rq = self.residual(&q, omega)?;
+                let rq = self.residual(&q, omega, accuracy)?;
                 Some([(rq[0] - r[0]) / h, (rq[1] - r[1]) / h])
             };
             let jl = column(
@@ -1086,7 +1106,7 @@ impl Problem<'_> {
                     lambda,
                     ln_nu: p.ln_nu + dn,
                 };
-                if let Some(sq) = self.shot(&q, omega) {
+                if let Some(sq) = self.shot(&q, omega, accuracy) {
                     let rq = self.target.residual(&sq);
                     if rq[0].abs().max(rq[1].abs()) < size {
                         p = q;

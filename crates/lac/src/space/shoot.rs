@@ -2,7 +2,7 @@
 //! the cone of half-angle θ0 about its start tangent.
 
 use super::family::SpaceForm;
-use super::taylor::{Expansion, State};
+use super::taylor::{Accuracy, Expansion, State};
 use crate::numeric::{find_root, RootFailure};
 use crate::Vec3;
 
@@ -11,9 +11,9 @@ const MAX_STEPS: usize = 400;
 
 /// The Taylor steps one solve may take over all its shots: the iteration cap that bounds
 /// every call's time (about 90 ms at most on this project's 2-core machine, under a
-/// microsecond a step). Far above what solved inputs take: at most 15,322 over the 2,616
-/// solved inputs of the constructed-input test (median 82), and one of 8,641 solved fuzz
-/// inputs (seed 3, 30,000 inputs) needed more than this.
+/// microsecond a step). Far above what solved inputs take: at most 10,543 over the 2,991
+/// solved inputs of the constructed-input test (median 72, most of them at
+/// [`Accuracy::Search`]).
 pub(crate) const SOLVE_STEPS: u32 = 120_000;
 
 /// What is left of a solve's [`SOLVE_STEPS`]: every shot draws on it, and finds nothing
@@ -65,8 +65,8 @@ impl Cone {
     }
 }
 
-/// Whether [`shoot`] keeps the integrator states at the starts of its steps (for evaluating
-/// the solved segment) or only the end (for the solver's trial shots).
+/// Whether [`integrate_to`] keeps the integrator states at the starts of its steps (for
+/// evaluating the solved segment) or only the end (for the solver's trial shots).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Checkpoints {
     /// Keep every step's start state in [`Shot::checkpoints`].
@@ -108,11 +108,11 @@ pub(crate) fn end_angles(chord: Vec3, t0: Vec3, t1: Vec3) -> (f64, f64, f64) {
 pub(crate) fn shoot(
     form: &SpaceForm,
     cone: &Cone,
-    keep: Checkpoints,
+    accuracy: Accuracy,
     budget: &Budget,
 ) -> Option<Shot> {
     let mut found = None;
-    crossings(form, cone, keep, budget, |shot, k| {
+    crossings(form, cone, accuracy, budget, |shot, k| {
         if k == cone.crossing {
             found = Some(shot);
             false
@@ -124,11 +124,15 @@ pub(crate) fn shoot(
 }
 
 /// Every crossing of `cone` up to its own ([`Cone::crossing`]) in one integration, in
-/// order, each as a [`Shot`] without checkpoints: what [`shoot`] would give for each
-/// crossing number.
-pub(crate) fn shoot_each(form: &SpaceForm, cone: &Cone, budget: &Budget) -> Vec<Shot> {
+/// order: what [`shoot`] would give for each crossing number.
+pub(crate) fn shoot_each(
+    form: &SpaceForm,
+    cone: &Cone,
+    accuracy: Accuracy,
+    budget: &Budget,
+) -> Vec<Shot> {
     let mut shots = Vec::new();
-    crossings(form, cone, Checkpoints::Discard, budget, |shot, k| {
+    crossings(form, cone, accuracy, budget, |shot, k| {
         shots.push(shot);
         k < cone.crossing
     });
@@ -141,13 +145,12 @@ pub(crate) fn shoot_each(form: &SpaceForm, cone: &Cone, budget: &Budget) -> Vec<
 fn crossings(
     form: &SpaceForm,
     cone: &Cone,
-    keep: Checkpoints,
+    accuracy: Accuracy,
     budget: &Budget,
     mut each: impl FnMut(Shot, u32) -> bool,
 ) {
     let (_, s_max) = form.s_range();
     let mut state = State::start();
-    let mut checkpoints = Vec::new();
     // Inside the cone at the start (the curve leaves the apex along the axis).
     let mut crossings = 0;
     for _ in 0..MAX_STEPS {
@@ -155,7 +158,7 @@ fn crossings(
             return;
         }
         let expansion = Expansion::new(form, &state);
-        let mut h = expansion.step_size();
+        let mut h = expansion.step_size(accuracy);
         // Where κ or τ is entire (α = −1: κ linear) the series reaches the bound itself;
         // where it is singular there, steps shrink toward it and stop just short.
         let last = state.s + h >= s_max;
@@ -164,9 +167,6 @@ fn crossings(
         }
         if h <= 1e-12 * state.s.abs().max(1.0) {
             return;
-        }
-        if keep == Checkpoints::Keep {
-            checkpoints.push(state);
         }
         let mut prev = 0.0;
         let mut g_prev = if state.s == 0.0 {
@@ -181,11 +181,7 @@ fn crossings(
             if (g > 0.0) != outside {
                 crossings += 1;
                 let at = refine(cone, &expansion, (prev, g_prev), (sigma, g));
-                let shot = match keep {
-                    Checkpoints::Keep => finish(form, &expansion, at, checkpoints.clone()),
-                    Checkpoints::Discard => finish(form, &expansion, at, Vec::new()),
-                };
-                let go_on = match shot {
+                let go_on = match finish(form, &expansion, at, Vec::new()) {
                     Some(shot) => each(shot, crossings) && crossings < cone.crossing,
                     None => false,
                 };
@@ -209,14 +205,15 @@ fn crossings(
     }
 }
 
-/// Integrate `form` from s = 0 to `s_end`: the state there and, with
-/// [`Checkpoints::Keep`], the states at the starts of the steps (the same steps [`shoot`]
-/// takes). `None` when `s_end` is not inside the valid range, beyond seed 003's 2π guard,
-/// further than [`MAX_STEPS`] steps, or beyond the budget.
+/// Integrate `form` from s = 0 to `s_end` at `accuracy`: the state there and, with
+/// [`Checkpoints::Keep`], the states at the starts of the steps. `None` when `s_end` is not
+/// inside the valid range, beyond seed 003's 2π guard, further than [`MAX_STEPS`] steps, or
+/// beyond the budget.
 pub(crate) fn integrate_to(
     form: &SpaceForm,
     s_end: f64,
     keep: Checkpoints,
+    accuracy: Accuracy,
     budget: &Budget,
 ) -> Option<Shot> {
     let (_, s_max) = form.s_range();
@@ -230,7 +227,7 @@ pub(crate) fn integrate_to(
             return None;
         }
         let expansion = Expansion::new(form, &state);
-        let h = expansion.step_size();
+        let h = expansion.step_size(accuracy);
         if h <= 1e-12 * state.s.abs().max(1.0) {
             return None;
         }

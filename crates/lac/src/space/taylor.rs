@@ -10,9 +10,9 @@
 //! b_(k+1) = −Σⱼ τⱼ n_(k−j) / (k+1)
 //! ```
 //!
-//! A step is as long as the last two terms allow at [`STEP_TOLERANCE`] (Jorba & Zou's rule);
-//! near a bound of the valid range the coefficients grow like the inverse distance to it and
-//! the steps shrink accordingly. The series is the dense output inside a step.
+//! A step is as long as the last two terms allow at the [`Accuracy`] asked (Jorba & Zou's
+//! rule); near a bound of the valid range the coefficients grow like the inverse distance to
+//! it and the steps shrink accordingly. The series is the dense output inside a step.
 
 use super::family::SpaceForm;
 use crate::Vec3;
@@ -20,8 +20,25 @@ use crate::Vec3;
 /// Order of the series.
 pub(crate) const ORDER: usize = 20;
 
-/// Largest size of each of the last two terms of a step's series, for unit frame vectors.
-const STEP_TOLERANCE: f64 = 2e-16;
+/// How exactly a step's series must hold: the largest size of each of its last two terms,
+/// for unit frame vectors.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Accuracy {
+    /// To rounding (2e-16): every segment and every converged solve.
+    Full,
+    /// To 1e-10, with steps about twice as long: the solver's search (scans and Newton
+    /// iterations far from a root), whose shots only have to point the way.
+    Search,
+}
+
+impl Accuracy {
+    fn tolerance(self) -> f64 {
+        match self {
+            Accuracy::Full => 2e-16,
+            Accuracy::Search => 1e-10,
+        }
+    }
+}
 
 /// Position and Frenet frame at arc length `s`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -96,16 +113,17 @@ impl Expansion {
         e
     }
 
-    /// The longest step whose last two terms stay within [`STEP_TOLERANCE`].
-    pub(crate) fn step_size(&self) -> f64 {
+    /// The longest step whose last two terms stay within the tolerance of `accuracy`.
+    pub(crate) fn step_size(&self, accuracy: Accuracy) -> f64 {
         let size = |k: usize| {
             [self.t[k], self.n[k], self.b[k]]
                 .iter()
                 .flat_map(|v| v.to_array())
                 .fold(0.0f64, |m, c| m.max(c.abs()))
         };
-        let h1 = (STEP_TOLERANCE / size(ORDER - 1)).powf(1.0 / (ORDER - 1) as f64);
-        let h2 = (STEP_TOLERANCE / size(ORDER)).powf(1.0 / ORDER as f64);
+        let tolerance = accuracy.tolerance();
+        let h1 = (tolerance / size(ORDER - 1)).powf(1.0 / (ORDER - 1) as f64);
+        let h2 = (tolerance / size(ORDER)).powf(1.0 / ORDER as f64);
         // Both infinite only when κ and τ vanish identically, which they never do.
         0.9 * h1.min(h2)
     }

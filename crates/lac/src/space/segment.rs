@@ -733,6 +733,28 @@ fn solve3(m: [[f64; 3]; 3], b: [f64; 3]) -> Option<[f64; 3]> {
     Some(x)
 }
 
+/// The branch's point at `omega` guessed from its last two points (on their line), or the
+/// last point while there is only one.
+fn predict(path: &[(f64, Converged)], omega: f64) -> (Solution, f64) {
+    let (om1, c1) = path.last().expect("a branch starts with a point");
+    let Some((om0, c0)) = path.len().checked_sub(2).map(|i| &path[i]) else {
+        return (c1.solution, c1.s_end);
+    };
+    let t = (omega - om1) / (om1 - om0);
+    let lerp = |a: f64, b: f64| b + t * (b - a);
+    let lambda = lerp(c0.solution.lambda, c1.solution.lambda);
+    let s = lerp(c0.s_end, c1.s_end);
+    let guess = Solution {
+        lambda: if lambda >= 0.0 {
+            lambda
+        } else {
+            0.1 * c1.solution.lambda
+        },
+        ln_nu: lerp(c0.solution.ln_nu, c1.solution.ln_nu),
+    };
+    (guess, if s > 0.0 { s } else { c1.s_end })
+}
+
 /// The state of a ν scan: the next grid index, the last defined point's dihedral mismatch
 /// and every defined point with its residual.
 #[derive(Default)]
@@ -937,19 +959,22 @@ impl Problem<'_> {
         if omega == 0.0 {
             return Err(none());
         }
-        let mut ok = self
+        let ok = self
             .attempt(0.0)
             .or_else(|| self.attempt_free_end(0.0))
             .ok_or_else(none)?;
         // Follow that segment's branch in Ω with the end s free (smooth through the cone's
-        // fold), to Ω or as far as it goes (to 0.1% of Ω: the Ω_max reported is a lower bound).
+        // fold), to Ω or as far as it goes (to 0.1% of Ω: the Ω_max reported is a lower bound),
+        // each step started on the line through the branch's last two points.
+        let mut path = vec![(0.0, ok)];
         let (mut reached, mut step) = (0.0, 0.25 * omega);
         while step > 1e-3 * omega {
             let next = (reached + step).min(omega);
-            match self.newton3(ok.solution, ok.s_end, next) {
+            let (guess, s_guess) = predict(&path, next);
+            match self.newton3(guess, s_guess, next) {
                 Some(c) if next == omega => return Ok(c),
                 Some(c) => {
-                    ok = c;
+                    path.push((next, c));
                     reached = next;
                     step *= 2.0;
                 }

@@ -331,11 +331,15 @@ pub enum NotDrawable {
         curvature_ratio: f64,
     },
     /// The torsion parameter Ω is too large for these four points, α, β and type: a
-    /// segment exists for Ω up to `omega_max` (seed 003 §4).
+    /// segment exists for Ω up to at least `omega_max` (seed 003 §4).
     TorsionTooLarge {
         /// The Ω asked for.
         omega: f64,
-        /// The largest Ω for which a segment was found.
+        /// The largest Ω reached by following the segment found at Ω = 0 as Ω grows (to
+        /// 0.1% of `omega`): there is a segment for every Ω up to it. It is a lower bound:
+        /// the search at `omega` found nothing, but another branch, not connected to that
+        /// segment, may still give one for some Ω between the two (on the benchmark's random
+        /// inputs, for about one refusal in eight).
         omega_max: f64,
     },
     /// No log-aesthetic space segment of these α, β and type fits the four points, even
@@ -443,7 +447,7 @@ impl fmt::Display for NotDrawable {
             NotDrawable::TorsionTooLarge { omega, omega_max } => write!(
                 f,
                 "omega = {omega} is too large for these points, alpha, beta and type: a space \
-                 segment exists for omega up to {omega_max:.6}; use a smaller omega"
+                 segment exists for omega up to at least {omega_max:.6}; use a smaller omega"
             ),
             NotDrawable::NoSpaceSegment { omega } => write!(
                 f,

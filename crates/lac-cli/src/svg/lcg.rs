@@ -434,10 +434,10 @@ fn footnote(report: &LcgReport, graph_points: usize) -> Block {
     block
 }
 
-/// A fitted slope for reading: to ten decimals (a straight graph's slope of 1e-30 is the
-/// rounding of 0), with six significant digits at most.
+/// A fitted slope for reading: to ten decimals (a straight graph's slope of ±1e-30 is the
+/// rounding of 0, and reads "0", not "-0"), with six significant digits at most.
 fn slope(x: f64) -> String {
-    short((x * 1e10).round() / 1e10)
+    short((x * 1e10).round() / 1e10 + 0.0)
 }
 
 /// `text` with its first letter in upper case.

@@ -5,7 +5,8 @@ use kurbo::Point;
 use super::family::{SpaceForm, SpaceFormParams, TorsionType};
 use super::mat3::Mat3;
 use super::shoot::{
-    end_angles, integrate_to, shoot, shoot_each, Budget, Checkpoints, Cone, Shot, SOLVE_STEPS,
+    end_angles, integrate_to, integrate_to_and_past, shoot, shoot_each, Budget, Checkpoints, Cone,
+    Shot, SOLVE_STEPS,
 };
 use super::taylor::{Accuracy, Expansion, State};
 use super::Frame;
@@ -843,22 +844,23 @@ impl Problem<'_> {
     }
 
     /// Damped Newton on the three residuals of [`Problem::residual3`] in (Λ, ln ν, s), with
-    /// a forward-difference Jacobian and the safeguards and accuracies of
-    /// [`Problem::newton`].
+    /// a forward-difference Jacobian (its s column from the same integration, further along
+    /// the last step's series) and the safeguards and accuracies of [`Problem::newton`].
     fn newton3(&self, mut p: Solution, mut s_end: f64, omega: f64) -> Option<Converged> {
         let mut accuracy = Accuracy::Search;
+        // The residuals at s and at s + h_s, h_s = 1e-7 s.
         let eval = |p: &Solution, s: f64, accuracy: Accuracy| {
             let form = self.form(p, omega);
-            integrate_to(&form, s, Checkpoints::Discard, accuracy, self.budget)
-                .map(|shot| self.residual3(&shot))
+            integrate_to_and_past(&form, s, 1e-7 * s, accuracy, self.budget)
+                .map(|(at, past)| (self.residual3(&at), self.residual3(&past)))
         };
         let size_of = |r: &[f64; 3]| r.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        let mut r = eval(&p, s_end, accuracy)?;
+        let (mut r, mut r_past) = eval(&p, s_end, accuracy)?;
         let (mut slow, mut last) = (0, f64::INFINITY);
         for _ in 0..40 {
             if accuracy == Accuracy::Search && size_of(&r) < SEARCH_RESIDUAL {
                 accuracy = Accuracy::Full;
-                r = eval(&p, s_end, accuracy)?;
+                (r, r_past) = eval(&p, s_end, accuracy)?;
                 last = f64::INFINITY;
             }
             let size = size_of(&r);
@@ -882,14 +884,23 @@ impl Problem<'_> {
             let h = [1e-7 * p.lambda.max(1e-3), 1e-7, 1e-7 * s_end];
             let mut jac = [[0.0; 3]; 3];
             for (k, hk) in h.iter().enumerate() {
-                let mut q = p;
-                let mut sq = s_end;
-                match k {
-                    0 => q.lambda += hk,
-                    1 => q.ln_nu += hk,
-                    _ => sq += hk,
-                }
-                let rq = eval(&q, sq, accuracy)?;
+                let rq = match k {
+                    0 => {
+                        let q = Solution {
+                            lambda: p.lambda + hk,
+                            ..p
+                        };
+                        eval(&q, s_end, accuracy)?.0
+                    }
+                    1 => {
+                        let q = Solution {
+                            ln_nu: p.ln_nu + hk,
+                            ..p
+                        };
+                        eval(&q, s_end, accuracy)?.0
+                    }
+                    _ => r_past,
+                };
                 for i in 0..3 {
                     jac[i][k] = (rq[i] - r[i]) / hk;
                 }
@@ -911,11 +922,11 @@ impl Problem<'_> {
                     lambda,
                     ln_nu: p.ln_nu + d[1],
                 };
-                if let Some(rq) = eval(&q, s_end + d[2], accuracy) {
+                if let Some((rq, rq_past)) = eval(&q, s_end + d[2], accuracy) {
                     if size_of(&rq) < size {
                         p = q;
                         s_end += d[2];
-                        r = rq;
+                        (r, r_past) = (rq, rq_past);
                         accepted = true;
                         break;
                     }

@@ -216,6 +216,47 @@ pub(crate) fn integrate_to(
     accuracy: Accuracy,
     budget: &Budget,
 ) -> Option<Shot> {
+    integrate(form, s_end, keep, accuracy, budget, finish)
+}
+
+/// [`integrate_to`] `s_end` without checkpoints, and the end `past` further on from the same
+/// last step's series (a difference in s for the price of one integration); `None` when
+/// either end is outside the valid range or the guard.
+pub(crate) fn integrate_to_and_past(
+    form: &SpaceForm,
+    s_end: f64,
+    past: f64,
+    accuracy: Accuracy,
+    budget: &Budget,
+) -> Option<(Shot, Shot)> {
+    // s_end itself is checked by `integrate`; NaN fails it there.
+    if s_end + past >= form.s_range().1 {
+        return None;
+    }
+    let keep = Checkpoints::Discard;
+    integrate(
+        form,
+        s_end,
+        keep,
+        accuracy,
+        budget,
+        |form, expansion, sigma, _| {
+            let end = finish(form, expansion, sigma, Vec::new())?;
+            Some((end, finish(form, expansion, sigma + past, Vec::new())?))
+        },
+    )
+}
+
+/// The steps of [`integrate_to`]; `end(form, last step's series, offset into it, checkpoints)`
+/// makes the answer.
+fn integrate<T>(
+    form: &SpaceForm,
+    s_end: f64,
+    keep: Checkpoints,
+    accuracy: Accuracy,
+    budget: &Budget,
+    end: impl FnOnce(&SpaceForm, &Expansion, f64, Vec<State>) -> Option<T>,
+) -> Option<T> {
     let (_, s_max) = form.s_range();
     if !(s_end > 0.0 && s_end < s_max && within_guard(form, s_end)) {
         return None;
@@ -235,7 +276,7 @@ pub(crate) fn integrate_to(
             checkpoints.push(state);
         }
         if state.s + h >= s_end {
-            return finish(form, &expansion, s_end - state.s, checkpoints);
+            return end(form, &expansion, s_end - state.s, checkpoints);
         }
         state = expansion.state_at(h);
     }

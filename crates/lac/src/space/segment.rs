@@ -817,22 +817,42 @@ impl Problem<'_> {
     /// matched by [`Problem::newton3`]. Eliminating s by the cone crossing has a fold where
     /// the curve grazes the cone (|θ2| near π/2, where the first and second crossings meet)
     /// and misses ends beyond the second crossing; the angles are smooth in all three
-    /// unknowns there. Starts: the defined points of ν scans at a few Λ on the cones of the
-    /// first three crossings, best (2-D residual) first.
+    /// unknowns there. Starts: from ν scans at a few Λ on the cones of the first three
+    /// crossings, the lowest point of each valley of the 2-D residual along ν, best first.
     fn attempt_free_end(&self, omega: f64) -> Option<Converged> {
-        let mut starts = Vec::new();
+        const CROSSINGS: usize = 3;
         let base = self.target.theta0.min(1.4).tan().ln() - 0.5 * std::f64::consts::LN_10;
-        let cone = Cone::new(self.target.theta0, 3);
+        let cone = Cone::new(self.target.theta0, CROSSINGS as u32);
+        let mut starts = Vec::new();
         for lambda in FREE_END_LAMBDAS {
-            for k in 0..16 {
+            // Residual and end of each crossing at each ν of the scan.
+            let mut grid = [[None; CROSSINGS]; 16];
+            for (k, row) in grid.iter_mut().enumerate() {
                 let p = Solution {
                     lambda,
-                    ln_nu: base + f64::from(k) * 0.25 * std::f64::consts::LN_10,
+                    ln_nu: base + k as f64 * 0.25 * std::f64::consts::LN_10,
                 };
-                let form = self.form(&p, omega);
-                for shot in shoot_each(&form, &cone, Accuracy::Search, self.budget) {
-                    let r = self.target.residual(&shot);
-                    starts.push((r[0].hypot(r[1]), p, shot.end.s));
+                let shots = shoot_each(&self.form(&p, omega), &cone, Accuracy::Search, self.budget);
+                for (cell, shot) in row.iter_mut().zip(&shots) {
+                    let r = self.target.residual(shot);
+                    *cell = Some((r[0].hypot(r[1]), p, shot.end.s));
+                }
+            }
+            // One start per valley of the residual along ν (for each crossing): its lowest
+            // point, so that the starts tried lie in different basins.
+            let residual = |k: Option<usize>, c: usize| {
+                k.and_then(|k| grid.get(k)?[c])
+                    .map_or(f64::INFINITY, |x| x.0)
+            };
+            for (k, row) in grid.iter().enumerate() {
+                for (c, cell) in row.iter().enumerate() {
+                    if let Some(start) = cell {
+                        let lowest = start.0 <= residual(k.checked_sub(1), c)
+                            && start.0 <= residual(Some(k + 1), c);
+                        if lowest {
+                            starts.push(*start);
+                        }
+                    }
                 }
             }
         }

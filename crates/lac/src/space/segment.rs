@@ -756,13 +756,31 @@ fn predict(path: &[(f64, Converged)], omega: f64) -> (Solution, f64) {
     (guess, if s > 0.0 { s } else { c1.s_end })
 }
 
+/// A point of a ν scan: its grid index, its residual and the start it gives.
+type ScanPoint<T> = (u32, f64, T);
+
+/// The points of a scan that lie lowest in their valley:
+/// no higher than the points at the neighbouring grid indices (a missing one counts as
+/// infinitely high). Starting a search from each, rather than from the lowest few, tries
+/// different basins.
+fn valley_floors<T: Copy>(points: &[ScanPoint<T>]) -> impl Iterator<Item = (f64, T)> + '_ {
+    let at = |k: Option<u32>| {
+        k.and_then(|k| points.iter().find(|p| p.0 == k))
+            .map_or(f64::INFINITY, |p| p.1)
+    };
+    points
+        .iter()
+        .filter(move |p| p.1 <= at(p.0.checked_sub(1)) && p.1 <= at(Some(p.0 + 1)))
+        .map(|p| (p.1, p.2))
+}
+
 /// The state of a ν scan: the next grid index, the last defined point's dihedral mismatch
-/// and every defined point with its residual.
+/// and every defined point with its grid index and residual.
 #[derive(Default)]
 struct Scan {
     next: u32,
     prev: Option<(f64, f64)>,
-    defined: Vec<(f64, Solution, f64)>,
+    defined: Vec<ScanPoint<Solution>>,
 }
 
 /// The two-parameter search of seed 003 §4 for fixed α, β, type, end geometry and crossing
@@ -825,35 +843,22 @@ impl Problem<'_> {
         let cone = Cone::new(self.target.theta0, CROSSINGS as u32);
         let mut starts = Vec::new();
         for lambda in FREE_END_LAMBDAS {
-            // Residual and end of each crossing at each ν of the scan.
-            let mut grid = [[None; CROSSINGS]; 16];
-            for (k, row) in grid.iter_mut().enumerate() {
+            // Each crossing's residuals along the ν scan, with the start they give.
+            let mut by_crossing: [Vec<ScanPoint<(Solution, f64)>>; CROSSINGS] = Default::default();
+            for k in 0..16 {
                 let p = Solution {
                     lambda,
-                    ln_nu: base + k as f64 * 0.25 * std::f64::consts::LN_10,
+                    ln_nu: base + f64::from(k) * 0.25 * std::f64::consts::LN_10,
                 };
                 let shots = shoot_each(&self.form(&p, omega), &cone, Accuracy::Search, self.budget);
-                for (cell, shot) in row.iter_mut().zip(&shots) {
+                for (points, shot) in by_crossing.iter_mut().zip(&shots) {
                     let r = self.target.residual(shot);
-                    *cell = Some((r[0].hypot(r[1]), p, shot.end.s));
+                    points.push((k, r[0].hypot(r[1]), (p, shot.end.s)));
                 }
             }
-            // One start per valley of the residual along ν (for each crossing): its lowest
-            // point, so that the starts tried lie in different basins.
-            let residual = |k: Option<usize>, c: usize| {
-                k.and_then(|k| grid.get(k)?[c])
-                    .map_or(f64::INFINITY, |x| x.0)
-            };
-            for (k, row) in grid.iter().enumerate() {
-                for (c, cell) in row.iter().enumerate() {
-                    if let Some(start) = cell {
-                        let lowest = start.0 <= residual(k.checked_sub(1), c)
-                            && start.0 <= residual(Some(k + 1), c);
-                        if lowest {
-                            starts.push(*start);
-                        }
-                    }
-                }
+            // One start per valley, so that the starts tried lie in different basins.
+            for points in &by_crossing {
+                starts.extend(valley_floors(points).map(|(r, (p, s_end))| (r, p, s_end)));
             }
         }
         starts.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -1044,8 +1049,9 @@ impl Problem<'_> {
                 }
                 if pass == 0 {
                     self.scan(omega, lambda, &mut scan, ScanUntil::End);
-                    scan.defined.sort_by(|a, b| a.0.total_cmp(&b.0));
-                    starts = scan.defined.drain(..).map(|(_, p, _)| p).take(3).collect();
+                    let mut floors: Vec<_> = valley_floors(&scan.defined).collect();
+                    floors.sort_by(|a, b| a.0.total_cmp(&b.0));
+                    starts = floors.into_iter().map(|(_, p)| p).take(3).collect();
                 }
             }
         }
@@ -1069,7 +1075,7 @@ impl Problem<'_> {
                 continue;
             };
             let r = self.target.residual(&shot);
-            scan.defined.push((r[0].hypot(r[1]), p, shot.end.s));
+            scan.defined.push((scan.next - 1, r[0].hypot(r[1]), p));
             let d = shot.theta2.abs() - want;
             let prev = scan.prev.replace((ln_nu, d));
             if let Some((ln_prev, d_prev)) = prev {

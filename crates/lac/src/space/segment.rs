@@ -1011,18 +1011,30 @@ impl Problem<'_> {
         // fold), to Ω or as far as it goes (to 0.1% of Ω: the Ω_max reported is a lower bound),
         // each step started on the line through the branch's last two points.
         let mut path = vec![(0.0, ok)];
-        let (mut reached, mut step) = (0.0, 0.25 * omega);
+        // `failed`: the smallest Ω where a step from the current point failed, not tried again
+        // from there.
+        let (mut reached, mut failed, mut step) = (0.0, f64::INFINITY, 0.25 * omega);
         while step > 1e-3 * omega {
-            let next = (reached + step).min(omega);
+            let mut next = (reached + step).min(omega);
+            if next >= failed {
+                next = 0.5 * (reached + failed);
+                if next - reached <= 1e-3 * omega {
+                    break;
+                }
+            }
             let (guess, s_guess) = predict(&path, next);
             match self.newton3(guess, s_guess, next) {
                 Some(c) if next == omega => return Ok(c),
                 Some(c) => {
                     path.push((next, c));
                     reached = next;
+                    failed = f64::INFINITY;
                     step *= 2.0;
                 }
-                None => step *= 0.5,
+                None => {
+                    failed = next;
+                    step = 0.5 * (next - reached);
+                }
             }
         }
         Err(Error::NotDrawable(NotDrawable::TorsionTooLarge {

@@ -2,9 +2,9 @@
 //! library never panics, never returns NaN or ∞ in an Ok result, never returns an Ok result
 //! that breaks its constraints, and every input that ever failed still passes.
 //!
-//! `LAC_FUZZ_COUNT` changes the count (about 6 minutes for the default on this 2-core
-//! machine, the space and export entry points half of it); `make fuzz` runs a million per
-//! entry point with the optimised `lac-fuzz` binary.
+//! `LAC_FUZZ_COUNT` changes the count (about 5 minutes for the default on this 2-core
+//! machine); `make fuzz` runs a million per entry point with the optimised `lac-fuzz`
+//! binary.
 
 use lac_fuzz::{campaign, replay, EntryPoint, Outcome};
 

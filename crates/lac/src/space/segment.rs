@@ -23,6 +23,12 @@ const START_LAMBDAS: [f64; 2] = [0.0, 1.0];
 /// The Λ of the scans that seed the free-end fallback ([`Problem::attempt_free_end`]).
 const FREE_END_LAMBDAS: [f64; 4] = [0.0, 0.15, 0.4, 1.0];
 
+/// How many points a ν scan has: four decades of [`SCAN_STEP`].
+const SCAN_POINTS: u32 = 16;
+
+/// The spacing of a ν scan in ln ν: a quarter decade.
+const SCAN_STEP: f64 = 0.25 * std::f64::consts::LN_10;
+
 /// How many of the fallback's starts (best first) are tried.
 const FREE_END_STARTS: usize = 12;
 
@@ -816,6 +822,13 @@ impl Problem<'_> {
         Cone::new(self.target.theta0, self.crossing)
     }
 
+    /// ln ν at index `k` of the ν scans ([`SCAN_POINTS`] of them): quarter decades upward
+    /// from half a decade below tan θ0 ([`Problem::scan`] says why).
+    fn scan_ln_nu(&self, k: u32) -> f64 {
+        let base = self.target.theta0.min(1.4).tan().ln() - 0.5 * std::f64::consts::LN_10;
+        base + f64::from(k) * SCAN_STEP
+    }
+
     fn form(&self, p: &Solution, omega: f64) -> SpaceForm {
         SpaceForm::new_unchecked(SpaceFormParams {
             alpha: self.shape.alpha,
@@ -847,16 +860,15 @@ impl Problem<'_> {
     /// crossings, the lowest point of each valley of the 2-D residual along ν, best first.
     fn attempt_free_end(&self, omega: f64) -> Option<Converged> {
         const CROSSINGS: usize = 3;
-        let base = self.target.theta0.min(1.4).tan().ln() - 0.5 * std::f64::consts::LN_10;
         let cone = Cone::new(self.target.theta0, CROSSINGS as u32);
         let mut starts = Vec::new();
         for lambda in FREE_END_LAMBDAS {
             // Each crossing's residuals along the ν scan, with the start they give.
             let mut by_crossing: [Vec<ScanPoint<(Solution, f64)>>; CROSSINGS] = Default::default();
-            for k in 0..16 {
+            for k in 0..SCAN_POINTS {
                 let p = Solution {
                     lambda,
-                    ln_nu: base + f64::from(k) * 0.25 * std::f64::consts::LN_10,
+                    ln_nu: self.scan_ln_nu(k),
                 };
                 let shots = shoot_each(&self.form(&p, omega), &cone, Accuracy::Search, self.budget);
                 for (points, shot) in by_crossing.iter_mut().zip(&shots) {
@@ -1083,11 +1095,10 @@ impl Problem<'_> {
     /// angle falls toward 0 as ν grows: scan upward from there in quarter decades, `until`
     /// the first sign change of the dihedral mismatch (returned, interpolated) or the end.
     fn scan(&self, omega: f64, lambda: f64, scan: &mut Scan, until: ScanUntil) -> Option<Solution> {
-        let base = self.target.theta0.min(1.4).tan().ln() - 0.5 * std::f64::consts::LN_10;
         let want = self.target.theta2.abs();
-        let step = 0.25 * std::f64::consts::LN_10;
-        while scan.next < 16 {
-            let ln_nu = base + f64::from(scan.next) * step;
+        while scan.next < SCAN_POINTS {
+            let k = scan.next;
+            let ln_nu = self.scan_ln_nu(k);
             scan.next += 1;
             let p = Solution { lambda, ln_nu };
             let Some(shot) = self.shot(&p, omega, Accuracy::Search) else {
@@ -1095,14 +1106,14 @@ impl Problem<'_> {
                 continue;
             };
             let r = self.target.residual(&shot);
-            scan.defined.push((scan.next - 1, r[0].hypot(r[1]), p));
+            scan.defined.push((k, r[0].hypot(r[1]), p));
             let d = shot.theta2.abs() - want;
             let prev = scan.prev.replace((ln_nu, d));
             if let Some((ln_prev, d_prev)) = prev {
                 if until == ScanUntil::SignChange && d_prev > 0.0 && d <= 0.0 {
                     return Some(Solution {
                         lambda,
-                        ln_nu: ln_prev + step * d_prev / (d_prev - d),
+                        ln_nu: ln_prev + SCAN_STEP * d_prev / (d_prev - d),
                     });
                 }
             }

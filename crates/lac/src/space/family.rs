@@ -254,6 +254,12 @@ impl SpaceForm {
         }
     }
 
+    /// `∂a/∂Ω` of the torsion law's rate `a = ±Ω ν^(−β)`.
+    pub(crate) fn tau_rate_per_omega(&self) -> f64 {
+        let p = &self.params;
+        p.torsion.sign() * (-p.beta * p.nu.ln()).exp()
+    }
+
     /// The parameters α, β, Λ, Ω, ν and type.
     pub fn params(&self) -> SpaceFormParams {
         self.params

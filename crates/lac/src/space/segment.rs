@@ -5,8 +5,8 @@ use kurbo::Point;
 use super::family::{SpaceForm, SpaceFormParams, TorsionType};
 use super::mat3::Mat3;
 use super::shoot::{
-    end_angles, integrate_to, integrate_to_and_past, shoot, shoot_each, Budget, Checkpoints, Cone,
-    Shot, SOLVE_STEPS,
+    end_angles, integrate_to, integrate_tracked, shoot, shoot_each, Budget, Checkpoints, Cone,
+    Shot, Track, SOLVE_STEPS,
 };
 use super::taylor::{Accuracy, Expansion, State};
 use super::Frame;
@@ -186,7 +186,17 @@ struct Target {
 impl Target {
     /// The end-tangent mismatch in polar coordinates about the chord, smooth where θ1 → 0.
     fn residual(&self, shot: &Shot) -> [f64; 2] {
-        let (a, b) = (shot.theta1, shot.theta2.abs());
+        self.residual_of_angles(shot.theta1, shot.theta2)
+    }
+
+    /// [`Target::residual`] of an end at `x` with tangent `t`.
+    fn residual_at(&self, x: Vec3, t: Vec3) -> [f64; 2] {
+        let (_, theta1, theta2) = end_angles(x, Vec3::X, t);
+        self.residual_of_angles(theta1, theta2)
+    }
+
+    fn residual_of_angles(&self, theta1: f64, theta2: f64) -> [f64; 2] {
+        let (a, b) = (theta1, theta2.abs());
         let (c, d) = (self.theta1, self.theta2.abs());
         [a * b.cos() - c * d.cos(), a * b.sin() - c * d.sin()]
     }
@@ -215,6 +225,8 @@ struct Converged {
     turning: f64,
     /// The standard-form end.
     s_end: f64,
+    /// Where the solution goes as Ω grows: d(Λ, ln ν, s)/dΩ, when known.
+    tangent: Option<[f64; 3]>,
 }
 
 impl SpaceSegment {
@@ -674,7 +686,7 @@ fn solve_space(
     let omega = shape.omega;
     let warm = warm
         .filter(|w| w.reversed == reversed)
-        .and_then(|w| problem.newton3(w.solution, w.s_end, omega));
+        .and_then(|w| problem.newton3(w.solution, w.s_end, omega, Accuracy::Full));
     let found = match warm {
         Some(found) => Ok(found),
         None => problem.solve_with_omega(omega),
@@ -748,24 +760,36 @@ fn solve3(m: [[f64; 3]; 3], b: [f64; 3]) -> Option<[f64; 3]> {
     Some(x)
 }
 
-/// The branch's point at `omega` guessed from its last two points (on their line), or the
-/// last point while there is only one.
+/// The branch's point at `omega`, guessed along the tangent at its last point, else on the
+/// line through its last two points, else the last point.
 fn predict(path: &[(f64, Converged)], omega: f64) -> (Solution, f64) {
     let (om1, c1) = path.last().expect("a branch starts with a point");
-    let Some((om0, c0)) = path.len().checked_sub(2).map(|i| &path[i]) else {
+    let step = omega - om1;
+    let (lambda, ln_nu, s) = if let Some([dl, dn, ds]) = c1.tangent {
+        let p = c1.solution;
+        (
+            p.lambda + step * dl,
+            p.ln_nu + step * dn,
+            c1.s_end + step * ds,
+        )
+    } else if let Some((om0, c0)) = path.len().checked_sub(2).map(|i| &path[i]) {
+        let t = step / (om1 - om0);
+        let lerp = |a: f64, b: f64| b + t * (b - a);
+        (
+            lerp(c0.solution.lambda, c1.solution.lambda),
+            lerp(c0.solution.ln_nu, c1.solution.ln_nu),
+            lerp(c0.s_end, c1.s_end),
+        )
+    } else {
         return (c1.solution, c1.s_end);
     };
-    let t = (omega - om1) / (om1 - om0);
-    let lerp = |a: f64, b: f64| b + t * (b - a);
-    let lambda = lerp(c0.solution.lambda, c1.solution.lambda);
-    let s = lerp(c0.s_end, c1.s_end);
     let guess = Solution {
         lambda: if lambda >= 0.0 {
             lambda
         } else {
             0.1 * c1.solution.lambda
         },
-        ln_nu: lerp(c0.solution.ln_nu, c1.solution.ln_nu),
+        ln_nu,
     };
     (guess, if s > 0.0 { s } else { c1.s_end })
 }
@@ -843,12 +867,13 @@ impl Problem<'_> {
     /// The mismatch of a piece ending anywhere: its chord angle at the start less θ0, and
     /// the end-tangent mismatch of [`Target::residual`].
     fn residual3(&self, shot: &Shot) -> [f64; 3] {
-        let r = self.target.residual(shot);
-        [
-            Vec3::X.angle_to(shot.end.x) - self.target.theta0,
-            r[0],
-            r[1],
-        ]
+        self.residual3_at(shot.end.x, shot.end.t)
+    }
+
+    /// [`Problem::residual3`] of an end at `x` with tangent `t`.
+    fn residual3_at(&self, x: Vec3, t: Vec3) -> [f64; 3] {
+        let r = self.target.residual_at(x, t);
+        [Vec3::X.angle_to(x) - self.target.theta0, r[0], r[1]]
     }
 
     /// The fallback where the cone search found nothing: the end s becomes a third unknown
@@ -870,7 +895,7 @@ impl Problem<'_> {
                     lambda,
                     ln_nu: self.scan_ln_nu(k),
                 };
-                let shots = shoot_each(&self.form(&p, omega), &cone, Accuracy::Search, self.budget);
+                let shots = shoot_each(&self.form(&p, omega), &cone, Accuracy::Scan, self.budget);
                 for (points, shot) in by_crossing.iter_mut().zip(&shots) {
                     let r = self.target.residual(shot);
                     points.push((k, r[0].hypot(r[1]), (p, shot.end.s)));
@@ -885,71 +910,47 @@ impl Problem<'_> {
         starts
             .into_iter()
             .take(FREE_END_STARTS)
-            .find_map(|(_, p, s_end)| self.newton3(p, s_end, omega))
+            .find_map(|(_, p, s_end)| self.newton3(p, s_end, omega, Accuracy::Full))
     }
 
     /// Damped Newton on the three residuals of [`Problem::residual3`] in (Λ, ln ν, s), with
     /// a forward-difference Jacobian (its s column from the same integration, further along
     /// the last step's series) and the safeguards and accuracies of [`Problem::newton`].
-    fn newton3(&self, mut p: Solution, mut s_end: f64, omega: f64) -> Option<Converged> {
+    fn newton3(
+        &self,
+        mut p: Solution,
+        mut s_end: f64,
+        omega: f64,
+        finish: Accuracy,
+    ) -> Option<Converged> {
         let mut accuracy = Accuracy::Search;
-        // The residuals at s and at s + h_s, h_s = 1e-7 s.
         let eval = |p: &Solution, s: f64, accuracy: Accuracy| {
-            let form = self.form(p, omega);
-            integrate_to_and_past(&form, s, 1e-7 * s, accuracy, self.budget)
-                .map(|(at, past)| (self.residual3(&at), self.residual3(&past)))
+            integrate_tracked(&self.form(p, omega), s, accuracy, self.budget)
         };
         let size_of = |r: &[f64; 3]| r.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        let (mut r, mut r_past) = eval(&p, s_end, accuracy)?;
+        let mut shot = eval(&p, s_end, accuracy)?;
+        let mut r = self.residual3(&shot);
         let (mut slow, mut last) = (0, f64::INFINITY);
         for _ in 0..40 {
             if accuracy == Accuracy::Search && size_of(&r) < SEARCH_RESIDUAL {
+                if finish == Accuracy::Search {
+                    return self.converged(p, s_end, omega, &shot);
+                }
                 accuracy = Accuracy::Full;
-                (r, r_past) = eval(&p, s_end, accuracy)?;
+                shot = eval(&p, s_end, accuracy)?;
+                r = self.residual3(&shot);
                 last = f64::INFINITY;
             }
             let size = size_of(&r);
             if size < RESIDUAL_TOLERANCE {
-                let form = self.form(&p, omega);
-                let turning = form
-                    .kappa_law()
-                    .integral(s_end)
-                    .max(form.tau_law().integral(s_end));
-                return (p.lambda >= 0.0).then_some(Converged {
-                    solution: p,
-                    turning,
-                    s_end,
-                });
+                return self.converged(p, s_end, omega, &shot);
             }
             slow = if size > 0.7 * last { slow + 1 } else { 0 };
             if slow >= 4 {
                 return None;
             }
             last = size;
-            let h = [1e-7 * p.lambda.max(1e-3), 1e-7, 1e-7 * s_end];
-            let mut jac = [[0.0; 3]; 3];
-            for (k, hk) in h.iter().enumerate() {
-                let rq = match k {
-                    0 => {
-                        let q = Solution {
-                            lambda: p.lambda + hk,
-                            ..p
-                        };
-                        eval(&q, s_end, accuracy)?.0
-                    }
-                    1 => {
-                        let q = Solution {
-                            ln_nu: p.ln_nu + hk,
-                            ..p
-                        };
-                        eval(&q, s_end, accuracy)?.0
-                    }
-                    _ => r_past,
-                };
-                for i in 0..3 {
-                    jac[i][k] = (rq[i] - r[i]) / hk;
-                }
-            }
+            let (jac, _) = self.free_end_jacobian(&shot, &self.form(&p, omega))?;
             let mut d = solve3(jac, [-r[0], -r[1], -r[2]])?;
             // Keep steps local: ν by at most a factor e, Λ by its size plus 1, s by half.
             let limit = (d[1].abs())
@@ -967,11 +968,12 @@ impl Problem<'_> {
                     lambda,
                     ln_nu: p.ln_nu + d[1],
                 };
-                if let Some((rq, rq_past)) = eval(&q, s_end + d[2], accuracy) {
+                if let Some(sq) = eval(&q, s_end + d[2], accuracy) {
+                    let rq = self.residual3(&sq);
                     if size_of(&rq) < size {
                         p = q;
                         s_end += d[2];
-                        (r, r_past) = (rq, rq_past);
+                        (r, shot) = (rq, sq);
                         accepted = true;
                         break;
                     }
@@ -985,13 +987,108 @@ impl Problem<'_> {
         None
     }
 
-    fn residual(&self, p: &Solution, omega: f64, accuracy: Accuracy) -> Option<[f64; 2]> {
-        self.shot(p, omega, accuracy)
-            .map(|shot| self.target.residual(&shot))
+    /// The free-end solution `p`, `s_end` (tracked `shot` at its end), with its turning and
+    /// its branch's direction in Ω; `None` when Λ < 0.
+    fn converged(&self, p: Solution, s_end: f64, omega: f64, shot: &Shot) -> Option<Converged> {
+        let form = self.form(&p, omega);
+        let turning = form
+            .kappa_law()
+            .integral(s_end)
+            .max(form.tau_law().integral(s_end));
+        (p.lambda >= 0.0).then(|| Converged {
+            solution: p,
+            turning,
+            s_end,
+            tangent: self.tangent(shot, &form),
+        })
+    }
+
+    /// The Jacobian of [`Problem::residual3`] in (Λ, ln ν, s) at a tracked shot: the end
+    /// moves by [`Shot::derivatives`] and, with s, along the curve (x′ = t, t′ = κ n); each
+    /// column is a central difference in the end, no integration.
+    fn free_end_jacobian(
+        &self,
+        shot: &Shot,
+        form: &SpaceForm,
+    ) -> Option<([[f64; 3]; 3], [f64; 3])> {
+        let [d_lambda, d_nu, d_omega] = shot.derivatives?;
+        let State { s, x, t, n, .. } = shot.end;
+        let d_s = (t, n * form.kappa_law().value(s));
+        let mut jac = [[0.0; 4]; 3];
+        for (k, (dx, dt)) in [d_lambda, d_nu, d_s, d_omega].into_iter().enumerate() {
+            let h = 1e-6 / (dx.length() / x.length() + dt.length()).max(1e-300);
+            let plus = self.residual3_at(x + dx * h, t + dt * h);
+            let minus = self.residual3_at(x - dx * h, t - dt * h);
+            for i in 0..3 {
+                jac[i][k] = (plus[i] - minus[i]) / (2.0 * h);
+            }
+        }
+        jac.iter().flatten().all(|c| c.is_finite()).then(|| {
+            (
+                jac.map(|row| [row[0], row[1], row[2]]),
+                jac.map(|row| row[3]),
+            )
+        })
+    }
+
+    /// The branch's direction at a solution (tracked `shot` at its end): d(Λ, ln ν, s)/dΩ
+    /// from the implicit function theorem on [`Problem::residual3`].
+    fn tangent(&self, shot: &Shot, form: &SpaceForm) -> Option<[f64; 3]> {
+        let (jac, per_omega) = self.free_end_jacobian(shot, form)?;
+        solve3(jac, per_omega.map(|x| -x))
     }
 
     fn shot(&self, p: &Solution, omega: f64, accuracy: Accuracy) -> Option<Shot> {
-        shoot(&self.form(p, omega), &self.cone(), accuracy, self.budget)
+        let track = Track::EndOnly;
+        shoot(
+            &self.form(p, omega),
+            &self.cone(),
+            accuracy,
+            track,
+            self.budget,
+        )
+    }
+
+    /// A shot with its [`Shot::derivatives`].
+    fn tracked_shot(&self, p: &Solution, omega: f64, accuracy: Accuracy) -> Option<Shot> {
+        let track = Track::Derivatives;
+        shoot(
+            &self.form(p, omega),
+            &self.cone(),
+            accuracy,
+            track,
+            self.budget,
+        )
+    }
+
+    /// The columns (Λ, ln ν) of the Jacobian of [`Target::residual`] at a tracked shot: the
+    /// end moves with the unknowns at fixed s ([`Shot::derivatives`]) and along the curve as
+    /// the crossing s moves (by −∇g·δx / ∇g·t, g the cone function); the residual's change is
+    /// a central difference in that end, no integration.
+    fn cone_jacobian(&self, shot: &Shot, form: &SpaceForm) -> Option<[[f64; 2]; 2]> {
+        let d = shot.derivatives?;
+        let State { s, x, t, n, .. } = shot.end;
+        let grad = x.normalize() * self.target.theta0.cos() - Vec3::X;
+        let along = grad.dot(t);
+        let kappa = form.kappa_law().value(s);
+        let columns = [d[0], d[1]].map(|(dx, dt)| {
+            let ds = -grad.dot(dx) / along;
+            self.end_slope(x, t, dx + t * ds, dt + n * (kappa * ds))
+        });
+        columns
+            .iter()
+            .flatten()
+            .all(|c| c.is_finite())
+            .then_some(columns)
+    }
+
+    /// The change of [`Target::residual`] per unit move of the end along (`dx`, `dt`), by a
+    /// central difference.
+    fn end_slope(&self, x: Vec3, t: Vec3, dx: Vec3, dt: Vec3) -> [f64; 2] {
+        let h = 1e-6 / (dx.length() / x.length() + dt.length()).max(1e-300);
+        let plus = self.target.residual_at(x + dx * h, t + dt * h);
+        let minus = self.target.residual_at(x - dx * h, t - dt * h);
+        [0, 1].map(|i| (plus[i] - minus[i]) / (2.0 * h))
     }
 
     /// Solve at `omega`, directly from a near-helix start, else by continuation in Ω from
@@ -1021,7 +1118,18 @@ impl Problem<'_> {
             .ok_or_else(none)?;
         // Follow that segment's branch in Ω with the end s free (smooth through the cone's
         // fold), to Ω or as far as it goes (to 0.1% of Ω: the Ω_max reported is a lower bound),
-        // each step started on the line through the branch's last two points.
+        // each step started along the branch's tangent at its last point and converged at the
+        // search accuracy (only Ω itself, and the Ω_max reported, are converged in full).
+        let mut ok = ok;
+        if ok.tangent.is_none() {
+            ok.tangent = integrate_tracked(
+                &self.form(&ok.solution, 0.0),
+                ok.s_end,
+                Accuracy::Search,
+                self.budget,
+            )
+            .and_then(|shot| self.tangent(&shot, &self.form(&ok.solution, 0.0)));
+        }
         let mut path = vec![(0.0, ok)];
         // `failed`: the smallest Ω where a step from the current point failed, not tried again
         // from there.
@@ -1035,8 +1143,14 @@ impl Problem<'_> {
                 }
             }
             let (guess, s_guess) = predict(&path, next);
-            match self.newton3(guess, s_guess, next) {
-                Some(c) if next == omega => return Ok(c),
+            match self.newton3(guess, s_guess, next, Accuracy::Search) {
+                Some(c) if next == omega => {
+                    if let Some(c) = self.newton3(c.solution, c.s_end, omega, Accuracy::Full) {
+                        return Ok(c);
+                    }
+                    failed = next;
+                    step = 0.5 * (next - reached);
+                }
                 Some(c) => {
                     path.push((next, c));
                     reached = next;
@@ -1049,9 +1163,21 @@ impl Problem<'_> {
                 }
             }
         }
+        // The Ω_max reported has a segment to rounding: the branch's last point converged in
+        // full, else the one before it.
+        let omega_max = path
+            .iter()
+            .rev()
+            .find(|(o, c)| {
+                *o == 0.0
+                    || self
+                        .newton3(c.solution, c.s_end, *o, Accuracy::Full)
+                        .is_some()
+            })
+            .map_or(0.0, |(o, _)| *o);
         Err(Error::NotDrawable(NotDrawable::TorsionTooLarge {
             omega,
-            omega_max: reached,
+            omega_max,
         }))
     }
 
@@ -1101,7 +1227,7 @@ impl Problem<'_> {
             let ln_nu = self.scan_ln_nu(k);
             scan.next += 1;
             let p = Solution { lambda, ln_nu };
-            let Some(shot) = self.shot(&p, omega, Accuracy::Search) else {
+            let Some(shot) = self.shot(&p, omega, Accuracy::Scan) else {
                 scan.prev = None;
                 continue;
             };
@@ -1128,14 +1254,14 @@ impl Problem<'_> {
     /// [`SEARCH_RESIDUAL`], at [`Accuracy::Full`] after.
     fn newton(&self, mut p: Solution, omega: f64) -> Option<Converged> {
         let mut accuracy = Accuracy::Search;
-        let mut shot = self.shot(&p, omega, accuracy)?;
+        let mut shot = self.tracked_shot(&p, omega, accuracy)?;
         let mut r = self.target.residual(&shot);
         let mut slow = 0;
         let mut last = f64::INFINITY;
         for _ in 0..60 {
             if accuracy == Accuracy::Search && r[0].abs().max(r[1].abs()) < SEARCH_RESIDUAL {
                 accuracy = Accuracy::Full;
-                shot = self.shot(&p, omega, accuracy)?;
+                shot = self.tracked_shot(&p, omega, accuracy)?;
                 r = self.target.residual(&shot);
                 last = f64::INFINITY;
             }
@@ -1150,6 +1276,7 @@ impl Problem<'_> {
                     solution: p,
                     turning,
                     s_end: shot.end.s,
+                    tangent: None,
                 });
             }
             // Newton converges fast near a root; steady crawling means a dead end (the
@@ -1159,26 +1286,7 @@ impl Problem<'_> {
                 return None;
             }
             last = size;
-            let hl = 1e-7 * p.lambda.max(1e-3);
-            let hn = 1e-7;
-            let column = |q: Solution, h: f64| -> Option<[f64; 2]> {
-                let rq = self.residual(&q, omega, accuracy)?;
-                Some([(rq[0] - r[0]) / h, (rq[1] - r[1]) / h])
-            };
-            let jl = column(
-                Solution {
-                    lambda: p.lambda + hl,
-                    ln_nu: p.ln_nu,
-                },
-                hl,
-            )?;
-            let jn = column(
-                Solution {
-                    lambda: p.lambda,
-                    ln_nu: p.ln_nu + hn,
-                },
-                hn,
-            )?;
+            let [jl, jn] = self.cone_jacobian(&shot, &self.form(&p, omega))?;
             let det = jl[0] * jn[1] - jl[1] * jn[0];
             if det == 0.0 || !det.is_finite() {
                 return None;
@@ -1199,7 +1307,7 @@ impl Problem<'_> {
                     lambda,
                     ln_nu: p.ln_nu + dn,
                 };
-                if let Some(sq) = self.shot(&q, omega, accuracy) {
+                if let Some(sq) = self.tracked_shot(&q, omega, accuracy) {
                     let rq = self.target.residual(&sq);
                     if rq[0].abs().max(rq[1].abs()) < size {
                         p = q;

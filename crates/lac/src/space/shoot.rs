@@ -2,7 +2,7 @@
 //! the cone of half-angle θ0 about its start tangent.
 
 use super::family::SpaceForm;
-use super::taylor::{Accuracy, Expansion, State};
+use super::taylor::{Accuracy, EndDerivatives, Expansion, Sensitivity, State};
 use crate::numeric::{find_root, RootFailure};
 use crate::Vec3;
 
@@ -87,6 +87,18 @@ pub(crate) struct Shot {
     pub(crate) theta2: f64,
     /// The states at the starts of the steps, for evaluation after the solve.
     pub(crate) checkpoints: Vec<State>,
+    /// How the end moves with Λ and ln ν (at fixed s), when the shot tracked it.
+    pub(crate) derivatives: Option<EndDerivatives>,
+}
+
+/// Whether a shot also finds how its end moves with the unknowns ([`Sensitivity`]): about a
+/// third more work per step, two integrations fewer per Jacobian.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Track {
+    /// Find [`Shot::derivatives`].
+    Derivatives,
+    /// Only the end.
+    EndOnly,
 }
 
 /// The angles (θ0, θ1, θ2) of a chord and two tangents: θ0 between `t0` and the chord,
@@ -109,10 +121,11 @@ pub(crate) fn shoot(
     form: &SpaceForm,
     cone: &Cone,
     accuracy: Accuracy,
+    track: Track,
     budget: &Budget,
 ) -> Option<Shot> {
     let mut found = None;
-    crossings(form, cone, accuracy, budget, |shot, k| {
+    crossings(form, cone, accuracy, track, budget, |shot, k| {
         if k == cone.crossing {
             found = Some(shot);
             false
@@ -132,7 +145,7 @@ pub(crate) fn shoot_each(
     budget: &Budget,
 ) -> Vec<Shot> {
     let mut shots = Vec::new();
-    crossings(form, cone, accuracy, budget, |shot, k| {
+    crossings(form, cone, accuracy, Track::EndOnly, budget, |shot, k| {
         shots.push(shot);
         k < cone.crossing
     });
@@ -146,11 +159,13 @@ fn crossings(
     form: &SpaceForm,
     cone: &Cone,
     accuracy: Accuracy,
+    track: Track,
     budget: &Budget,
     mut each: impl FnMut(Shot, u32) -> bool,
 ) {
     let (_, s_max) = form.s_range();
     let mut state = State::start();
+    let mut sensitivity = Sensitivity::default();
     // Inside the cone at the start (the curve leaves the apex along the axis).
     let mut crossings = 0;
     for _ in 0..MAX_STEPS {
@@ -182,7 +197,13 @@ fn crossings(
                 crossings += 1;
                 let at = refine(cone, &expansion, (prev, g_prev), (sigma, g));
                 let go_on = match finish(form, &expansion, at, Vec::new()) {
-                    Some(shot) => each(shot, crossings) && crossings < cone.crossing,
+                    Some(mut shot) => {
+                        if track == Track::Derivatives {
+                            let d = sensitivity.along(form, &expansion, at).at(&shot.end);
+                            shot.derivatives = Some(d);
+                        }
+                        each(shot, crossings) && crossings < cone.crossing
+                    }
                     None => false,
                 };
                 if !go_on {
@@ -194,6 +215,9 @@ fn crossings(
         }
         if last {
             return;
+        }
+        if track == Track::Derivatives {
+            sensitivity = sensitivity.along(form, &expansion, h);
         }
         state = expansion.state_at(h);
         if !within_guard(form, state.s) {
@@ -216,52 +240,57 @@ pub(crate) fn integrate_to(
     accuracy: Accuracy,
     budget: &Budget,
 ) -> Option<Shot> {
-    integrate(form, s_end, keep, accuracy, budget, finish)
-}
-
-/// [`integrate_to`] `s_end` without checkpoints, and the end `past` further on from the same
-/// last step's series (a difference in s for the price of one integration); `None` when
-/// either end is outside the valid range or the guard.
-pub(crate) fn integrate_to_and_past(
-    form: &SpaceForm,
-    s_end: f64,
-    past: f64,
-    accuracy: Accuracy,
-    budget: &Budget,
-) -> Option<(Shot, Shot)> {
-    // s_end itself is checked by `integrate`; NaN fails it there.
-    if s_end + past >= form.s_range().1 {
-        return None;
-    }
-    let keep = Checkpoints::Discard;
     integrate(
         form,
         s_end,
         keep,
         accuracy,
+        Track::EndOnly,
         budget,
-        |form, expansion, sigma, _| {
-            let end = finish(form, expansion, sigma, Vec::new())?;
-            Some((end, finish(form, expansion, sigma + past, Vec::new())?))
+        |f, e, sigma, c, _| finish(f, e, sigma, c),
+    )
+}
+
+/// [`integrate_to`] `s_end` without checkpoints, with the end's [`Shot::derivatives`].
+pub(crate) fn integrate_tracked(
+    form: &SpaceForm,
+    s_end: f64,
+    accuracy: Accuracy,
+    budget: &Budget,
+) -> Option<Shot> {
+    let (keep, track) = (Checkpoints::Discard, Track::Derivatives);
+    integrate(
+        form,
+        s_end,
+        keep,
+        accuracy,
+        track,
+        budget,
+        |form, expansion, sigma, _, sensitivity| {
+            let mut shot = finish(form, expansion, sigma, Vec::new())?;
+            shot.derivatives = Some(sensitivity.along(form, expansion, sigma).at(&shot.end));
+            Some(shot)
         },
     )
 }
 
-/// The steps of [`integrate_to`]; `end(form, last step's series, offset into it, checkpoints)`
-/// makes the answer.
+/// The steps of [`integrate_to`]; `end(form, last step's series, offset into it, checkpoints,
+/// sensitivity at the last step's start)` makes the answer.
 fn integrate<T>(
     form: &SpaceForm,
     s_end: f64,
     keep: Checkpoints,
     accuracy: Accuracy,
+    track: Track,
     budget: &Budget,
-    end: impl FnOnce(&SpaceForm, &Expansion, f64, Vec<State>) -> Option<T>,
+    end: impl FnOnce(&SpaceForm, &Expansion, f64, Vec<State>, &Sensitivity) -> Option<T>,
 ) -> Option<T> {
     let (_, s_max) = form.s_range();
     if !(s_end > 0.0 && s_end < s_max && within_guard(form, s_end)) {
         return None;
     }
     let mut state = State::start();
+    let mut sensitivity = Sensitivity::default();
     let mut checkpoints = Vec::new();
     for _ in 0..MAX_STEPS {
         if !budget.take() {
@@ -276,7 +305,10 @@ fn integrate<T>(
             checkpoints.push(state);
         }
         if state.s + h >= s_end {
-            return end(form, &expansion, s_end - state.s, checkpoints);
+            return end(form, &expansion, s_end - state.s, checkpoints, &sensitivity);
+        }
+        if track == Track::Derivatives {
+            sensitivity = sensitivity.along(form, &expansion, h);
         }
         state = expansion.state_at(h);
     }
@@ -321,6 +353,7 @@ fn finish(form: &SpaceForm, e: &Expansion, sigma: f64, checkpoints: Vec<State>) 
         theta1,
         theta2,
         checkpoints,
+        derivatives: None,
     })
 }
 
@@ -341,4 +374,81 @@ fn never_leaves(form: &SpaceForm, cone: &Cone, state: &State) -> bool {
     let remaining = form.kappa_law().integral_upper() - form.kappa_law().integral(state.s);
     let tangent_angle = state.t.x.clamp(-1.0, 1.0).acos();
     remaining.is_finite() && tangent_angle + remaining < cone.half_angle
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::space::family::{SpaceFormParams, TorsionType};
+
+    fn form(
+        alpha: f64,
+        beta: f64,
+        lambda: f64,
+        ln_nu: f64,
+        omega: f64,
+        torsion: TorsionType,
+    ) -> SpaceForm {
+        SpaceForm::new_unchecked(SpaceFormParams {
+            alpha,
+            beta,
+            lambda,
+            omega,
+            nu: ln_nu.exp(),
+            torsion,
+        })
+    }
+
+    /// The tracked derivatives of the end (Λ, ln ν, Ω at fixed s) against central differences
+    /// of full-accuracy integrations, over slopes, types and lengths.
+    #[test]
+    fn tracked_derivatives_match_differences() {
+        let budget = Budget::new(SOLVE_STEPS);
+        let mut worst: f64 = 0.0;
+        for (alpha, beta) in [
+            (-1.0, -1.0),
+            (0.0, 0.0),
+            (1.0, 0.5),
+            (2.0, -0.5),
+            (-0.5, 2.0),
+        ] {
+            for torsion in [TorsionType::One, TorsionType::Two] {
+                for (lambda, ln_nu, omega, s) in [
+                    (0.3, 0.2, 0.1, 2.0),
+                    (1.5, -0.4, 0.3, 0.8),
+                    (0.05, 1.1, 0.0, 5.0),
+                ] {
+                    let shot = |dl: f64, dn: f64, dom: f64| {
+                        let f = form(alpha, beta, lambda + dl, ln_nu + dn, omega + dom, torsion);
+                        integrate_to(&f, s, Checkpoints::Discard, Accuracy::Full, &budget)
+                    };
+                    let f = form(alpha, beta, lambda, ln_nu, omega, torsion);
+                    let Some(tracked) = integrate_tracked(&f, s, Accuracy::Full, &budget) else {
+                        continue;
+                    };
+                    let d = tracked.derivatives.expect("tracked");
+                    let h = 1e-5;
+                    for (k, (dl, dn, dom)) in [(h, 0.0, 0.0), (0.0, h, 0.0), (0.0, 0.0, h)]
+                        .into_iter()
+                        .enumerate()
+                    {
+                        let (Some(plus), Some(minus)) = (shot(dl, dn, dom), shot(-dl, -dn, -dom))
+                        else {
+                            continue;
+                        };
+                        let dx = (plus.end.x - minus.end.x) / (2.0 * h);
+                        let dt = (plus.end.t - minus.end.t) / (2.0 * h);
+                        let scale = 1.0 + dx.length() + dt.length();
+                        let err = (d[k].0 - dx).length().max((d[k].1 - dt).length()) / scale;
+                        assert!(
+                            err < 1e-8,
+                            "alpha {alpha} beta {beta} {torsion:?} lambda {lambda} ln nu {ln_nu} omega {omega} s {s} unknown {k}: {err:e}"
+                        );
+                        worst = worst.max(err);
+                    }
+                }
+            }
+        }
+        assert!(worst > 0.0, "no case was checked");
+    }
 }

@@ -987,6 +987,57 @@ impl Problem<'_> {
         None
     }
 
+    /// Where the branch through `path` is expected to end: the nearest Ω at which a
+    /// quantity that must stay positive reaches 0 (Λ; the room left before the end of the
+    /// valid range; the turning left before the 2π guard), each a Newton step along the
+    /// tangent at the last point, or a fold (where the tangent grows like (Ω_fold − Ω)^(−1/2),
+    /// so 1/|tangent|² falls linearly to 0 across the last two points). Infinite when nothing
+    /// ends it.
+    fn predicted_end(&self, path: &[(f64, Converged)]) -> f64 {
+        let (omega, c) = path.last().expect("a branch starts with a point");
+        let Some(tangent) = c.tangent else {
+            return f64::INFINITY;
+        };
+        let margins = |d: f64| {
+            let p = Solution {
+                lambda: c.solution.lambda + d * tangent[0],
+                ln_nu: c.solution.ln_nu + d * tangent[1],
+            };
+            let s = c.s_end + d * tangent[2];
+            let form = self.form(&p, omega + d);
+            let turning = form.kappa_law().integral(s).max(form.tau_law().integral(s));
+            [
+                p.lambda,
+                form.s_range().1 - s,
+                std::f64::consts::TAU - turning,
+            ]
+        };
+        let h = 1e-6 * omega.max(1e-3);
+        let (here, ahead) = (margins(0.0), margins(h));
+        let mut end = f64::INFINITY;
+        for (m, m_ahead) in here.into_iter().zip(ahead) {
+            let slope = (m_ahead - m) / h;
+            if m > 0.0 && slope < 0.0 && slope.is_finite() {
+                end = end.min(omega + m / -slope);
+            }
+        }
+        let steepness = |c: &Converged| {
+            c.tangent.map(|[dl, dn, ds]| {
+                1.0 / ((dl / (1.0 + c.solution.lambda)).powi(2)
+                    + dn.powi(2)
+                    + (ds / c.s_end).powi(2))
+            })
+        };
+        if let Some((omega0, c0)) = path.len().checked_sub(2).map(|i| &path[i]) {
+            if let (Some(g0), Some(g1)) = (steepness(c0), steepness(c)) {
+                if g1 < g0 {
+                    end = end.min(omega + g1 * (omega - omega0) / (g0 - g1));
+                }
+            }
+        }
+        end
+    }
+
     /// The free-end solution `p`, `s_end` (tracked `shot` at its end), with its turning and
     /// its branch's direction in Ω; `None` when Λ < 0.
     fn converged(&self, p: Solution, s_end: f64, omega: f64, shot: &Shot) -> Option<Converged> {
@@ -1120,6 +1171,9 @@ impl Problem<'_> {
         // fold), to Ω or as far as it goes (to 0.1% of Ω: the Ω_max reported is a lower bound),
         // each step started along the branch's tangent at its last point and converged at the
         // search accuracy (only Ω itself, and the Ω_max reported, are converged in full).
+        // Where the branch is expected to end before Ω ([`Problem::predicted_end`]) the steps
+        // aim just inside that end, then just past it: an end where Λ reaches 0 is found in a
+        // few Newton steps on Λ(Ω) rather than by halving the step ten times.
         let mut ok = ok;
         if ok.tangent.is_none() {
             ok.tangent = integrate_tracked(
@@ -1134,13 +1188,16 @@ impl Problem<'_> {
         // `failed`: the smallest Ω where a step from the current point failed, not tried again
         // from there.
         let (mut reached, mut failed, mut step) = (0.0, f64::INFINITY, 0.25 * omega);
-        while step > 1e-3 * omega {
+        let tolerance = 1e-3 * omega;
+        while step > tolerance && failed - reached > tolerance {
             let mut next = (reached + step).min(omega);
+            // Aim just inside where the branch is expected to end, and once there, just past.
+            let end = self.predicted_end(&path);
+            if end < next {
+                next = (end - 0.5 * tolerance).max(reached + tolerance).min(next);
+            }
             if next >= failed {
                 next = 0.5 * (reached + failed);
-                if next - reached <= 1e-3 * omega {
-                    break;
-                }
             }
             let (guess, s_guess) = predict(&path, next);
             match self.newton3(guess, s_guess, next, Accuracy::Search) {
@@ -1153,9 +1210,9 @@ impl Problem<'_> {
                 }
                 Some(c) => {
                     path.push((next, c));
+                    step = 2.0 * (next - reached).max(step);
                     reached = next;
                     failed = f64::INFINITY;
-                    step *= 2.0;
                 }
                 None => {
                     failed = next;

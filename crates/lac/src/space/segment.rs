@@ -677,11 +677,13 @@ fn solve_space(
         1
     };
     let budget = Budget::new(SOLVE_STEPS);
+    let scans = ScanShots::default();
     let problem = Problem {
         shape,
         target,
         crossing,
         budget: &budget,
+        scans: &scans,
     };
     let omega = shape.omega;
     let warm = warm
@@ -830,7 +832,17 @@ struct Problem<'a> {
     crossing: u32,
     /// What is left of the solve's Taylor steps.
     budget: &'a Budget,
+    /// The ν scans' shots made so far.
+    scans: &'a ScanShots,
 }
+
+/// The shots of the ν scans, each to the first [`SCAN_CROSSINGS`] crossings of the cone, by
+/// (Ω, Λ, grid index): the cone search and the free-end search scan some of the same points.
+#[derive(Debug, Default)]
+struct ScanShots(std::cell::RefCell<std::collections::HashMap<(u64, u64, u32), Vec<Shot>>>);
+
+/// How many crossings of the cone a scan's shot looks for.
+const SCAN_CROSSINGS: u32 = 3;
 
 /// How far [`Problem::scan`] goes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -851,6 +863,23 @@ impl Problem<'_> {
     fn scan_ln_nu(&self, k: u32) -> f64 {
         let base = self.target.theta0.min(1.4).tan().ln() - 0.5 * std::f64::consts::LN_10;
         base + f64::from(k) * SCAN_STEP
+    }
+
+    /// The crossings of the θ0 cone (up to [`SCAN_CROSSINGS`]) of the form at Λ = `lambda`
+    /// and index `k` of the ν scan, made once per solve.
+    fn scan_shots(&self, omega: f64, lambda: f64, k: u32) -> Vec<Shot> {
+        let key = (omega.to_bits(), lambda.to_bits(), k);
+        if let Some(shots) = self.scans.0.borrow().get(&key) {
+            return shots.clone();
+        }
+        let p = Solution {
+            lambda,
+            ln_nu: self.scan_ln_nu(k),
+        };
+        let cone = Cone::new(self.target.theta0, SCAN_CROSSINGS);
+        let shots = shoot_each(&self.form(&p, omega), &cone, Accuracy::Scan, self.budget);
+        self.scans.0.borrow_mut().insert(key, shots.clone());
+        shots
     }
 
     fn form(&self, p: &Solution, omega: f64) -> SpaceForm {
@@ -884,8 +913,7 @@ impl Problem<'_> {
     /// unknowns there. Starts: from ν scans at a few Λ on the cones of the first three
     /// crossings, the lowest point of each valley of the 2-D residual along ν, best first.
     fn attempt_free_end(&self, omega: f64) -> Option<Converged> {
-        const CROSSINGS: usize = 3;
-        let cone = Cone::new(self.target.theta0, CROSSINGS as u32);
+        const CROSSINGS: usize = SCAN_CROSSINGS as usize;
         let mut starts = Vec::new();
         for lambda in FREE_END_LAMBDAS {
             // Each crossing's residuals along the ν scan, with the start they give.
@@ -895,7 +923,7 @@ impl Problem<'_> {
                     lambda,
                     ln_nu: self.scan_ln_nu(k),
                 };
-                let shots = shoot_each(&self.form(&p, omega), &cone, Accuracy::Scan, self.budget);
+                let shots = self.scan_shots(omega, lambda, k);
                 for (points, shot) in by_crossing.iter_mut().zip(&shots) {
                     let r = self.target.residual(shot);
                     points.push((k, r[0].hypot(r[1]), (p, shot.end.s)));
@@ -914,8 +942,9 @@ impl Problem<'_> {
     }
 
     /// Damped Newton on the three residuals of [`Problem::residual3`] in (Λ, ln ν, s), with
-    /// a forward-difference Jacobian (its s column from the same integration, further along
-    /// the last step's series) and the safeguards and accuracies of [`Problem::newton`].
+    /// the Jacobian of [`Problem::free_end_jacobian`] and the safeguards and accuracies of
+    /// [`Problem::newton`]; converged in full, or only to [`SEARCH_RESIDUAL`] at the search
+    /// accuracy when `finish` is [`Accuracy::Search`] (the continuation's inner points).
     fn newton3(
         &self,
         mut p: Solution,
@@ -1087,17 +1116,6 @@ impl Problem<'_> {
     fn tangent(&self, shot: &Shot, form: &SpaceForm) -> Option<[f64; 3]> {
         let (jac, per_omega) = self.free_end_jacobian(shot, form)?;
         solve3(jac, per_omega.map(|x| -x))
-    }
-
-    fn shot(&self, p: &Solution, omega: f64, accuracy: Accuracy) -> Option<Shot> {
-        let track = Track::EndOnly;
-        shoot(
-            &self.form(p, omega),
-            &self.cone(),
-            accuracy,
-            track,
-            self.budget,
-        )
     }
 
     /// A shot with its [`Shot::derivatives`].
@@ -1284,11 +1302,12 @@ impl Problem<'_> {
             let ln_nu = self.scan_ln_nu(k);
             scan.next += 1;
             let p = Solution { lambda, ln_nu };
-            let Some(shot) = self.shot(&p, omega, Accuracy::Scan) else {
+            let shots = self.scan_shots(omega, lambda, k);
+            let Some(shot) = shots.get(self.crossing as usize - 1) else {
                 scan.prev = None;
                 continue;
             };
-            let r = self.target.residual(&shot);
+            let r = self.target.residual(shot);
             scan.defined.push((k, r[0].hypot(r[1]), p));
             let d = shot.theta2.abs() - want;
             let prev = scan.prev.replace((ln_nu, d));

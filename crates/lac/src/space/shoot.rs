@@ -189,13 +189,14 @@ fn crossings(
         } else {
             cone.g(state.x)
         };
-        for i in 1..=PROBES {
-            let sigma = h * i as f64 / PROBES as f64;
-            let g = cone.g(expansion.point_at(sigma));
+        let sigmas: [f64; PROBES] = std::array::from_fn(|i| h * (i + 1) as f64 / PROBES as f64);
+        let points = expansion.points_at(sigmas);
+        for (sigma, point) in sigmas.into_iter().zip(points) {
+            let g = cone.g(point);
             let outside = crossings % 2 == 1;
             if (g > 0.0) != outside {
                 crossings += 1;
-                let at = refine(cone, &expansion, (prev, g_prev), (sigma, g));
+                let at = refine(cone, &expansion, accuracy, (prev, g_prev), (sigma, g));
                 let go_on = match finish(form, &expansion, at, Vec::new()) {
                     Some(mut shot) => {
                         if track == Track::Derivatives {
@@ -317,21 +318,27 @@ fn integrate<T>(
 
 /// The crossing inside a step, between probes `a` (g = `ga`) and `b` (g = `gb`) of opposite
 /// signs: the crate's safeguarded Newton ([`find_root`]) on the step's series, from the
-/// probes' secant, with g′ = cos θ0 (x·t)/|x| − t·e1 from the series' tangent, to 1e-16 of
-/// the arc length from the standard form's start (a Newton step or the bracket below that).
+/// probes' secant, with g′ = cos θ0 (x·t)/|x| − t·e1 from the series' tangent, to the
+/// accuracy's [`Accuracy::crossing_tolerance`] (1e-16 in full) of the arc length from the
+/// standard form's start (a Newton step or the bracket below that).
 ///
 /// Near the crossing g is at the level of its rounding, so where a Newton step rounds to
 /// nothing the bracket is narrowed to that width instead.
-fn refine(cone: &Cone, e: &Expansion, (a, ga): (f64, f64), (b, gb): (f64, f64)) -> f64 {
+fn refine(
+    cone: &Cone,
+    e: &Expansion,
+    accuracy: Accuracy,
+    (a, ga): (f64, f64),
+    (b, gb): (f64, f64),
+) -> f64 {
     let g = |sigma: f64| {
-        let p = e.point_at(sigma);
-        let t = e.tangent_at(sigma);
+        let (p, t) = e.point_and_tangent_at(sigma);
         let r = p.length();
         // At the apex (r = 0) g′ is undefined (NaN): find_root then takes a secant step.
         (r * cone.cos - p.x, Some(cone.cos * p.dot(t) / r - t.x))
     };
     let secant = a - ga * (b - a) / (gb - ga);
-    let x_tol = 1e-16 * (e.s0.abs() + secant.abs());
+    let x_tol = accuracy.crossing_tolerance() * (e.s0.abs() + secant.abs());
     match find_root(g, (a, ga), (b, gb), Some(secant), x_tol, 60) {
         Ok(sigma) => sigma,
         // Still bracketed after 60 steps (g flat at rounding level): its middle is as good.

@@ -35,6 +35,16 @@ pub(crate) enum Accuracy {
 }
 
 impl Accuracy {
+    /// How closely a shot's crossing of the cone is located, relative to its arc length:
+    /// to rounding in full, well below the integration's own error otherwise.
+    pub(crate) fn crossing_tolerance(self) -> f64 {
+        match self {
+            Accuracy::Full => 1e-16,
+            Accuracy::Search => 1e-13,
+            Accuracy::Scan => 1e-9,
+        }
+    }
+
     fn tolerance(self) -> f64 {
         match self {
             Accuracy::Full => 2e-16,
@@ -102,16 +112,31 @@ impl Expansion {
         e.t[0] = state.t;
         e.n[0] = state.n;
         e.b[0] = state.b;
+        // κ or τ is a polynomial when its slope is −1/m (κ linear for α = −1): its series
+        // ends in exact zeros, and the sums below stop at its last nonzero term.
+        let last_nonzero = |c: &[f64; ORDER + 1]| c.iter().rposition(|&x| x != 0.0).unwrap_or(0);
+        let (kappa_terms, tau_terms) = (last_nonzero(&e.kappa), last_nonzero(&e.tau));
         for k in 0..ORDER {
             let mut dt = Vec3::ZERO;
             let mut dn = Vec3::ZERO;
             let mut db = Vec3::ZERO;
-            for j in 0..=k {
+            let both = k.min(kappa_terms).min(tau_terms);
+            for j in 0..=both {
                 let (kj, tj) = (e.kappa[j], e.tau[j]);
                 let (t, n, b) = (e.t[k - j], e.n[k - j], e.b[k - j]);
                 dt += kj * n;
                 dn += tj * b - kj * t;
                 db -= tj * n;
+            }
+            for j in both + 1..=k.min(kappa_terms) {
+                let kj = e.kappa[j];
+                dt += kj * e.n[k - j];
+                dn -= kj * e.t[k - j];
+            }
+            for j in both + 1..=k.min(tau_terms) {
+                let tj = e.tau[j];
+                dn += tj * e.b[k - j];
+                db -= tj * e.n[k - j];
             }
             let inv = 1.0 / (k + 1) as f64;
             e.x[k + 1] = e.t[k] * inv;
@@ -137,25 +162,42 @@ impl Expansion {
         0.9 * h1.min(h2)
     }
 
-    /// The position at `s0 + h`.
-    pub(crate) fn point_at(&self, h: f64) -> Vec3 {
-        horner(&self.x, h)
+    /// The positions at `s0 + h` for each of `hs`, in one pass of Horner's rule (the
+    /// independent chains overlap, where one at a time each waits on its last term).
+    pub(crate) fn points_at<const M: usize>(&self, hs: [f64; M]) -> [Vec3; M] {
+        let mut v = [Vec3::ZERO; M];
+        for c in self.x.iter().rev() {
+            for (v, h) in v.iter_mut().zip(hs) {
+                *v = *v * h + *c;
+            }
+        }
+        v
     }
 
-    /// The unit tangent at `s0 + h` (normalised).
-    pub(crate) fn tangent_at(&self, h: f64) -> Vec3 {
-        horner(&self.t, h).normalize()
+    /// The position and unit tangent (normalised) at `s0 + h`.
+    pub(crate) fn point_and_tangent_at(&self, h: f64) -> (Vec3, Vec3) {
+        let (mut x, mut t) = (Vec3::ZERO, Vec3::ZERO);
+        for k in (0..=ORDER).rev() {
+            x = x * h + self.x[k];
+            t = t * h + self.t[k];
+        }
+        (x, t.normalize())
     }
 
     /// The state at `s0 + h`, its frame made orthonormal again (Gram–Schmidt on t, n, then
     /// b = t × n).
     pub(crate) fn state_at(&self, h: f64) -> State {
-        let t = horner(&self.t, h).normalize();
-        let n = horner(&self.n, h);
+        let (mut x, mut t, mut n) = (Vec3::ZERO, Vec3::ZERO, Vec3::ZERO);
+        for k in (0..=ORDER).rev() {
+            x = x * h + self.x[k];
+            t = t * h + self.t[k];
+            n = n * h + self.n[k];
+        }
+        let t = t.normalize();
         let n = (n - n.dot(t) * t).normalize();
         State {
             s: self.s0 + h,
-            x: horner(&self.x, h),
+            x,
             t,
             n,
             b: t.cross(n),
@@ -244,8 +286,4 @@ impl Sensitivity {
             (turn.cross(state.x) - self.moment[k], turn.cross(state.t))
         })
     }
-}
-
-fn horner(c: &[Vec3; ORDER + 1], h: f64) -> Vec3 {
-    c.iter().rev().fold(Vec3::ZERO, |v, &ck| v * h + ck)
 }

@@ -10,9 +10,9 @@ use crate::Vec3;
 const MAX_STEPS: usize = 400;
 
 /// The Taylor steps one solve may take over all its shots: the iteration cap that bounds
-/// every call's time (about 90 ms at most on this project's 2-core machine, under a
-/// microsecond a step). Far above what solved inputs take: at most 10,543 over the 2,991
-/// solved inputs of the constructed-input test (median 72, most of them at
+/// every call's time (about 0.1 s at most on this project's 2-core machine, about a
+/// microsecond a step). Far above what solved inputs take: at most 2,055 over the 2,993
+/// solved inputs of the constructed-input test (median 46, most of them at
 /// [`Accuracy::Search`]).
 pub(crate) const SOLVE_STEPS: u32 = 120_000;
 

@@ -762,6 +762,19 @@ fn solve3(m: [[f64; 3]; 3], b: [f64; 3]) -> Option<[f64; 3]> {
     Some(x)
 }
 
+/// The change of `residual` (a function of an end's point and tangent) per unit move of the
+/// end (x, t) along (dx, dt), by a central difference.
+fn end_slope<const N: usize>(
+    residual: impl Fn(Vec3, Vec3) -> [f64; N],
+    (x, t): (Vec3, Vec3),
+    (dx, dt): (Vec3, Vec3),
+) -> [f64; N] {
+    let h = 1e-6 / (dx.length() / x.length() + dt.length()).max(1e-300);
+    let plus = residual(x + dx * h, t + dt * h);
+    let minus = residual(x - dx * h, t - dt * h);
+    std::array::from_fn(|i| (plus[i] - minus[i]) / (2.0 * h))
+}
+
 /// The branch's point at `omega`, guessed along the tangent at its last point, else on the
 /// line through its last two points, else the last point.
 fn predict(path: &[(f64, Converged)], omega: f64) -> (Solution, f64) {
@@ -1083,9 +1096,9 @@ impl Problem<'_> {
         })
     }
 
-    /// The Jacobian of [`Problem::residual3`] in (Λ, ln ν, s) at a tracked shot: the end
-    /// moves by [`Shot::derivatives`] and, with s, along the curve (x′ = t, t′ = κ n); each
-    /// column is a central difference in the end, no integration.
+    /// The Jacobian of [`Problem::residual3`] in (Λ, ln ν, s) at a tracked shot, and its
+    /// column in Ω: the end moves by [`Shot::derivatives`] and, with s, along the curve
+    /// (x′ = t, t′ = κ n); each column is a central difference in the end, no integration.
     fn free_end_jacobian(
         &self,
         shot: &Shot,
@@ -1094,21 +1107,11 @@ impl Problem<'_> {
         let [d_lambda, d_nu, d_omega] = shot.derivatives?;
         let State { s, x, t, n, .. } = shot.end;
         let d_s = (t, n * form.kappa_law().value(s));
-        let mut jac = [[0.0; 4]; 3];
-        for (k, (dx, dt)) in [d_lambda, d_nu, d_s, d_omega].into_iter().enumerate() {
-            let h = 1e-6 / (dx.length() / x.length() + dt.length()).max(1e-300);
-            let plus = self.residual3_at(x + dx * h, t + dt * h);
-            let minus = self.residual3_at(x - dx * h, t - dt * h);
-            for i in 0..3 {
-                jac[i][k] = (plus[i] - minus[i]) / (2.0 * h);
-            }
-        }
-        jac.iter().flatten().all(|c| c.is_finite()).then(|| {
-            (
-                jac.map(|row| [row[0], row[1], row[2]]),
-                jac.map(|row| row[3]),
-            )
-        })
+        let residual = |x, t| self.residual3_at(x, t);
+        let [c_lambda, c_nu, c_s, c_omega] =
+            [d_lambda, d_nu, d_s, d_omega].map(|d| end_slope(residual, (x, t), d));
+        let jac = [0, 1, 2].map(|i| [c_lambda[i], c_nu[i], c_s[i]]);
+        (jac.iter().flatten().chain(&c_omega).all(|c| c.is_finite())).then_some((jac, c_omega))
     }
 
     /// The branch's direction at a solution (tracked `shot` at its end): d(Λ, ln ν, s)/dΩ
@@ -1142,22 +1145,14 @@ impl Problem<'_> {
         let kappa = form.kappa_law().value(s);
         let columns = [d[0], d[1]].map(|(dx, dt)| {
             let ds = -grad.dot(dx) / along;
-            self.end_slope(x, t, dx + t * ds, dt + n * (kappa * ds))
+            let residual = |x, t| self.target.residual_at(x, t);
+            end_slope(residual, (x, t), (dx + t * ds, dt + n * (kappa * ds)))
         });
         columns
             .iter()
             .flatten()
             .all(|c| c.is_finite())
             .then_some(columns)
-    }
-
-    /// The change of [`Target::residual`] per unit move of the end along (`dx`, `dt`), by a
-    /// central difference.
-    fn end_slope(&self, x: Vec3, t: Vec3, dx: Vec3, dt: Vec3) -> [f64; 2] {
-        let h = 1e-6 / (dx.length() / x.length() + dt.length()).max(1e-300);
-        let plus = self.target.residual_at(x + dx * h, t + dt * h);
-        let minus = self.target.residual_at(x - dx * h, t - dt * h);
-        [0, 1].map(|i| (plus[i] - minus[i]) / (2.0 * h))
     }
 
     /// Solve at `omega`, directly from a near-helix start, else by continuation in Ω from

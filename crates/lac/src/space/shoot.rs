@@ -87,7 +87,7 @@ pub(crate) struct Shot {
     pub(crate) theta2: f64,
     /// The states at the starts of the steps, for evaluation after the solve.
     pub(crate) checkpoints: Vec<State>,
-    /// How the end moves with Λ and ln ν (at fixed s), when the shot tracked it.
+    /// How the end moves with Λ, ln ν and Ω (at fixed s), when the shot tracked it.
     pub(crate) derivatives: Option<EndDerivatives>,
 }
 

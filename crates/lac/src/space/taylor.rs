@@ -267,10 +267,9 @@ impl Sensitivity {
                 qk = qk * at + q_kappa[k];
                 qt = qt * at + q_tau[k];
             }
-            let q_tau = qt;
             let d_lambda = -s * qk * b;
-            let d_nu = -q_tau * t;
-            let d_omega = (-s * q_tau * per_omega) * t;
+            let d_nu = -qt * t;
+            let d_omega = (-s * qt * per_omega) * t;
             for (k, d) in [d_lambda, d_nu, d_omega].into_iter().enumerate() {
                 out.turn[k] += weight * d;
                 out.moment[k] += weight * d.cross(x);

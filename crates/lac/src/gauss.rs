@@ -1,7 +1,13 @@
-//! The 8- and 16-point Gauss–Legendre rules on [−1, 1].
+//! The 4-, 8- and 16-point Gauss–Legendre rules on [−1, 1].
 //!
 //! Generated at 40 digits by `tools/reference/gauss_table.py N`; only the non-negative
 //! half of each symmetric rule is stored, as `(node, weight)`.
+
+/// Half of the 4-point Gauss–Legendre rule: `(x_i, w_i)` with `x_i > 0`.
+pub(crate) const GAUSS_4: [(f64, f64); 2] = [
+    (3.399_810_435_848_562_6e-1, 6.521_451_548_625_461e-1),
+    (8.611_363_115_940_526e-1, 3.478_548_451_374_538_6e-1),
+];
 
 /// Half of the 8-point Gauss–Legendre rule: `(x_i, w_i)` with `x_i > 0`.
 pub(crate) const GAUSS_8: [(f64, f64); 4] = [
@@ -26,6 +32,17 @@ pub(crate) const GAUSS_16: [(f64, f64); 8] = [
 #[cfg(test)]
 mod tests {
     use super::GAUSS_16;
+
+    #[test]
+    fn the_4_point_rule_integrates_x6_exactly() {
+        let w: f64 = super::GAUSS_4.iter().map(|&(_, w)| 2.0 * w).sum();
+        assert!((w - 2.0).abs() < 1e-15);
+        let i: f64 = super::GAUSS_4
+            .iter()
+            .map(|&(x, w)| 2.0 * w * x.powi(6))
+            .sum();
+        assert!((i - 2.0 / 7.0).abs() < 1e-15);
+    }
 
     #[test]
     fn the_8_point_rule_integrates_x14_exactly() {

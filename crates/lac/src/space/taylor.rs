@@ -15,6 +15,7 @@
 //! it and the steps shrink accordingly. The series is the dense output inside a step.
 
 use super::family::SpaceForm;
+use crate::gauss::GAUSS_4;
 use crate::Vec3;
 
 /// Order of the series.
@@ -226,14 +227,6 @@ pub(crate) struct Sensitivity {
 /// and of Ω (`[2]`).
 pub(crate) type EndDerivatives = [(Vec3, Vec3); 3];
 
-/// Four-point Gauss–Legendre nodes on [−1, 1] and their weights.
-const GAUSS: [(f64, f64); 4] = [
-    (-0.861_136_311_594_052_6, 0.347_854_845_137_453_8),
-    (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
-    (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
-    (0.861_136_311_594_052_6, 0.347_854_845_137_453_8),
-];
-
 impl Sensitivity {
     /// This one carried on along `e` from its start to `s0 + sigma`.
     pub(crate) fn along(&self, form: &SpaceForm, e: &Expansion, sigma: f64) -> Sensitivity {
@@ -253,7 +246,9 @@ impl Sensitivity {
         let q_tau = quotient(&e.tau, form.tau_law());
         let per_omega = form.tau_rate_per_omega();
         let mut out = *self;
-        for (xi, w) in GAUSS {
+        // Four-point Gauss–Legendre: each stored node and its mirror image.
+        let nodes = GAUSS_4.iter().flat_map(|&(x, w)| [(-x, w), (x, w)]);
+        for (xi, w) in nodes {
             let at = 0.5 * sigma * (1.0 + xi);
             let weight = 0.5 * sigma * w;
             let s = e.s0 + at;

@@ -72,6 +72,17 @@ impl PowerLaw {
         }
     }
 
+    /// `∫ₛ f` from s to the upper end of the range, where it is finite for every f of this
+    /// kind (a > 0 with e < 1: f decays fast enough): `f(s) (1 + a e s) / (a (1 − e))`, in
+    /// one product (no difference of two integrals); ∞ otherwise.
+    pub(crate) fn integral_rest(&self, s: f64) -> f64 {
+        if self.a > 0.0 && self.e < 1.0 {
+            self.value(s) * (1.0 + self.a * self.e * s) / (self.a * (1.0 - self.e))
+        } else {
+            f64::INFINITY
+        }
+    }
+
     /// The Taylor coefficients of f about `s0`: `f(s0 + h) = Σ out[k] hᵏ`.
     ///
     /// `f_k = f_(k−1) · (−a)(1 + (k−1)e) / (k (1 + a e s0))`, the binomial series written so

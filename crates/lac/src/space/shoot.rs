@@ -172,15 +172,24 @@ fn crossings(
         if !budget.take() {
             return;
         }
-        let expansion = Expansion::new(form, &state);
+        // Where the tangent has less left to turn than the shot's tolerance the rest is a
+        // ray (only shots without derivatives: those would need the rest's share too).
+        if track == Track::EndOnly
+            && form.kappa_law().integral_rest(state.s) <= accuracy.tolerance()
+        {
+            straight_rest(form, cone, &state, crossings, s_max, each);
+            return;
+        }
+        let expansion = Expansion::stepping(form, &state);
         let mut h = expansion.step_size(accuracy);
         // Where κ or τ is entire (α = −1: κ linear) the series reaches the bound itself;
         // where it is singular there, steps shrink toward it and stop just short.
-        let last = state.s + h >= s_max;
+        let to_bound = expansion.offset_to(s_max);
+        let last = h >= to_bound;
         if last {
-            h = s_max - state.s;
+            h = to_bound;
         }
-        if h <= 1e-12 * state.s.abs().max(1.0) {
+        if h <= 1e-12 * expansion.start().abs().max(1.0) {
             return;
         }
         let mut prev = 0.0;
@@ -225,6 +234,91 @@ fn crossings(
             return;
         }
         if crossings == 0 && never_leaves(form, cone, &state) {
+            return;
+        }
+    }
+}
+
+/// The crossings of `cone` after `state` (crossings so far: `crossings`) where the rest of the
+/// curve is straight to the shot's accuracy: the ray from `state.x` along `state.t`, about
+/// which n and b only twist, by the torsion's turning φ (κ = 0: n′ = τ b, b′ = −τ n), and
+/// `each` called as [`crossings`] does. Every later crossing is a sign change of g along the
+/// ray, at a root of `|x|² cos² θ0 = (x·e1)²`, a quadratic in the distance.
+fn straight_rest(
+    form: &SpaceForm,
+    cone: &Cone,
+    state: &State,
+    mut crossings: u32,
+    s_max: f64,
+    mut each: impl FnMut(Shot, u32) -> bool,
+) {
+    let (x0, t) = (state.x, state.t);
+    let c2 = cone.cos * cone.cos;
+    let a = c2 - t.x * t.x;
+    let b = 2.0 * (c2 * x0.dot(t) - x0.x * t.x);
+    let c = c2 * x0.length_squared() - x0.x * x0.x;
+    let mut roots = Vec::with_capacity(2);
+    if a == 0.0 {
+        roots.push(-c / b);
+    } else {
+        // A double root (a ray crossing a flat cone, θ0 = π/2) may round to a slightly
+        // negative discriminant: taken as 0, the sign test below decides.
+        let disc = b * b - 4.0 * a * c;
+        if disc >= -1e-12 * (b * b + (4.0 * a * c).abs()) {
+            let q = -0.5 * (b + disc.max(0.0).sqrt().copysign(b));
+            roots.extend([q / a, c / q]);
+        }
+    }
+    roots.retain(|r| r.is_finite() && *r > 0.0);
+    roots.sort_by(f64::total_cmp);
+    roots.dedup();
+    // A root is a crossing where g's sign differs on its two sides (not at a tangency, nor
+    // on the cone's other nappe, which squaring brought in).
+    let outside = |d: f64| cone.g(x0 + t * d) > 0.0;
+    let mut left = 0.0;
+    for (i, &r) in roots.iter().enumerate() {
+        let right = roots
+            .get(i + 1)
+            .map_or(2.0 * r + 1.0, |&next| 0.5 * (r + next));
+        if outside(0.5 * (left + r)) == outside(right) {
+            left = r;
+            continue;
+        }
+        left = r;
+        // Two Newton steps on g itself: the quadratic's coefficients cancel where the ray
+        // runs nearly along the cone.
+        let mut r = r;
+        for _ in 0..2 {
+            let p = x0 + t * r;
+            let slope = cone.cos * p.dot(t) / p.length() - t.x;
+            let step = cone.g(p) / slope;
+            if step.is_finite() && step.abs() < 0.5 * r {
+                r -= step;
+            }
+        }
+        let s = state.s + r;
+        if !(s < s_max && within_guard(form, s)) {
+            return;
+        }
+        crossings += 1;
+        let phi = form.tau_law().integral(s) - form.tau_law().integral(state.s);
+        let (sin, cos) = phi.sin_cos();
+        let end = State {
+            s,
+            x: x0 + t * r,
+            t,
+            n: state.n * cos + state.b * sin,
+            b: state.b * cos - state.n * sin,
+        };
+        let (_, theta1, theta2) = end_angles(end.x, Vec3::X, end.t);
+        let shot = Shot {
+            end,
+            theta1,
+            theta2,
+            checkpoints: Vec::new(),
+            derivatives: None,
+        };
+        if !each(shot, crossings) || crossings >= cone.crossing {
             return;
         }
     }
@@ -297,16 +391,21 @@ fn integrate<T>(
         if !budget.take() {
             return None;
         }
-        let expansion = Expansion::new(form, &state);
+        // Checkpoints are replayed by series in s (`SpaceSegment::frames`).
+        let expansion = match keep {
+            Checkpoints::Keep => Expansion::new(form, &state),
+            Checkpoints::Discard => Expansion::stepping(form, &state),
+        };
         let h = expansion.step_size(accuracy);
-        if h <= 1e-12 * state.s.abs().max(1.0) {
+        if h <= 1e-12 * expansion.start().abs().max(1.0) {
             return None;
         }
         if keep == Checkpoints::Keep {
             checkpoints.push(state);
         }
-        if state.s + h >= s_end {
-            return end(form, &expansion, s_end - state.s, checkpoints, &sensitivity);
+        let to_end = expansion.offset_to(s_end);
+        if h >= to_end {
+            return end(form, &expansion, to_end, checkpoints, &sensitivity);
         }
         if track == Track::Derivatives {
             sensitivity = sensitivity.along(form, &expansion, h);
@@ -317,10 +416,11 @@ fn integrate<T>(
 }
 
 /// The crossing inside a step, between probes `a` (g = `ga`) and `b` (g = `gb`) of opposite
-/// signs: the crate's safeguarded Newton ([`find_root`]) on the step's series, from the
-/// probes' secant, with g′ = cos θ0 (x·t)/|x| − t·e1 from the series' tangent, to the
-/// accuracy's [`Accuracy::crossing_tolerance`] (1e-16 in full) of the arc length from the
-/// standard form's start (a Newton step or the bracket below that).
+/// signs, as an offset in the step's variable: the crate's safeguarded Newton
+/// ([`find_root`]) on the step's series, from the probes' secant, with
+/// g′ = cos θ0 (x·x′)/|x| − x′·e1 from the series' velocity, to the accuracy's
+/// [`Accuracy::crossing_tolerance`] (1e-16 in full) of the variable's value (a Newton step or
+/// the bracket below that).
 ///
 /// Near the crossing g is at the level of its rounding, so where a Newton step rounds to
 /// nothing the bracket is narrowed to that width instead.
@@ -332,13 +432,13 @@ fn refine(
     (b, gb): (f64, f64),
 ) -> f64 {
     let g = |sigma: f64| {
-        let (p, t) = e.point_and_tangent_at(sigma);
+        let (p, v) = e.point_and_velocity_at(sigma);
         let r = p.length();
         // At the apex (r = 0) g′ is undefined (NaN): find_root then takes a secant step.
-        (r * cone.cos - p.x, Some(cone.cos * p.dot(t) / r - t.x))
+        (r * cone.cos - p.x, Some(cone.cos * p.dot(v) / r - v.x))
     };
     let secant = a - ga * (b - a) / (gb - ga);
-    let x_tol = accuracy.crossing_tolerance() * (e.s0.abs() + secant.abs());
+    let x_tol = accuracy.crossing_tolerance() * (e.start().abs() + secant.abs());
     match find_root(g, (a, ga), (b, gb), Some(secant), x_tol, 60) {
         Ok(sigma) => sigma,
         // Still bracketed after 60 steps (g flat at rounding level): its middle is as good.
@@ -420,10 +520,12 @@ mod tests {
             (-0.5, 2.0),
         ] {
             for torsion in [TorsionType::One, TorsionType::Two] {
+                // The last runs far out in σ (1 + Λαs up to 160).
                 for (lambda, ln_nu, omega, s) in [
                     (0.3, 0.2, 0.1, 2.0),
                     (1.5, -0.4, 0.3, 0.8),
                     (0.05, 1.1, 0.0, 5.0),
+                    (4.0, 1.5, 0.05, 20.0),
                 ] {
                     let shot = |dl: f64, dn: f64, dom: f64| {
                         let f = form(alpha, beta, lambda + dl, ln_nu + dn, omega + dom, torsion);
@@ -457,5 +559,212 @@ mod tests {
             }
         }
         assert!(worst > 0.0, "no case was checked");
+    }
+
+    /// The crossings [`straight_rest`] finds along a ray against the sign changes of the cone
+    /// function sampled densely along it, for rays from inside and outside cones narrower
+    /// and wider than a half-space (roots of the squared equation on the other nappe, and
+    /// tangencies, are not crossings).
+    #[test]
+    fn ray_crossings_match_sampling() {
+        // Turning and twisting that stay far inside the 2π guard from s = 10 on.
+        let f = form(0.0, 0.0, 2.0, 0.0, 1.0, TorsionType::One);
+        let mut seed = 7u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let mut found = 0;
+        for i in 0..400 {
+            let theta0 = [0.3, 1.0, std::f64::consts::FRAC_PI_2, 2.0, 2.8][i % 5];
+            let x0 = Vec3::new(next(), next(), next()) * 2.0;
+            let t = Vec3::new(next(), next(), next()).normalize();
+            let cone = Cone::new(theta0, 3);
+            let n = t.cross(Vec3::Z).normalize();
+            let start = State {
+                s: 10.0,
+                x: x0,
+                t,
+                n,
+                b: t.cross(n),
+            };
+            let already = u32::from(cone.g(x0) > 0.0);
+            let mut by_ray = Vec::new();
+            straight_rest(&f, &cone, &start, already, f64::INFINITY, |shot, _| {
+                by_ray.push(shot.end.s - 10.0);
+                true
+            });
+            // Sign changes on a fine geometric grid to 10⁶, each bisected.
+            let g = |d: f64| cone.g(x0 + t * d);
+            let mut sampled = Vec::new();
+            let mut prev = 0.0;
+            for k in 0..=60_000 {
+                let d = 1e-6 * 1e12f64.powf(f64::from(k) / 60_000.0);
+                if (g(prev) > 0.0) != (g(d) > 0.0) {
+                    let (mut lo, mut hi) = (prev, d);
+                    for _ in 0..100 {
+                        let mid = 0.5 * (lo + hi);
+                        if (g(mid) > 0.0) == (g(lo) > 0.0) {
+                            lo = mid;
+                        } else {
+                            hi = mid;
+                        }
+                    }
+                    sampled.push(lo);
+                }
+                prev = d;
+            }
+            sampled.truncate(3 - already as usize);
+            assert_eq!(
+                by_ray.len(),
+                sampled.len(),
+                "ray {i}: {by_ray:?} against {sampled:?}"
+            );
+            for (a, b) in by_ray.iter().zip(&sampled) {
+                assert!(
+                    (a - b).abs() <= 1e-9 * b.max(1.0),
+                    "ray {i}: {a} against {b}"
+                );
+                found += 1;
+            }
+        }
+        assert!(found > 100, "only {found} crossings");
+    }
+
+    /// Shots that finish along a straight rest ([`straight_rest`]) against the same shots
+    /// integrated to their crossings (those that track derivatives never take that path).
+    #[test]
+    fn straight_rest_matches_integration() {
+        let (mut checked, mut shortened) = (0, 0);
+        for alpha in [0.0, 0.5, -0.5] {
+            for beta in [-1.0, 0.0, 1.0] {
+                for torsion in [TorsionType::One, TorsionType::Two] {
+                    for (lambda, ln_nu, theta0) in [
+                        (2.0, 0.5, 0.3),
+                        (4.0, 1.5, 0.8),
+                        (1.0, -0.5, 1.2),
+                        (0.5, 1.0, 0.5),
+                        (0.8, 2.0, 1.0),
+                    ] {
+                        let f = form(alpha, beta, lambda, ln_nu, 0.1, torsion);
+                        let cone = Cone::new(theta0, 3);
+                        let ray_budget = Budget::new(SOLVE_STEPS);
+                        let by_ray = shoot_each(&f, &cone, Accuracy::Scan, &ray_budget);
+                        let budget = Budget::new(SOLVE_STEPS);
+                        let integrated: Vec<Shot> = (1..=3)
+                            .map_while(|k| {
+                                let cone = Cone::new(theta0, k);
+                                shoot(&f, &cone, Accuracy::Scan, Track::Derivatives, &budget)
+                            })
+                            .collect();
+                        assert_eq!(
+                            by_ray.len(),
+                            integrated.len(),
+                            "alpha {alpha} beta {beta} {torsion:?} lambda {lambda} theta0 {theta0}"
+                        );
+                        for (a, b) in by_ray.iter().zip(&integrated) {
+                            let err = (a.end.x - b.end.x).length() / b.end.x.length()
+                                + (a.end.t - b.end.t).length()
+                                + (a.end.b - b.end.b).length()
+                                + (a.theta2 - b.theta2).abs();
+                            assert!(
+                                err < 1e-5,
+                                "alpha {alpha} beta {beta} {torsion:?} lambda {lambda} theta0 {theta0}: {err:e}"
+                            );
+                            checked += 1;
+                        }
+                        // The integrated shots walk on where the ray shows no crossing is left.
+                        if ray_budget.0.get() > budget.0.get() + 100 {
+                            shortened += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(
+            checked >= 30 && shortened >= 3,
+            "{checked} crossings, {shortened} shortened"
+        );
+        // Crossings on the ray itself: a cone a hair narrower than the direction the curve
+        // ends up going (α = 0 turns by 1/Λ in all), which the curve leaves far out.
+        let mut on_ray = 0;
+        for beta in [-1.0, 0.0, 1.0] {
+            for torsion in [TorsionType::One, TorsionType::Two] {
+                for (lambda, ln_nu) in [
+                    (2.0, 0.5),
+                    (1.0, 1.5),
+                    (4.0, -0.5),
+                    (1.5, 2.5),
+                    (3.0, 1.0),
+                    (5.0, 1.0),
+                    (2.5, 2.0),
+                ] {
+                    let f = form(0.0, beta, lambda, ln_nu, 0.1, torsion);
+                    let budget = Budget::new(SOLVE_STEPS);
+                    let far = 40.0 / lambda;
+                    let Some(end) =
+                        integrate_to(&f, far, Checkpoints::Discard, Accuracy::Full, &budget)
+                    else {
+                        continue;
+                    };
+                    let cone = Cone::new(0.98 * end.end.t.x.acos(), 1);
+                    let by_ray = shoot_each(&f, &cone, Accuracy::Scan, &budget);
+                    let integrated = shoot(&f, &cone, Accuracy::Full, Track::Derivatives, &budget);
+                    // Both or neither (the 2π guard may come first).
+                    assert_eq!(by_ray.len(), usize::from(integrated.is_some()));
+                    let (Some(ray), Some(steps)) = (by_ray.first(), integrated) else {
+                        continue;
+                    };
+                    let (a, b) = (&ray.end, &steps.end);
+                    let err = (a.x - b.x).length() / b.x.length()
+                        + (a.t - b.t).length()
+                        + (a.b - b.b).length();
+                    // The ray meets the cone at a few percent of its angle: the scan's 1e-6
+                    // moves the crossing along it up to some 50 times as much.
+                    assert!(
+                        err < 1e-4,
+                        "beta {beta} {torsion:?} lambda {lambda}: {err:e}"
+                    );
+                    let ray_from = (1.0 / (lambda * Accuracy::Scan.tolerance())).ln() / lambda;
+                    if b.s > ray_from {
+                        on_ray += 1;
+                    }
+                }
+            }
+        }
+        assert!(on_ray >= 8, "only {on_ray} crossings on the ray");
+    }
+
+    /// The solver's shots, stepping in σ where Λα > 0, against the same integration in s
+    /// (as segments are evaluated), at full accuracy, out to curvature ratios of 10⁴.
+    #[test]
+    fn log_radius_steps_match_arc_length() {
+        let budget = Budget::new(SOLVE_STEPS);
+        let mut checked = 0;
+        for (alpha, beta) in [(1.0, 0.0), (0.5, -1.0), (2.0, 1.0), (1.0, 1.0), (3.0, -0.5)] {
+            for torsion in [TorsionType::One, TorsionType::Two] {
+                for (lambda, ln_nu, omega, s) in [(0.4, 0.3, 0.1, 3.0), (4.5, 1.2, 0.05, 2000.0)] {
+                    let f = form(alpha, beta, lambda, ln_nu, omega, torsion);
+                    let in_sigma =
+                        integrate_to(&f, s, Checkpoints::Discard, Accuracy::Full, &budget);
+                    let in_s = integrate_to(&f, s, Checkpoints::Keep, Accuracy::Full, &budget);
+                    let (Some(a), Some(b)) = (in_sigma, in_s) else {
+                        continue;
+                    };
+                    let scale = b.end.x.length().max(1.0);
+                    let err = ((a.end.x - b.end.x).length() / scale)
+                        .max((a.end.t - b.end.t).length())
+                        .max((a.end.b - b.end.b).length());
+                    assert!(
+                        err < 1e-12,
+                        "alpha {alpha} beta {beta} {torsion:?} lambda {lambda} s {s}: {err:e}"
+                    );
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked >= 10, "only {checked} cases reached their end");
     }
 }

@@ -11,8 +11,8 @@ const MAX_STEPS: usize = 400;
 
 /// The Taylor steps one solve may take over all its shots: the iteration cap that bounds
 /// every call's time (about 0.1 s at most on this project's 2-core machine, about a
-/// microsecond a step). Far above what solved inputs take: at most 2,055 over the 2,993
-/// solved inputs of the constructed-input test (median 46, most of them at
+/// microsecond a step). Far above what solved inputs take: at most 1,859 over the 2,993
+/// solved inputs of the constructed-input test (median 41, most of them at
 /// [`Accuracy::Search`]).
 pub(crate) const SOLVE_STEPS: u32 = 120_000;
 

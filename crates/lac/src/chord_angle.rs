@@ -21,7 +21,7 @@ use std::cell::OnceCell;
 mod guess;
 
 use crate::error::{Error, NotDrawable, Result};
-use crate::numeric::{expm1_ratio, ln1p_ratio, Complex};
+use crate::numeric::{expm1_ratio, ln1p_ratio, quadratic_roots, Complex};
 use crate::standard_form::integrate::{
     clothoid_arc, integrate_with, ClothoidEnd, NodeCache, CLOTHOID_MIN_LAMBDA_TURN,
     CLOTHOID_MIN_TURN,
@@ -326,13 +326,10 @@ impl ChordAngle {
         let first = if qa.abs() <= 1e-12 * qb.abs() {
             -qc / qb
         } else {
-            let disc = qb * qb - 4.0 * qa * qc;
             // The root that tends to −qc/qb as qa → 0.
-            let q = -0.5 * (qb + qb.signum() * disc.max(0.0).sqrt());
-            if disc >= 0.0 && q != 0.0 {
-                qc / q
-            } else {
-                linear
+            match quadratic_roots(qa, qb, qc, 0.0) {
+                Some((_, root)) if root.is_finite() => root,
+                _ => linear,
             }
         };
         let first = if first.is_finite() && first > linear / 3.0 && first < 3.0 * linear {

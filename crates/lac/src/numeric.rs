@@ -47,6 +47,19 @@ pub(crate) fn ln1p_ratio(x: f64) -> f64 {
     }
 }
 
+/// The real roots of `a x² + b x + c = 0` (a ≠ 0) without cancellation: with
+/// `q = −(b + sign(b) √(b² − 4ac)) / 2`, the roots `q/a` and `c/q` (the second tends to −c/b
+/// as a → 0). A discriminant below 0 by at most `slack` × (b² + |4ac|) (rounding at a double
+/// root) counts as 0; `None` below that.
+pub(crate) fn quadratic_roots(a: f64, b: f64, c: f64, slack: f64) -> Option<(f64, f64)> {
+    let disc = b * b - 4.0 * a * c;
+    if disc < -slack * (b * b + (4.0 * a * c).abs()) {
+        return None;
+    }
+    let q = -0.5 * (b + b.signum() * disc.max(0.0).sqrt());
+    Some((q / a, c / q))
+}
+
 /// ln(1 + (a + a_lo)·b·c) with the sum formed exactly (FMA error-free products and sums),
 /// so that it keeps full relative accuracy when the argument is tiny: near a bound of the
 /// standard form, where ρ → 0 or ∞, a plain product would lose up to all digits of the sum.
@@ -316,6 +329,23 @@ impl Mul for Complex {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Both roots to rounding, the small one too when a is tiny (where the textbook formula
+    /// cancels), a double root through `slack`, none for complex roots.
+    #[test]
+    fn quadratic_roots_keep_their_digits() {
+        assert_eq!(quadratic_roots(1.0, -3.0, 2.0, 0.0), Some((2.0, 1.0)));
+        let (big, small) = quadratic_roots(1e-20, 1.0, -1.0, 0.0).expect("real roots");
+        assert!(
+            (small - 1.0).abs() < 1e-15 && (big + 1e20).abs() < 1e5,
+            "{big} {small}"
+        );
+        let third = 1.0 / 3.0;
+        let (a, b, c) = (1.0, -2.0 * third, third * third);
+        assert!(quadratic_roots(a, b, c, 1e-12)
+            .is_some_and(|(r, s)| (r - third).abs() < 1e-7 && (s - third).abs() < 1e-7));
+        assert_eq!(quadratic_roots(1.0, 0.0, 1.0, 1e-12), None);
+    }
 
     #[test]
     fn ln_1p_product_is_accurate_next_to_minus_one() {

@@ -3,7 +3,7 @@
 
 use super::family::SpaceForm;
 use super::taylor::{Accuracy, EndDerivatives, Expansion, Sensitivity, State};
-use crate::numeric::{find_root, RootFailure};
+use crate::numeric::{find_root, quadratic_roots, RootFailure};
 use crate::Vec3;
 
 /// Most Taylor steps one shot may take before the crossing is declared missing.
@@ -260,14 +260,10 @@ fn straight_rest(
     let mut roots = Vec::with_capacity(2);
     if a == 0.0 {
         roots.push(-c / b);
-    } else {
+    } else if let Some((r1, r2)) = quadratic_roots(a, b, c, 1e-12) {
         // A double root (a ray crossing a flat cone, θ0 = π/2) may round to a slightly
-        // negative discriminant: taken as 0, the sign test below decides.
-        let disc = b * b - 4.0 * a * c;
-        if disc >= -1e-12 * (b * b + (4.0 * a * c).abs()) {
-            let q = -0.5 * (b + disc.max(0.0).sqrt().copysign(b));
-            roots.extend([q / a, c / q]);
-        }
+        // negative discriminant: it counts as 0, and the sign test below decides.
+        roots.extend([r1, r2]);
     }
     roots.retain(|r| r.is_finite() && *r > 0.0);
     roots.sort_by(f64::total_cmp);

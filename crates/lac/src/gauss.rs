@@ -31,36 +31,30 @@ pub(crate) const GAUSS_16: [(f64, f64); 8] = [
 
 #[cfg(test)]
 mod tests {
-    use super::GAUSS_16;
+    use super::{GAUSS_16, GAUSS_4, GAUSS_8};
+
+    /// A half rule (each node and its mirror image) over [−1, 1]: its weights sum to 2 and it
+    /// integrates x^`even` exactly (2/(even + 1)), as an n-point rule does up to degree 2n − 1.
+    fn assert_exact(rule: &[(f64, f64)], even: i32) {
+        let w: f64 = rule.iter().map(|&(_, w)| 2.0 * w).sum();
+        assert!((w - 2.0).abs() < 1e-15, "weights sum to {w}");
+        let i: f64 = rule.iter().map(|&(x, w)| 2.0 * w * x.powi(even)).sum();
+        let exact = 2.0 / f64::from(even + 1);
+        assert!((i - exact).abs() < 1e-15, "x^{even}: {i} against {exact}");
+    }
 
     #[test]
     fn the_4_point_rule_integrates_x6_exactly() {
-        let w: f64 = super::GAUSS_4.iter().map(|&(_, w)| 2.0 * w).sum();
-        assert!((w - 2.0).abs() < 1e-15);
-        let i: f64 = super::GAUSS_4
-            .iter()
-            .map(|&(x, w)| 2.0 * w * x.powi(6))
-            .sum();
-        assert!((i - 2.0 / 7.0).abs() < 1e-15);
+        assert_exact(&GAUSS_4, 6);
     }
 
     #[test]
     fn the_8_point_rule_integrates_x14_exactly() {
-        let w: f64 = super::GAUSS_8.iter().map(|&(_, w)| 2.0 * w).sum();
-        assert!((w - 2.0).abs() < 1e-15);
-        let i: f64 = super::GAUSS_8
-            .iter()
-            .map(|&(x, w)| 2.0 * w * x.powi(14))
-            .sum();
-        assert!((i - 2.0 / 15.0).abs() < 1e-15);
+        assert_exact(&GAUSS_8, 14);
     }
 
     #[test]
-    fn weights_sum_to_two_and_integrate_x14_exactly() {
-        let w: f64 = GAUSS_16.iter().map(|&(_, w)| 2.0 * w).sum();
-        assert!((w - 2.0).abs() < 1e-15);
-        // Exact for degree <= 31: the integral of x^30 over [-1, 1] is 2/31.
-        let i: f64 = GAUSS_16.iter().map(|&(x, w)| 2.0 * w * x.powi(30)).sum();
-        assert!((i - 2.0 / 31.0).abs() < 1e-15);
+    fn weights_sum_to_two_and_integrate_x30_exactly() {
+        assert_exact(&GAUSS_16, 30);
     }
 }

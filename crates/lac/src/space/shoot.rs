@@ -63,6 +63,13 @@ impl Cone {
     fn g(&self, x: Vec3) -> f64 {
         x.length() * self.cos - x.x
     }
+
+    /// g at `x` and its rate of change as x moves with velocity `v`,
+    /// `cos θ0 (x·v)/|x| − v·e1` (NaN at the apex, where g has no derivative).
+    fn g_and_slope(&self, x: Vec3, v: Vec3) -> (f64, f64) {
+        let r = x.length();
+        (r * self.cos - x.x, self.cos * x.dot(v) / r - v.x)
+    }
 }
 
 /// Whether [`integrate_to`] keeps the integrator states at the starts of its steps (for
@@ -285,18 +292,16 @@ fn straight_rest(
         // runs nearly along the cone.
         let mut r = r;
         for _ in 0..2 {
-            let p = x0 + t * r;
-            let slope = cone.cos * p.dot(t) / p.length() - t.x;
-            let step = cone.g(p) / slope;
+            let (g, slope) = cone.g_and_slope(x0 + t * r, t);
+            let step = g / slope;
             if step.is_finite() && step.abs() < 0.5 * r {
                 r -= step;
             }
         }
         let s = state.s + r;
-        if !(s < s_max && within_guard(form, s)) {
+        if s >= s_max {
             return;
         }
-        crossings += 1;
         let phi = form.tau_law().integral(s) - form.tau_law().integral(state.s);
         let (sin, cos) = phi.sin_cos();
         let end = State {
@@ -306,14 +311,10 @@ fn straight_rest(
             n: state.n * cos + state.b * sin,
             b: state.b * cos - state.n * sin,
         };
-        let (_, theta1, theta2) = end_angles(end.x, Vec3::X, end.t);
-        let shot = Shot {
-            end,
-            theta1,
-            theta2,
-            checkpoints: Vec::new(),
-            derivatives: None,
+        let Some(shot) = shot_at(form, end, Vec::new()) else {
+            return;
         };
+        crossings += 1;
         if !each(shot, crossings) || crossings >= cone.crossing {
             return;
         }
@@ -429,9 +430,9 @@ fn refine(
 ) -> f64 {
     let g = |sigma: f64| {
         let (p, v) = e.point_and_velocity_at(sigma);
-        let r = p.length();
-        // At the apex (r = 0) g′ is undefined (NaN): find_root then takes a secant step.
-        (r * cone.cos - p.x, Some(cone.cos * p.dot(v) / r - v.x))
+        // At the apex g′ is NaN: find_root then takes a secant step.
+        let (g, slope) = cone.g_and_slope(p, v);
+        (g, Some(slope))
     };
     let secant = a - ga * (b - a) / (gb - ga);
     let x_tol = accuracy.crossing_tolerance() * (e.start().abs() + secant.abs());
@@ -446,7 +447,11 @@ fn refine(
 }
 
 fn finish(form: &SpaceForm, e: &Expansion, sigma: f64, checkpoints: Vec<State>) -> Option<Shot> {
-    let end = e.state_at(sigma);
+    shot_at(form, e.state_at(sigma), checkpoints)
+}
+
+/// The shot ending at `end`, with its end angles; `None` past the 2π guard.
+fn shot_at(form: &SpaceForm, end: State, checkpoints: Vec<State>) -> Option<Shot> {
     if !within_guard(form, end.s) {
         return None;
     }

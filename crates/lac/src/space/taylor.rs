@@ -348,34 +348,57 @@ impl Expansion {
         }
     }
 
-    /// The series of the sensitivities' kernels, `κ/u ds/dv` and `τ/w ds/dv` with u, w the
-    /// laws' linear factors (`∂κ/∂Λ = −s κ/u`, `∂τ/∂ln ν = −τ/w`, see [`Sensitivity`]).
+    /// The series of the sensitivities' kernels `∂κ/∂Λ · ds/dv / (−s)` = κ/u ds/dv and
+    /// `∂τ/∂ln ν · ds/dv / (−1)` = τ/w ds/dv, with u, w the laws' linear factors
+    /// (see [`Sensitivity`]); and of s.
     fn kernels(&self, form: &SpaceForm) -> [[f64; ORDER + 1]; 2] {
-        // f ds/dv over w(v) = 1 + rate s(v), the law's linear factor along the variable:
-        // each quotient term, once known, taken off the later ones.
+        // The series of f/(1 + rate s) for a series f in s: dividing by a linear factor.
         let over_linear = |f: &[f64; ORDER + 1], rate: f64| {
-            let w0 = 1.0 + rate * self.s0;
-            let mut q = *f;
-            for i in 0..=ORDER {
-                q[i] /= w0;
-                let carry = rate * q[i];
-                for (later, &a) in q[i + 1..].iter_mut().zip(&self.arc[1..]) {
-                    *later -= carry * a;
-                }
+            let u0 = 1.0 + rate * self.s0;
+            let mut q = [0.0; ORDER + 1];
+            let mut prev = 0.0;
+            for (qk, fk) in q.iter_mut().zip(f) {
+                prev = (fk - rate * prev) / u0;
+                *qk = prev;
             }
             q
         };
         let (kappa, tau) = (form.kappa_law(), form.tau_law());
-        [
-            over_linear(&self.turn, kappa.a * kappa.e),
-            over_linear(&self.twist, tau.a * tau.e),
-        ]
+        match self.variable {
+            Variable::ArcLength => [
+                over_linear(&self.turn, kappa.a * kappa.e),
+                over_linear(&self.twist, tau.a * tau.e),
+            ],
+            Variable::LogRadius { .. } => {
+                // κ/u · u = κ = κ0 e^(−Λh); τ/w ds/dσ is the twist over w(σ) = 1 + a e s(σ).
+                let mut q_kappa = [0.0; ORDER + 1];
+                exponential_series(kappa.value(self.s0), -kappa.a, &mut q_kappa);
+                let rate = tau.a * tau.e;
+                let w0 = 1.0 + rate * self.s0;
+                let mut q_tau = self.twist;
+                for i in 0..=ORDER {
+                    q_tau[i] /= w0;
+                    let carry = rate * q_tau[i];
+                    for (q, &a) in q_tau[i + 1..].iter_mut().zip(&self.arc[1..]) {
+                        *q -= carry * a;
+                    }
+                }
+                [q_kappa, q_tau]
+            }
+        }
     }
 }
 
-/// `out[k] = c rᵏ / k!`, the series of `c e^(r h)`: the power law of slope 0.
+/// `out[k] = c rᵏ / k!`, the series of `c e^(r h)`. (`PowerLaw::taylor` at slope 0 gives
+/// the same, but spends an `exp` on its first term; this runs twice in every step in σ.)
 fn exponential_series(c: f64, r: f64, out: &mut [f64; ORDER + 1]) {
-    super::family::PowerLaw { c, a: -r, e: 0.0 }.taylor(0.0, out);
+    let mut term = c;
+    for (k, slot) in out.iter_mut().enumerate() {
+        if k > 0 {
+            term *= r / k as f64;
+        }
+        *slot = term;
+    }
 }
 
 /// The index of the last nonzero coefficient (0 for none).
@@ -453,16 +476,16 @@ impl Sensitivity {
         for (xi, w) in nodes {
             let at = 0.5 * sigma * (1.0 + xi);
             let weight = 0.5 * sigma * w;
-            // One pass of Horner for all six series: independent chains, not one at a time.
+            let s = e.s_at(at);
+            // One pass of Horner for all five series: independent chains, not one at a time.
             let (mut x, mut t, mut b) = (Vec3::ZERO, Vec3::ZERO, Vec3::ZERO);
-            let (mut qk, mut qt, mut s) = (0.0, 0.0, 0.0);
+            let (mut qk, mut qt) = (0.0, 0.0);
             for k in (0..=ORDER).rev() {
                 x = x * at + e.x[k];
                 t = t * at + e.t[k];
                 b = b * at + e.b[k];
                 qk = qk * at + q_kappa[k];
                 qt = qt * at + q_tau[k];
-                s = s * at + e.arc[k];
             }
             let d_lambda = -s * qk * b;
             let d_nu = -qt * t;

@@ -64,7 +64,7 @@ $(VENV)/.installed: tools/reference/requirements.txt tools/reference/requirement
 # Redraw the README's figures (docs/*.svg) from its *Made by* lines with the freshly built
 # `lac`; `make test` fails while a committed figure differs from what its command draws.
 docs:
-	LAC_WRITE_FIGURES=1 $(CARGO_TEST) --test readme_figures -- --nocapture
+	LAC_WRITE_FIGURES=1 $(CARGO_TEST) --test it readme_figures -- --nocapture
 
 # The seeded random and adversarial driver, a million inputs per entry point (make test runs
 # a hundred thousand); FUZZ_SEED picks another stream. Exit code 1 on any panic, invariant

@@ -2,7 +2,7 @@
 //! and a refusal ≤ 500 µs median (≤ 5 ms worst), over a seeded random set per (α, β) ∈
 //! {−1, 0, 1}², with the share of the random inputs that are solved and the slowest refusal
 //! (printed before the timings); a solve over inputs built from known curves
-//! (`tests/common/space_inputs.rs`), cold and warm-started from the segment of a slightly
+//! (`tests/it/common/space_inputs.rs`), cold and warm-started from the segment of a slightly
 //! different input (an editor's drag); the README's points with Ω = 5 (refused, Ω_max
 //! reported); and the coplanar points that turn 180° (refused at once).
 //!
@@ -18,7 +18,7 @@ use std::time::Instant;
 mod common;
 use common::{median_per_call, Rng};
 
-#[path = "../tests/common/space_inputs.rs"]
+#[path = "../tests/it/common/space_inputs.rs"]
 #[allow(unreachable_pub)]
 mod space_inputs;
 

@@ -1,6 +1,6 @@
 //! `lac region`: the drawable region as a JSON grid and as a PNG.
 
-mod common;
+use crate::common;
 
 use common::{assert_failure, json, lac};
 

@@ -1,6 +1,6 @@
 //! `lac segment --format svg`: a standalone drawing independent of the input's scale.
 
-mod common;
+use crate::common;
 
 use common::lac;
 

@@ -2,7 +2,7 @@
 //! result read from standard input, and the refusals (exit codes and kinds). The files' own
 //! correctness is `lac_io`'s tests and the CAD readers' (tools/reference/test_export.py).
 
-mod common;
+use crate::common;
 
 use common::{assert_failure, assert_keys, lac, lac_with_input};
 

@@ -9,9 +9,9 @@
 //! installed, each text is also laid out with it by usvg, and its box must lie inside the
 //! estimated one: the estimate is checked against a real font as well.
 
-mod common;
+use crate::common;
 #[allow(dead_code)] // the layout's estimate, of which the checks use a part
-#[path = "../src/svg/measure.rs"]
+#[path = "../../src/svg/measure.rs"]
 mod measure;
 
 use std::sync::Arc;

@@ -2,7 +2,7 @@
 //! the samples), the planar fallback, the error lines with "omega_max", and the SVG, OBJ and
 //! PLY outputs.
 
-mod common;
+use crate::common;
 
 use common::{assert_failure, assert_keys, json, lac, Run};
 use lac::{SpaceForm, SpaceFormParams, TorsionType, Vec3};

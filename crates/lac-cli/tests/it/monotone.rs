@@ -1,7 +1,7 @@
 //! `lac monotone`: the proven curvature-monotonicity verdict of a (rational) cubic, checked
 //! against the curve's own dκ/ds.
 
-mod common;
+use crate::common;
 
 use common::{assert_failure, json, lac, lac_with_input};
 use kurbo::Point;

@@ -1,7 +1,7 @@
 //! The API without a socket (tower's `oneshot`): every endpoint answers what the library
 //! gives, bit for bit; every bad request is a 4xx with a JSON error body; nothing is a 5xx.
 
-mod common;
+use crate::common;
 
 use std::time::Duration;
 

@@ -1,7 +1,7 @@
 //! `lac serve`: it prints the URL it serves on loopback, answers there, and refuses other
 //! addresses without --allow-remote.
 
-mod common;
+use crate::common;
 
 use std::io::{BufRead, BufReader, Read, Write};
 use std::net::TcpStream;

@@ -6,7 +6,7 @@
 //! or added, arrays shortened or lengthened, deep nesting, truncated or corrupted text).
 //! `LAC_SERVE_FUZZ_COUNT` changes the count per endpoint.
 
-mod common;
+use crate::common;
 
 use std::time::{Duration, Instant};
 

@@ -1,7 +1,7 @@
 //! `lac spline`: G2 splines through points, their JSON, CSV and SVG, and their errors (the
 //! span named).
 
-mod common;
+use crate::common;
 
 use common::{assert_failure, json, lac};
 use serde_json::Value;

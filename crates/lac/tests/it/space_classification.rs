@@ -183,7 +183,7 @@ struct RadiusCells {
 }
 
 fn fixture() -> Fixture {
-    serde_json::from_str(include_str!("fixtures/space_classification.json")).unwrap()
+    serde_json::from_str(include_str!("../fixtures/space_classification.json")).unwrap()
 }
 
 fn classify(c: &Check) -> SpaceClassification {

@@ -45,7 +45,7 @@ fn every_entry_point_survives_the_seeded_driver() {
 
 #[test]
 fn every_input_that_ever_failed_passes() {
-    let corpus = include_str!("../regressions/inputs.jsonl");
+    let corpus = include_str!("../../regressions/inputs.jsonl");
     let results = replay(corpus);
     assert!(
         results.len() >= 10,

@@ -1,7 +1,7 @@
 //! `lac quasi`: rational and plain cubic Bézier replacements of segments and compound
 //! curves, as JSON and SVG, and their errors.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::{FRAC_PI_2, PI, SQRT_2};
 

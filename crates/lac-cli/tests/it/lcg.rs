@@ -1,7 +1,7 @@
 //! `lac lcg`: the curvature plot and logarithmic curvature graph of `lac quasi`, `lac
 //! segment` and `lac compound` output, as JSON, CSV, SVG and PNG.
 
-mod common;
+use crate::common;
 
 use common::{assert_failure, json, lac, lac_with_input, Run};
 use serde_json::Value;

@@ -1,4 +1,4 @@
-//! With the `serde` feature (`cargo test -p lac --features serde --test space_serde`): the
+//! With the `serde` feature (`cargo test -p lac --features serde --test it space_serde`): the
 //! space-curve types round-trip through JSON under their snake_case names, and a standard
 //! form read from JSON is checked as `SpaceForm::new` checks it.
 #![cfg(feature = "serde")]

@@ -7,8 +7,7 @@ use lac::{Error, NotDrawable, SpaceForm, SpaceFormParams, SpaceSegment, SpaceSha
 use lac::{TorsionType, Vec3};
 
 // The independent Runge–Kutta integration shared with the constructed-input test.
-#[path = "common/space_inputs.rs"]
-mod space_inputs;
+use crate::common::space_inputs;
 use space_inputs::independent_end;
 
 struct Rng(u64);

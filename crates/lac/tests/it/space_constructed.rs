@@ -6,8 +6,7 @@
 //! `LAC_SPACE_CASES` sets the number of cases per seed (default 600, three seeds), and the
 //! test prints the shares solved per α, β, type, crossing and near-edge cases.
 
-#[path = "common/space_inputs.rs"]
-mod space_inputs;
+use crate::common::space_inputs;
 
 use std::collections::BTreeMap;
 

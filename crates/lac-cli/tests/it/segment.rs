@@ -1,6 +1,6 @@
 //! `lac segment`: output shapes, negative numbers, exit codes and error lines.
 
-mod common;
+use crate::common;
 
 use common::{assert_failure, json, lac};
 use serde_json::Value;

@@ -35,7 +35,7 @@ struct RefFrame {
 }
 
 fn fixture() -> Fixture {
-    serde_json::from_str(include_str!("fixtures/space_family.json")).unwrap()
+    serde_json::from_str(include_str!("../fixtures/space_family.json")).unwrap()
 }
 
 fn form(c: &Case) -> SpaceForm {

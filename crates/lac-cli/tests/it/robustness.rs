@@ -2,7 +2,7 @@
 //! exit code 2, a defect is one line of JSON with exit code 70 (never Rust's panic message),
 //! work is limited, and successful output never holds a non-finite number.
 
-mod common;
+use crate::common;
 
 use common::{assert_failure, lac, lac_with_env};
 use serde_json::Value;

@@ -1,7 +1,7 @@
 //! `lac compound`: the three-point (seed 004) and four-point (seed 002) forms, their JSON,
 //! CSV and SVG, and their errors.
 
-mod common;
+use crate::common;
 
 use lac::Curve;
 use std::f64::consts::{PI, TAU};

@@ -1,7 +1,7 @@
 //! `lac path`: G1 and G2 paths from a control polygon, their JSON, CSV and SVG, and their
 //! errors (the joint named, the nearest G1 path offered).
 
-mod common;
+use crate::common;
 
 use common::{assert_failure, json, lac};
 use serde_json::Value;

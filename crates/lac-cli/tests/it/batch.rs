@@ -2,7 +2,7 @@
 //! bad line answered in its place with its line number, a summary and a non-zero exit code
 //! when any line failed, and answers streamed as they are ready.
 
-mod common;
+use crate::common;
 
 use std::io::{BufRead, BufReader, Write};
 use std::process::{Command, Stdio};

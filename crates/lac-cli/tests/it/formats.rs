@@ -2,7 +2,7 @@
 //! `-o FILE`, `-o -` is standard output everywhere, the same flags mean the same things, and
 //! `--help` documents each format.
 
-mod common;
+use crate::common;
 
 use common::{assert_failure, lac, lac_with_input};
 use serde_json::Value;

@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""Independent 40-digit reference for compound-rhythm LAC curves (SPEC section 4).
+"""Independent 40-digit reference for compound-rhythm LAC curves (docs/math.md §4).
 
 Writes crates/lac/tests/fixtures/compound.json.  Run from anywhere:
 
     .venv/bin/python tools/reference/compound_fixtures.py [-o OUT] [-j JOBS]
 
-Mathematics (joint-reference form, SPEC section 4)
+Mathematics (joint-reference form, docs/math.md §4)
 --------------------------------------------------
 Both pieces live in one standard form with the reference point (rho = 1, theta = 0,
 tangent +x) at the joint and the same Lambda:

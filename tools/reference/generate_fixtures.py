@@ -2,7 +2,7 @@
 
     .venv/bin/python tools/reference/generate_fixtures.py      (from the repo root)
 
-standard_form.json -- SPEC section 2, standard form II: reference point rho = 1 at
+standard_form.json -- docs/math.md §2, standard form II: reference point rho = 1 at
 theta = s = 0 with tangent +x; for (alpha, lambda >= 0, theta):
     rho = rho(theta), s = s(theta) (negative for theta < 0),
     x + i y = P(theta) = int_0^theta rho(psi) e^{i psi} dpsi.
@@ -12,7 +12,7 @@ arc-length form (graded pieces, see lac_mpmath.py); they must agree to 1e-25, an
 the incomplete-gamma closed form (alpha != 1, lambda |alpha - 1| >= 1e-3) and the
 alpha = 1 closed form.
 
-segments.json -- SPEC section 3, a segment from control points (Pa, Pb, Pc) and alpha
+segments.json -- docs/math.md §3, a segment from control points (Pa, Pb, Pc) and alpha
 (see segment_mpmath.py): lambda of the solved standard-form piece (after the swap of the
 ends), theta_d in (0, pi) (unsigned), arc_length, signed end curvatures (+ = left turn),
 and samples at arc-length fractions u from the caller's first point: s, x, y, theta (the

@@ -1,4 +1,4 @@
-"""Log-aesthetic curves in mpmath: the standard form II of SPEC section 2.
+"""Log-aesthetic curves in mpmath: the standard form II of docs/math.md §2.
 
 LAC(alpha, lam): reference point at the origin with tangent +x, rho = 1 and s = theta = 0.
 
@@ -139,7 +139,7 @@ class StandardForm:
         return p
 
     def point_gamma(self, theta):
-        """P(theta) by upper incomplete gamma functions (SPEC section 2), for checks only.
+        """P(theta) by upper incomplete gamma functions (docs/math.md §2), for checks only.
 
         Needs alpha != 1 and lam > 0; computed with 40 extra digits because it cancels
         badly as alpha -> 1 or lam -> 0.  theta = theta_singular() means u = 0 exactly.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Write the quasi-aesthetic-curve fixtures (SPEC section 5; mathematics in quasi_mpmath.py).
+"""Write the quasi-aesthetic-curve fixtures (docs/math.md §5; mathematics in quasi_mpmath.py).
 
     .venv/bin/python tools/reference/quasi_fixtures.py [--only monotone|quasi] [-j JOBS]
 
@@ -30,7 +30,7 @@ changes:
     near-end-monotone   monotone with dkappa/ds nearly 0 at an end (root just outside)
 Curves whose speed vanishes somewhere on [0, 1] are left out.
 
-crates/lac/tests/fixtures/quasi.json -- the seed-001 one-piece fit (SPEC section 5) at its
+crates/lac/tests/fixtures/quasi.json -- the seed-001 one-piece fit (docs/math.md §5) at its
 reference optimum (u, v) of F(u, v) = int_0^Theta d(phi)^2 dphi (tangent-angle
 correspondence), with the LAC segment's arc length and signed end curvatures (caller's
 order), the rational cubic (bezier, weights with w1 = w2 = (2 cos(Theta/2) + 1)/3),

@@ -1,7 +1,7 @@
-"""Independent reference for quasi-aesthetic curves (SPEC section 5, seed 001).
+"""Independent reference for quasi-aesthetic curves (docs/math.md §5, seed 001).
 
 Everything here is written from the mathematics below; only the LAC segment itself is
-reused (segment_mpmath.solve_lambda and lac_mpmath.StandardForm, SPEC section 3).
+reused (segment_mpmath.solve_lambda and lac_mpmath.StandardForm, docs/math.md §3).
 
 Rational cubic Bezier
 ---------------------
@@ -37,7 +37,7 @@ dyadic rationals with those counts isolates each root to an interval narrower th
 gives "increasing" (dkappa/ds >= 0) or "decreasing" (<= 0).  Curves whose speed vanishes
 somewhere on [0, 1] (a common root of V's components there) are refused.
 
-Tangent-angle correspondence (SPEC section 5)
+Tangent-angle correspondence (docs/math.md §5)
 ---------------------------------------------
 An LAC segment from control points (Pa, Pb, Pc) and alpha turns by Theta = theta_d (the
 turning of the control polygon, < pi).  L(phi) is its point whose tangent has turned by
@@ -507,7 +507,7 @@ def as_complex(p):
 
 
 class LacSegment:
-    """The LAC segment of SPEC section 3 for caller points (Pa, Pb, Pc) and alpha, as in
+    """The LAC segment of docs/math.md §3 for caller points (Pa, Pb, Pc) and alpha, as in
     segment_mpmath.solve_segment (same Lambda and similarity), with points by turning.
 
     Standard-form piece theta in [t_start, t_end]; the caller's first point is its start
@@ -666,7 +666,7 @@ def golden_max(f, a, b, tol):
 
 def correspondence_errors(lac, pieces, n=GL_NODES):
     """rms and max of d(phi) = |B(phi) - L(phi)| over [0, Theta], divided by the LAC arc
-    length (SPEC section 5 with the continuous tangent-angle correspondence).
+    length (docs/math.md §5 with the continuous tangent-angle correspondence).
 
     pieces: RationalCubic objects in order from the LAC's first point."""
     chain = Chain(pieces, lac.sigma)

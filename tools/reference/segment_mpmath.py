@@ -1,4 +1,4 @@
-"""SPEC section 3 in mpmath: an LAC segment from control points Pa, Pb, Pc and alpha.
+"""docs/math.md §3 in mpmath: an LAC segment from control points Pa, Pb, Pc and alpha.
 
 1. theta_d = |turning angle| from Pb - Pa to Pc - Pb; sigma = +1 for a left turn, -1 right.
 2. If |Pa Pb| > |Pb Pc| the ends are swapped: A = Pc, C = Pa (else A = Pa, C = Pc).

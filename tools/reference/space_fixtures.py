@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Write the log-aesthetic space-curve fixtures (SPEC section 6, seed 003; maths: space_mpmath.py).
+"""Write the log-aesthetic space-curve fixtures (docs/math.md §6, seed 003; maths: space_mpmath.py).
 
     .venv/bin/python tools/reference/space_fixtures.py [--only family|classification] [-j JOBS]
 

@@ -1,4 +1,4 @@
-"""Log-aesthetic space curves (SPEC section 6, seed 003) in mpmath: the 40-digit reference.
+"""Log-aesthetic space curves (docs/math.md §6, seed 003) in mpmath: the 40-digit reference.
 
 The family
 ----------

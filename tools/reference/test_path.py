@@ -1,6 +1,6 @@
 """`lac path --g2` and `lac spline` checked independently: every reported segment is solved
 again from its control triangle and alpha by the 30-digit mpmath reference
-(segment_mpmath.py, SPEC §3), and at every joint the reference's curvatures on the two sides
+(segment_mpmath.py, docs/math.md §3), and at every joint the reference's curvatures on the two sides
 must agree to 1e-9 (relative), as must the command's own report.
 
     .venv/bin/python -m pytest tools/reference/test_path.py -q      (from the repo root)
@@ -87,7 +87,7 @@ INFLECTION_CASES = [
 def inflection_segment(tri, alpha, at_start):
     """The reference for a segment with one end at (or a hair before) its inflection: from
     the inflection point a log-aesthetic curve of slope alpha < 0 has κ ∝ d^(1/|α|) (d the
-    arc length from it), so up to similarity θ(d) = d^p with p = 1 + 1/|α| (SPEC §2,
+    arc length from it), so up to similarity θ(d) = d^p with p = 1 + 1/|α| (docs/math.md §2,
     ρ^α linear in s and zero at the inflection). The piece [d0, D] turning by the triangle's
     angle whose tangent triangle has the reported leg ratio is found by bisection in
     w = −log10(d0 / D); returns (κ at the inflection end, κ at the other end), signed, in

@@ -1,4 +1,4 @@
-"""Quasi-aesthetic curves (SPEC section 5): the reference itself, then `lac quasi` and
+"""Quasi-aesthetic curves (docs/math.md §5): the reference itself, then `lac quasi` and
 `lac monotone` against it.
 
     LAC_BIN=target/release/lac .venv/bin/python -m pytest tools/reference/test_quasi.py -q

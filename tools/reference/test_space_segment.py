@@ -1,4 +1,4 @@
-"""`lac space` (SPEC section 6, seed 003 section 4) against the space-curve reference.
+"""`lac space` (docs/math.md §6, seed 003 section 4) against the space-curve reference.
 
     LAC_BIN=target/release/lac .venv/bin/python -m pytest tools/reference/test_space_segment.py -q
 
@@ -112,7 +112,7 @@ def mat_vec(m, v):
 
 
 def end_angles(chord, t0, t1, ctx=mp):
-    """(theta0, theta1, theta2) as in SPEC section 6: theta2 is the dihedral angle about the
+    """(theta0, theta1, theta2) as in docs/math.md §6: theta2 is the dihedral angle about the
     chord from the half-plane of t0 to the half-plane of -t1."""
     c = unit(chord, ctx)
     u0 = sub(t0, scaled(c, dot(t0, c)))

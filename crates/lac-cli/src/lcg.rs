@@ -1,6 +1,6 @@
 //! `lac lcg`: the curvature plot and the logarithmic curvature graph (LCG) of Bézier pieces
 //! or of a log-aesthetic curve, with the slope α of the line fitted to the graph (seed 001
-//! §6, SPEC §1), or the curvature and torsion graphs of a space curve with their slopes α and
+//! §6, docs/math.md §1), or the curvature and torsion graphs of a space curve with their slopes α and
 //! β (seed 003), as JSON, CSV, SVG or PNG.
 //!
 //! The input is one JSON document ([`LcgInput`]): `lac quasi` output, or one result of `lac

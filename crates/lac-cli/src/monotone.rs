@@ -1,5 +1,5 @@
 //! `lac monotone`: is the curvature of a (rational) cubic Bézier curve monotone? The
-//! library's decision with a proof (seed 001 §5, SPEC §5), for one curve given by
+//! library's decision with a proof (seed 001 §5, docs/math.md §5), for one curve given by
 //! `--points` and `--weights`, for every piece of a JSON document (what `lac quasi` prints,
 //! so `lac quasi … | lac monotone` works), or for each line of a `--batch`.
 

@@ -1,5 +1,5 @@
 //! `lac quasi`: a segment or compound curve replaced by rational (or plain) cubic Bézier
-//! pieces (seed 001, SPEC §5), as JSON, CSV, or drawn over the curve; or many with
+//! pieces (seed 001, docs/math.md §5), as JSON, CSV, or drawn over the curve; or many with
 //! `--batch`.
 
 use lac_io::json::{

@@ -1,4 +1,4 @@
-//! `lac space`: a log-aesthetic space curve segment (seed 003, SPEC §6) from four 3-D control
+//! `lac space`: a log-aesthetic space curve segment (seed 003, docs/math.md §6) from four 3-D control
 //! points, α, β, Ω and the torsion type, as JSON, CSV, SVG, OBJ or PLY; or many with
 //! `--batch`.
 

@@ -1,6 +1,6 @@
 //! Curvature analysis of any planar curve given as (rational) cubic Bézier pieces, or of a
 //! log-aesthetic curve: the curvature plot, the logarithmic curvature graph (LCG) and a
-//! least-squares estimate of its slope α (Harada's measurement; seed 001 §6, SPEC §1).
+//! least-squares estimate of its slope α (Harada's measurement; seed 001 §6, docs/math.md §1).
 //!
 //! The LCG of a curve plots x = ln ρ against y = ln(ρ |ds/dρ|). With κ = ±1/ρ,
 //! dρ/ds = −(1/κ²) dκ/ds·sign κ (seed 001 eq. 6.1), so y = ln(|κ| / |dκ/ds|): no numerical

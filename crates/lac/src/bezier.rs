@@ -47,7 +47,7 @@ use crate::numeric::{find_root, length, RootFailure};
 /// [`ParamCurveDeriv`], [`ParamCurveArclen`] and [`ParamCurveCurvature`]. Every method that
 /// takes a parameter clamps it to [0, 1] (outside, w(t) may vanish and the curve has a
 /// pole), and a NaN parameter gives NaN. Beware of the sign of curvature:
-/// [`signed_curvature`](Self::signed_curvature) is positive for a left turn (SPEC §1), as
+/// [`signed_curvature`](Self::signed_curvature) is positive for a left turn (docs/math.md §1), as
 /// everywhere in this crate, while [`ParamCurveCurvature::curvature`] follows kurbo and is
 /// positive for a right turn. A curve made by [`new`](Self::new) has finite coordinates and
 /// positive weights, and so has every subsegment of it, but for one at a NaN parameter, which
@@ -160,7 +160,7 @@ impl RationalCubic {
         Vec2::new(v[0], v[1]) / (w * w)
     }
 
-    /// Signed curvature κ at `t`, positive where the curve turns left (SPEC §1; kurbo's
+    /// Signed curvature κ at `t`, positive where the curve turns left (docs/math.md §1; kurbo's
     /// [`ParamCurveCurvature::curvature`] is its negative).
     pub fn signed_curvature(&self, t: f64) -> f64 {
         let (j, size) = self.unit_jet(t.clamp(0.0, 1.0));

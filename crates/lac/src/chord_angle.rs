@@ -1,4 +1,4 @@
-//! The one-dimensional search of SPEC §3 step 4 (seed 000 §4.1, Appendix A) and §4
+//! The one-dimensional search of docs/math.md §3 step 4 (seed 000 §4.1, Appendix A) and §4
 //! (seed 004), for one piece or two pieces joined with G3 continuity.
 //!
 //! Both pieces share the reference point of their standard forms, at the joint: piece 0 is
@@ -509,7 +509,7 @@ pub(crate) struct Solution {
 }
 
 /// The standard-form arrangement of a single piece: ρ = 1 at the end that stays regular as
-/// Λ grows (SPEC §3 step 4); the turning on either side of the reference point, and which
+/// Λ grows (docs/math.md §3 step 4); the turning on either side of the reference point, and which
 /// of the two pieces is the one.
 fn single(alpha: f64, theta_d: f64) -> ([f64; 2], usize) {
     if alpha > 1.0 {

@@ -1,4 +1,4 @@
-//! Compound-rhythm curves: two log-aesthetic pieces joined with G3 continuity (SPEC §4,
+//! Compound-rhythm curves: two log-aesthetic pieces joined with G3 continuity (docs/math.md §4,
 //! seeds 004 and 002).
 
 use std::ops::Range;
@@ -181,7 +181,7 @@ impl CompoundCurve {
     }
 
     /// Solve in the joint-reference standard form, running from the end with the smaller
-    /// radius of curvature (SPEC §4: if θe < Θ/2 the ends swap, α0 ↔ α1, θ0 ↔ θ1), and map
+    /// radius of curvature (docs/math.md §4: if θe < Θ/2 the ends swap, α0 ↔ α1, θ0 ↔ θ1), and map
     /// the pieces back in the caller's order.
     fn assemble(input: Input) -> Result<Self> {
         let total = input.theta[0] + input.theta[1];

@@ -22,7 +22,7 @@ use crate::tolerance::Tolerance;
 /// A planar log-aesthetic curve: one or more log-aesthetic [`Segment`]s joined end to end
 /// (at least G1: each piece starts where the previous one ends, with its tangent).
 ///
-/// Signed curvature is positive where the curve turns left (SPEC §1); `theta` is the tangent
+/// Signed curvature is positive where the curve turns left (docs/math.md §1); `theta` is the tangent
 /// direction in radians, continuous from the first point.
 ///
 /// The method names avoid kurbo's (`eval`, `start`, `end`, `curvature`, `arclen`), which

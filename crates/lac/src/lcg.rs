@@ -2,7 +2,7 @@
 
 /// The logarithmic curvature graph of a log-aesthetic piece, in the caller's units: the
 /// straight line `log(ρ ds/dρ) = α log ρ + intercept` over `log ρ ∈ log_rho` (natural
-/// logarithms; seed 000 eq. 1, SPEC §1).
+/// logarithms; seed 000 eq. 1, docs/math.md §1).
 ///
 /// For a piece of the standard form scaled by σ, `intercept = (1 − α) ln σ − ln Λ`.
 #[derive(Clone, Copy, Debug, PartialEq)]

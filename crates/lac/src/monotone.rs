@@ -1,5 +1,5 @@
 //! Is the curvature of a rational cubic monotone? A decision with a proof (seed 001 §5,
-//! with the verdict the right way round: SPEC §5).
+//! with the verdict the right way round: docs/math.md §5).
 //!
 //! dκ/ds has the sign of the polynomial N(t) of `bezier.rs` (degree 12). We form N in the
 //! Bernstein basis from products of the Bernstein forms of P, P′, P″, P‴; the products come
@@ -25,7 +25,7 @@ use crate::bezier::{numerator, power_basis, power_jet, Hom, RationalCubic};
 use crate::error::{finite, Error, Result};
 use crate::numeric::{find_root, RootFailure};
 
-/// How the signed curvature κ of a curve varies with its parameter (SPEC §5).
+/// How the signed curvature κ of a curve varies with its parameter (docs/math.md §5).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Monotonicity {
     /// dκ/ds ≥ 0 everywhere (and not identically 0).

@@ -26,7 +26,7 @@ pub(crate) fn length(v: kurbo::Vec2) -> f64 {
 
 /// `expm1(y) / y`, continued by 1 at y = 0.
 ///
-/// Every removable singularity of SPEC §2 (α = 0, α = 1, Λ = 0) is a quotient of this form;
+/// Every removable singularity of docs/math.md §2 (α = 0, α = 1, Λ = 0) is a quotient of this form;
 /// `expm1` keeps full relative accuracy for tiny `y`, so the quotient does too.
 #[inline]
 pub(crate) fn expm1_ratio(y: f64) -> f64 {

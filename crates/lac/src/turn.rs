@@ -1,7 +1,7 @@
 //! The turning direction of a planar curve.
 
 /// Which way a planar curve turns: its signed curvature is positive for [`Turn::Left`]
-/// (counter-clockwise) and negative for [`Turn::Right`] (SPEC §1).
+/// (counter-clockwise) and negative for [`Turn::Right`] (docs/math.md §1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[cfg_attr(
     feature = "serde",

@@ -3,7 +3,7 @@
 //! exists").
 //!
 //! For α < 0 the curvature of a log-aesthetic curve reaches zero (ρ → ∞) at a finite arc
-//! length (SPEC §2, the inflection end). A segment that starts (or ends) there, with its two
+//! length (docs/math.md §2, the inflection end). A segment that starts (or ends) there, with its two
 //! tangents fixed by the polygon's legs, is fixed up to similarity by α and its turning
 //! angle: the ratio of its two legs is then fixed. A path solves for that ratio once per
 //! segment and keeps it through Newton's iterations.

@@ -2,7 +2,7 @@
 //! continued through its point of zero curvature, drawn as two segments that meet there.
 //!
 //! For α < 0 every log-aesthetic curve is, up to similarity, a piece of one curve: with arc
-//! length u from its inflection, κ(u) = sign(u)·|u|^p, p = −1/α (SPEC §2, the inflection end
+//! length u from its inflection, κ(u) = sign(u)·|u|^p, p = −1/α (docs/math.md §2, the inflection end
 //! at finite length; α = −1 is the clothoid, κ = u). Its tangent angle, measured from the
 //! inflection tangent, is t(u) = |u|^(p+1)/(p+1) on both sides, so the piece from u = −U₁ to
 //! U₂ starts at angle θ₁ = t(U₁), turns back to 0 at the inflection and on to θ₂ = t(U₂):

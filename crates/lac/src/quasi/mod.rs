@@ -1,5 +1,5 @@
 //! Quasi-aesthetic curves: rational (or plain) cubic Bézier replacements of a
-//! log-aesthetic segment or compound curve (seed 001 §4, SPEC §5), one piece as in the
+//! log-aesthetic segment or compound curve (seed 001 §4, docs/math.md §5), one piece as in the
 //! seed or as many as a tolerance needs.
 //!
 //! * `fit.rs`: one piece over a span of the curve, the seed's least-squares rational cubic;

@@ -5,7 +5,7 @@
 //! [0, 1] (kurbo's curves extrapolate; a log-aesthetic segment may end at a singular point,
 //! so it does not), and a NaN t gives NaN. Curvature follows kurbo's sign
 //! (`d″ × d′ / |d′|³`, negative for a left turn); [`Curve::curvature_at_s`](crate::Curve)
-//! is the SPEC's signed curvature, positive for a left turn.
+//! is docs/math.md's signed curvature, positive for a left turn.
 
 use std::ops::Range;
 

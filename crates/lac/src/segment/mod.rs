@@ -1,4 +1,4 @@
-//! A log-aesthetic segment from three control points and α (SPEC §3, seed 000 §4).
+//! A log-aesthetic segment from three control points and α (docs/math.md §3, seed 000 §4).
 
 use ::kurbo::{Point, Vec2};
 
@@ -17,7 +17,7 @@ pub use kurbo::SegmentDerivative;
 pub(crate) use kurbo::{central_difference, Travel};
 pub use sampling::{Sample, MAX_ADAPTIVE_SAMPLES};
 
-/// The angles of a three-point control polygon (SPEC §3 steps 1 and 3).
+/// The angles of a three-point control polygon (docs/math.md §3 steps 1 and 3).
 pub(crate) struct Triangle {
     /// Turning angle θd ∈ (0, π).
     pub(crate) turning: f64,
@@ -144,7 +144,7 @@ pub(crate) struct Solved {
     points: [Point; 3],
     alpha: f64,
     tri: Triangle,
-    /// The standard-form piece, solved from the shorter leg (SPEC §3 step 2: there the
+    /// The standard-form piece, solved from the shorter leg (docs/math.md §3 step 2: there the
     /// chord angle is at least θd/2), with its μ; `reversed` when that is the last leg, so
     /// the piece runs from P2 to P0.
     solution: Solution,

@@ -1,4 +1,4 @@
-//! The log-aesthetic space curve family in standard form (seed 003 §3, SPEC §6).
+//! The log-aesthetic space curve family in standard form (seed 003 §3, docs/math.md §6).
 
 use super::taylor::{Accuracy, Expansion, State};
 use super::Frame;

@@ -1,4 +1,4 @@
-//! Log-aesthetic space curves (seed 003, SPEC §6): the family in standard form, the
+//! Log-aesthetic space curves (seed 003, docs/math.md §6): the family in standard form, the
 //! classification of its ends, and segments from four control points.
 
 mod classify;

@@ -1,4 +1,4 @@
-//! A log-aesthetic space curve segment from four control points (seed 003 §4, SPEC §6).
+//! A log-aesthetic space curve segment from four control points (seed 003 §4, docs/math.md §6).
 
 use kurbo::Point;
 

@@ -1,6 +1,6 @@
 //! Position integrals of the standard form: P(b) − P(a) = ∫ₐᵇ ρ(ψ) e^{iψ} dψ.
 //!
-//! Two methods, chosen by where the curve's singular point lies (SPEC §2 "Numerics"):
+//! Two methods, chosen by where the curve's singular point lies (docs/math.md §2 "Numerics"):
 //!
 //! * For α ≠ 1 and Λ > 0, ρ(ψ) = (1 + (α−1)Λψ)^γ with γ = 1/(α−1) has a branch point at
 //!   ψₛ = −1/((α−1)Λ): ρ = ∞ (the inflection, α < 1) or ρ = 0 (α > 1). Writing σ = |ψ − ψₛ|,

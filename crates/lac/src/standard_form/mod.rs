@@ -1,4 +1,4 @@
-//! The planar log-aesthetic family in standard form (SPEC §2, seed 000 §3).
+//! The planar log-aesthetic family in standard form (docs/math.md §2, seed 000 §3).
 
 use kurbo::{Point, Vec2};
 
@@ -8,7 +8,7 @@ pub(crate) mod integrate;
 use crate::numeric::{expm1_ratio, ln1p_ratio, ln_1p_product, minus_one};
 use integrate::integrate;
 
-/// A planar log-aesthetic curve in standard form II (seed 000 §3.3, SPEC §2).
+/// A planar log-aesthetic curve in standard form II (seed 000 §3.3, docs/math.md §2).
 ///
 /// The reference point (s = θ = 0) is at the origin with tangent +x and radius of
 /// curvature ρ = 1; the curve turns left and ρ grows with arc length s:
@@ -87,7 +87,7 @@ impl StandardForm {
         Self::new(alpha, 1.0)
     }
 
-    /// The interval of arc length s over which 0 < ρ < ∞ (SPEC §2 table; may be infinite).
+    /// The interval of arc length s over which 0 < ρ < ∞ (docs/math.md §2 table; may be infinite).
     pub fn s_bounds(&self) -> (f64, f64) {
         let (a, l) = (self.alpha, self.lambda);
         if l == 0.0 || a == 0.0 {
@@ -99,7 +99,7 @@ impl StandardForm {
         }
     }
 
-    /// The interval of tangent angle θ over which 0 < ρ < ∞ (SPEC §2 table; may be infinite).
+    /// The interval of tangent angle θ over which 0 < ρ < ∞ (docs/math.md §2 table; may be infinite).
     pub fn theta_bounds(&self) -> (f64, f64) {
         let (a, l) = (self.alpha, self.lambda);
         if l == 0.0 || a == 1.0 {

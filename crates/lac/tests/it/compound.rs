@@ -1,4 +1,4 @@
-//! Claims about compound-rhythm curves (SPEC §4, seeds 004 and 002).
+//! Claims about compound-rhythm curves (docs/math.md §4, seeds 004 and 002).
 
 use kurbo::{Point, Vec2};
 use lac::Curve;
@@ -98,7 +98,7 @@ fn the_seed_002_joint_conditions_hold() {
     }
 }
 
-/// α0 = α1 is a single segment, wherever the joint is (SPEC §4).
+/// α0 = α1 is a single segment, wherever the joint is (docs/math.md §4).
 #[test]
 fn equal_slopes_give_the_single_segment() {
     for alpha in [-1.0, 0.0, 0.5, 1.0, 2.0] {

@@ -61,7 +61,7 @@ where
             (d3.eval(t).to_vec2() - fd3).hypot() < 1e-6 * (fd3.hypot() + len),
             "{name} t={t}"
         );
-        // kurbo's sign: a″ × a′ / |a′|³, the opposite of the SPEC's signed curvature.
+        // kurbo's sign: a″ × a′ / |a′|³, the opposite of docs/math.md's signed curvature.
         let k = curve.curvature(t);
         let ours = curve.curvature_at_s(t * len).unwrap();
         assert!(

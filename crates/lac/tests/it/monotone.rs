@@ -1,5 +1,5 @@
 //! "A monotone verdict is never contradicted by sampling": the curvature-monotonicity test
-//! of rational cubics (SPEC §5) against dense sampling of dκ/ds on random curves.
+//! of rational cubics (docs/math.md §5) against dense sampling of dκ/ds on random curves.
 
 use kurbo::Point;
 use lac::{Monotonicity, RationalCubic};

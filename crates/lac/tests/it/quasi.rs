@@ -1,4 +1,4 @@
-//! Claims of the quasi-aesthetic approximation (SPEC §5, seed 001), checked by an
+//! Claims of the quasi-aesthetic approximation (docs/math.md §5, seed 001), checked by an
 //! evaluation independent of the fitter: each Bézier piece is sampled densely in t, its
 //! tangent direction gives the log-aesthetic point with the same tangent (through
 //! `Segment::point_at_theta`), and the distance between the two is the deviation d(φ).

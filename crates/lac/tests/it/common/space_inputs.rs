@@ -50,7 +50,7 @@ pub(crate) struct Case {
 }
 
 /// `(θ0, θ1, θ2)` of the standard-form piece from 0 to `s`: the angles of the chord with the
-/// two end tangents and the dihedral about it (SPEC §6), written out here.
+/// two end tangents and the dihedral about it (docs/math.md §6), written out here.
 fn angles(form: &SpaceForm, s: f64) -> Option<(f64, f64, f64)> {
     let f = form.frame_at(s).ok()?;
     let c = f.point.normalize();
@@ -264,7 +264,7 @@ pub(crate) fn generate(seed: u64, n: usize) -> Vec<Case> {
 
 use lac::SpaceSegment;
 
-/// κ(s) and τ(s) of the standard form straight from SPEC §6 (ρ and μ, then reciprocals).
+/// κ(s) and τ(s) of the standard form straight from docs/math.md §6 (ρ and μ, then reciprocals).
 pub(crate) fn kappa_tau(f: &SpaceForm, s: f64) -> (f64, f64) {
     let (alpha, beta, lambda, omega, nu) = (f.alpha(), f.beta(), f.lambda(), f.omega(), f.nu());
     let rho = if alpha == 0.0 {

@@ -4,6 +4,7 @@
 use std::sync::Arc;
 
 use lac::Curve;
+use lac::SegmentChain;
 use lac_io::json::{parse, to_line, write_line, CompoundInput, CompoundReport, ErrorBody};
 
 use crate::batch;

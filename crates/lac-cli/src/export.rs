@@ -5,6 +5,7 @@
 //! ([`lac_io::export`]).
 
 use kurbo::Point;
+use lac::Closure;
 use lac::{Spline, Tolerance};
 use lac_io::export::{export, ExportCurve, Format, Meta, DEFAULT_TOLERANCE};
 use lac_io::json::{
@@ -133,7 +134,16 @@ pub(crate) fn run(args: &ExportArgs, limits: Limits) -> Result<(), ErrorBody> {
             )?
         }
         Input::Spline(s) => {
-            let spline = Spline::g2(&s.points, s.alpha, s.closed, s.ends)?;
+            let spline = Spline::from_points(
+                &s.points,
+                s.alpha,
+                if s.closed {
+                    Closure::Closed
+                } else {
+                    Closure::Open
+                },
+                s.ends,
+            )?;
             export(
                 &ExportCurve::Spline(&spline),
                 format,

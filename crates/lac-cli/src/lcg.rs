@@ -7,6 +7,7 @@
 //! segment`, `lac compound` or `lac space`, which is solved again from its points and
 //! parameters.
 
+use lac::Curve;
 use lac_io::json::{to_line, ErrorBody, LcgInput, LcgReport, Report, SpaceLcgReport};
 
 use crate::cli::{LcgArgs, LcgFormat};
@@ -64,7 +65,7 @@ pub(crate) fn run(args: &LcgArgs, limits: Limits) -> Result<(), ErrorBody> {
             limits.samples(n * plots, "--samples (each piece's own, in all)")?;
             let report = LcgReport::of_curve(curve, n)?;
             let title = svg::lcg::lac_title(curve.pieces());
-            Analysis::Plane(report, curve.joints(), title)
+            Analysis::Plane(report, curve.joint_arc_lengths(), title)
         }
         LcgInput::Space(input) => {
             let segment = input.solve()?;

@@ -1,6 +1,7 @@
 //! `lac path`: a log-aesthetic path from a control polygon (`--polygon`, `--alpha` or
 //! `--alphas`, `--closed`, `--g2` or `--fractions`).
 
+use lac::Curve;
 use lac_io::json::{to_line, ErrorBody, PathInput, PathReport, Xy};
 
 use crate::cli::{CurveFormat, PathArgs};

@@ -2,6 +2,7 @@
 //! pieces (seed 001, docs/math.md §5), as JSON, CSV, or drawn over the curve; or many with
 //! `--batch`.
 
+use lac::Curve;
 use lac_io::json::{
     parse, to_line, CurveInput, ErrorBody, QuasiInput, QuasiReport, Report, SegmentInput,
 };

@@ -4,6 +4,7 @@
 
 use std::sync::Arc;
 
+use lac::SpaceCurve;
 use lac::{SpaceSegment, Vec3};
 use lac_io::json::{parse, to_line, write_line, ErrorBody, SpaceInput, SpaceReport, PLANAR_NOTE};
 
@@ -56,8 +57,14 @@ pub(crate) fn run(args: &SpaceArgs, limits: Limits) -> Result<(), ErrorBody> {
         SpaceFormat::Json => to_line(&SpaceReport::new(&segment, samples, frames)?) + "\n",
         SpaceFormat::Csv => SpaceReport::new(&segment, samples, frames)?.to_csv(),
         SpaceFormat::Svg => svg::space::render(&segment)?,
-        SpaceFormat::Obj => mesh::obj(&segment.sample(samples)?, &header(&segment, samples)),
-        SpaceFormat::Ply => mesh::ply(&segment.sample(samples)?, &header(&segment, samples)),
+        SpaceFormat::Obj => mesh::obj(
+            &segment.sample_by_arc_length(samples)?,
+            &header(&segment, samples),
+        ),
+        SpaceFormat::Ply => mesh::ply(
+            &segment.sample_by_arc_length(samples)?,
+            &header(&segment, samples),
+        ),
     };
     write_document(args.file.as_deref(), document.as_bytes())
 }

@@ -1,6 +1,7 @@
 //! `lac spline`: a G2 spline of log-aesthetic segments through points (`--through`,
 //! `--alpha`, `--closed`, `--start-angle`/`--end-angle`).
 
+use lac::{Closure, SegmentChain};
 use lac::{Curve, Spline};
 use lac_io::json::{to_line, ErrorBody, SplineReport};
 
@@ -18,7 +19,16 @@ pub(crate) fn run(args: &SplineArgs, limits: Limits) -> Result<(), ErrorBody> {
     let samples = limits.samples(output.samples as usize, "--samples")?;
     let points = kurbo_points(&parse_polygon(&args.through, 3, lac::MAX_POLYGON_POINTS)?);
     let ends = args.start_angle.zip(args.end_angle).map(|(a, b)| [a, b]);
-    let spline = Spline::g2(&points, args.alpha, args.closed, ends)?;
+    let spline = Spline::from_points(
+        &points,
+        args.alpha,
+        if args.closed {
+            Closure::Closed
+        } else {
+            Closure::Open
+        },
+        ends,
+    )?;
     let document = match output.format {
         CurveFormat::Json => to_line(&SplineReport::new(&spline, args.alpha, samples)?) + "\n",
         CurveFormat::Csv => SplineReport::new(&spline, args.alpha, samples)?.to_csv(),

@@ -7,6 +7,7 @@ use lac::{
     Monotonicity, Path, QuasiCurve, RationalCubic, Sample, Segment, SpaceSegment, SpaceShape,
     Spline, Tolerance, TorsionType, Vec3, INFLECTION_LIMIT,
 };
+use lac::{Closure, SegmentChain, SpaceCurve, ToBezier};
 
 use lac_io::export::json::{ExportDocument, NurbsRow};
 use lac_io::export::{self, ExportCurve, Exported, Format, Meta};
@@ -170,7 +171,16 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
             ends,
         } => {
             let pts: Vec<Point> = points.iter().map(|&p| pt(p)).collect();
-            let Ok(spline) = Spline::g2(&pts, *alpha, *closed, *ends) else {
+            let Ok(spline) = Spline::from_points(
+                &pts,
+                *alpha,
+                if *closed {
+                    Closure::Closed
+                } else {
+                    Closure::Open
+                },
+                *ends,
+            ) else {
                 return Ok(false);
             };
             check_spline(&spline)?;
@@ -248,8 +258,8 @@ impl Built {
             Built::Path(p) => Ok((flat(p.start_point()), flat(p.end_point()), p.arc_length())),
             Built::Space(s) => {
                 let len = s.arc_length();
-                let a = s.frame_at(0.0).map_err(|e| e.to_string())?.point;
-                let b = s.frame_at(len).map_err(|e| e.to_string())?.point;
+                let a = s.frame_at_s(0.0).map_err(|e| e.to_string())?.point;
+                let b = s.frame_at_s(len).map_err(|e| e.to_string())?.point;
                 Ok((a.to_array(), b.to_array(), len))
             }
         }
@@ -285,9 +295,9 @@ fn build(input: &Input) -> Option<Built> {
         } => {
             let pts: Vec<Point> = points.iter().map(|&p| pt(p)).collect();
             let polygon = if *closed {
-                ControlPolygon::closed(&pts)
+                ControlPolygon::from_points(&pts, Closure::Closed)
             } else {
-                ControlPolygon::open(&pts)
+                ControlPolygon::from_points(&pts, Closure::Open)
             }
             .ok()?;
             let alphas = match alpha.as_slice() {
@@ -295,9 +305,9 @@ fn build(input: &Input) -> Option<Built> {
                 many => Alphas::PerSegment(many.to_vec()),
             };
             if *g2 {
-                Path::g2(&polygon, &alphas, None)
+                Path::from_polygon_g2(&polygon, &alphas)
             } else {
-                Path::g1(&polygon, &alphas, None)
+                Path::from_polygon_g1(&polygon, &alphas, None)
             }
             .ok()
             .map(Built::Path)
@@ -493,7 +503,11 @@ fn check_curve(
     let len = curve.arc_length();
     finite(
         "arc length and end curvatures",
-        &[len, curve.curvature_start(), curve.curvature_end()],
+        &[
+            len,
+            curve.signed_curvature_start(),
+            curve.signed_curvature_end(),
+        ],
     )?;
     let (start, end) = (first_leg[0], last_leg[1]);
     let chord = dist(end, start);
@@ -692,12 +706,16 @@ fn check_path(path: &Path, closed: bool, g2: bool) -> Result<(), String> {
     let pairs = pieces.len() - usize::from(!closed);
     let kmax = pieces
         .iter()
-        .map(|p| p.curvature_start().abs().max(p.curvature_end().abs()))
+        .map(|p| {
+            p.signed_curvature_start()
+                .abs()
+                .max(p.signed_curvature_end().abs())
+        })
         .fold(0.0, f64::max);
     for i in 0..pairs {
         let (a, b) = (&pieces[i], &pieces[(i + 1) % pieces.len()]);
         meet(a, b, i, tol, size)?;
-        let (ka, kb) = (a.curvature_end(), b.curvature_start());
+        let (ka, kb) = (a.signed_curvature_end(), b.signed_curvature_start());
         if g2 && (ka - kb).abs() > bounds::JOINT_CURVATURE * kmax {
             return Err(format!(
                 "curvature jumps after segment {i}: {ka:e} to {kb:e}"
@@ -727,7 +745,11 @@ fn check_spline(spline: &Spline) -> Result<(), String> {
     let n = pieces.len();
     let kmax = pieces
         .iter()
-        .map(|p| p.curvature_start().abs().max(p.curvature_end().abs()))
+        .map(|p| {
+            p.signed_curvature_start()
+                .abs()
+                .max(p.signed_curvature_end().abs())
+        })
         .fold(0.0, f64::max);
     for k in 0..n {
         let i = spans[k];
@@ -745,7 +767,7 @@ fn check_spline(spline: &Spline) -> Result<(), String> {
     for k in 0..pairs {
         let (a, b) = (&pieces[k], &pieces[(k + 1) % n]);
         meet(a, b, k, tol, size)?;
-        let (ka, kb) = (a.curvature_end(), b.curvature_start());
+        let (ka, kb) = (a.signed_curvature_end(), b.signed_curvature_start());
         if spans[k] == spans[(k + 1) % n] {
             if !(ka.abs().max(kb.abs()) <= INFLECTION_LIMIT * kmax && ka * kb <= 0.0) {
                 return Err(format!(
@@ -779,8 +801,8 @@ fn check_joints(curve: &CompoundCurve) -> Result<(), String> {
     if dist(pa, pb) > 1e-12 * scale + rounding(&[pa]) {
         return Err(format!("pieces {:e} apart at the joint", dist(pa, pb)));
     }
-    let ka = a.curvature_end();
-    let kb = b.curvature_start();
+    let ka = a.signed_curvature_end();
+    let kb = b.signed_curvature_start();
     if (ka - kb).abs() > bounds::JOINT_CURVATURE * ka.abs().max(kb.abs()) {
         return Err(format!("curvature jumps at the joint: {ka:e} to {kb:e}"));
     }
@@ -868,7 +890,10 @@ fn check_quasi(
     }
     // Curvature at a join is computed from control points rounded in absolute coordinates:
     // its error grows with the coordinates' magnitude over the piece's size.
-    let kmax = seg.curvature_start().abs().max(seg.curvature_end().abs());
+    let kmax = seg
+        .signed_curvature_start()
+        .abs()
+        .max(seg.signed_curvature_end().abs());
     let magnitude = rounding(pts) / 64.0;
     for w in quasi.pieces.windows(2) {
         let (a, b) = (w[0].curve, w[1].curve);
@@ -896,7 +921,7 @@ fn check_quasi(
             quasi.max
         ));
     }
-    let (k0, k1) = (seg.curvature_start(), seg.curvature_end());
+    let (k0, k1) = (seg.signed_curvature_start(), seg.signed_curvature_end());
     let constant = (k1 - k0).abs() <= 1e-9 * k0.abs().max(k1.abs());
     for p in &quasi.pieces {
         let m = p.monotonicity;
@@ -995,7 +1020,7 @@ fn distance_to_segment(x: Point, p: Point, q: Point) -> f64 {
 /// first leg, ends at P3 along the last.
 fn check_space(seg: &SpaceSegment, pts: &[Vec3; 4]) -> Result<(), String> {
     let len = seg.arc_length();
-    let frames = seg.sample(33).map_err(|e| e.to_string())?;
+    let frames = seg.sample_by_arc_length(33).map_err(|e| e.to_string())?;
     let chord = (pts[3] - pts[0]).length();
     let magnitude = pts
         .iter()

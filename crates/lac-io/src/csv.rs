@@ -144,6 +144,7 @@ impl SpaceLcgReport {
 #[cfg(test)]
 mod tests {
     use crate::json::{QuasiInput, QuasiReport, SpaceInput, SpaceLcgReport, SpaceReport};
+    use lac::Curve;
 
     #[test]
     fn a_quasi_csv_has_a_row_per_piece_with_its_nineteen_cells() {

@@ -17,6 +17,7 @@ use lac::{
     LcgFit, LcgLine, Monotonicity, MonotonicityReport, Path, QuasiCurve, QuasiPiece, RationalCubic,
     Sample, Segment, SpaceSegment, SpaceShape, Tolerance, TorsionType, Vec3,
 };
+use lac::{Closure, SegmentChain, SpaceCurve, ToBezier};
 use serde::{Deserialize, Serialize};
 
 /// A planar point, `[x, y]`.
@@ -297,7 +298,7 @@ pub enum Solved {
 
 impl Solved {
     /// The curve, whatever its kind.
-    pub fn curve(&self) -> &dyn Curve {
+    pub fn curve(&self) -> &dyn SegmentChain {
         match self {
             Solved::Segment(s) => s,
             Solved::Compound(c) => c,
@@ -475,8 +476,8 @@ impl SegmentReport {
             alpha: segment.alpha(),
             lambda: segment.lambda(),
             arc_length: segment.arc_length(),
-            curvature_start: segment.curvature_start(),
-            curvature_end: segment.curvature_end(),
+            curvature_start: segment.signed_curvature_start(),
+            curvature_end: segment.signed_curvature_end(),
             turning_angle: segment.turning_angle(),
             points,
             // (In place: a sample and a row are the same size.)
@@ -919,9 +920,9 @@ impl CompoundReport {
             lambda: curve.lambda(),
             arc_length: curve.arc_length(),
             joint_s: curve.joint_s(),
-            curvature_start: curve.curvature_start(),
-            curvature_joint: curve.curvature_joint(),
-            curvature_end: curve.curvature_end(),
+            curvature_start: curve.signed_curvature_start(),
+            curvature_joint: curve.signed_curvature_joint(),
+            curvature_end: curve.signed_curvature_end(),
             turning_angle: curve.turning().abs(),
             joint: xy(curve.joint()),
             lcg: curve.lcg().map(|line| line.map(LcgRow::from)),
@@ -1629,7 +1630,7 @@ impl SpaceReport {
             arc_length: segment.arc_length(),
             planar: segment.is_planar(),
             samples: segment
-                .sample(n)?
+                .sample_by_arc_length(n)?
                 .iter()
                 .map(|f| SpaceSampleRow::new(f, frames))
                 .collect(),
@@ -1776,12 +1777,12 @@ impl LcgReport {
     /// with the line fitted to the whole graph and, for a curve of several pieces, each
     /// piece's line (fitted to `n` points of its own, so that a short piece is measured as
     /// well as a long one).
-    pub fn of_curve(curve: &dyn Curve, n: usize) -> Result<Self, ErrorBody> {
+    pub fn of_curve(curve: &dyn SegmentChain, n: usize) -> Result<Self, ErrorBody> {
         let mut report = LcgReport::new(&curve.curvature_plot(n)?);
         let pieces = curve.pieces();
         if pieces.len() > 1 {
             let ends: Vec<f64> = curve
-                .joints()
+                .joint_arc_lengths()
                 .into_iter()
                 .chain([curve.arc_length()])
                 .collect();
@@ -2243,9 +2244,9 @@ impl PathInput {
     pub fn solve(&self) -> Result<Path, ErrorBody> {
         let points: Vec<Point> = self.points.iter().map(|&p| point(p)).collect();
         let polygon = if self.closed {
-            ControlPolygon::closed(&points)?
+            ControlPolygon::from_points(&points, Closure::Closed)?
         } else {
-            ControlPolygon::open(&points)?
+            ControlPolygon::from_points(&points, Closure::Open)?
         };
         let alphas = match (self.alpha, &self.alphas) {
             (Some(a), None) => Alphas::One(a),
@@ -2257,14 +2258,18 @@ impl PathInput {
             }
         };
         if !self.g2 {
-            return Ok(Path::g1(&polygon, &alphas, self.fractions.as_deref())?);
+            return Ok(Path::from_polygon_g1(
+                &polygon,
+                &alphas,
+                self.fractions.as_deref(),
+            )?);
         }
         if self.fractions.is_some() {
             return Err(ErrorBody::invalid_input(
                 "fractions place the joints of a G1 path; a G2 path solves them: drop one",
             ));
         }
-        let outcome = Path::g2_or_nearest_g1(&polygon, &alphas, None)?;
+        let outcome = Path::from_polygon_g2_or_nearest_g1(&polygon, &alphas)?;
         match outcome.failure {
             None => Ok(outcome.path),
             Some(err) => {
@@ -2415,7 +2420,7 @@ impl SplineReport {
                     control_points: tri.map(xy),
                     lambda: seg.lambda(),
                     arc_length: seg.arc_length(),
-                    curvature: [seg.curvature_start(), seg.curvature_end()],
+                    curvature: [seg.signed_curvature_start(), seg.signed_curvature_end()],
                 })
                 .collect(),
             inflections: spline
@@ -2497,10 +2502,10 @@ impl PathReport {
                 lambda: seg.lambda(),
                 control_points: triangles[k].map(xy),
                 arc_length: seg.arc_length(),
-                curvature: [seg.curvature_start(), seg.curvature_end()],
+                curvature: [seg.signed_curvature_start(), seg.signed_curvature_end()],
             })
             .collect();
-        let s = path.joints_s();
+        let s = path.joints().iter().map(|j| j.s).collect::<Vec<_>>();
         let joints = path
             .joints()
             .iter()
@@ -2531,7 +2536,12 @@ impl PathReport {
             straight_pieces: path
                 .straight_pieces()
                 .iter()
-                .zip(path.straight_pieces_s())
+                .zip(
+                    path.straight_pieces()
+                        .iter()
+                        .map(|p| p.s)
+                        .collect::<Vec<_>>(),
+                )
                 .map(|(p, s)| PathStraightRow {
                     leg: p.leg,
                     fractions: p.fractions,

@@ -35,8 +35,8 @@ fn solve_one(points: [Point; 3], alpha: f64, samples: usize) -> Result<Solved, E
     Ok(Solved {
         lambda: segment.lambda(),
         arc_length: segment.arc_length(),
-        curvature_start: segment.curvature_start(),
-        curvature_end: segment.curvature_end(),
+        curvature_start: segment.signed_curvature_start(),
+        curvature_end: segment.signed_curvature_end(),
         turning: segment.turning(),
         samples,
     })

@@ -5,7 +5,7 @@
 use std::sync::Arc;
 
 use kurbo::Point;
-use lac::{CurvaturePoint, Curve as _, Sample, Tolerance, Turn};
+use lac::{CurvaturePoint, Curve as _, Sample, ToBezier, Tolerance, Turn};
 use numpy::{PyArray1, PyArray2};
 use pyo3::prelude::*;
 
@@ -15,7 +15,7 @@ use crate::quasi::PyQuasiCurve;
 
 /// A curve the bindings hold: a segment or a compound curve, shared with the threads that
 /// sample it while the GIL is released.
-pub(crate) type Shared = Arc<dyn lac::Curve + Send + Sync>;
+pub(crate) type Shared = Arc<dyn lac::SegmentChain + Send + Sync>;
 
 /// A planar log-aesthetic curve: one or more log-aesthetic pieces joined end to end
 /// (`Segment`, `CompoundCurve`). Arc length `s` runs from the first point; signed curvature
@@ -57,7 +57,7 @@ impl PyCurve {
     /// The arc lengths of the joints between consecutive pieces (empty for one piece).
     #[getter]
     fn joints<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        array1(py, self.inner.joints())
+        array1(py, self.inner.joint_arc_lengths())
     }
 
     /// The first point, shape (2,).
@@ -75,13 +75,13 @@ impl PyCurve {
     /// Signed curvature at the first point (positive for a left turn).
     #[getter]
     fn curvature_start(&self) -> f64 {
-        self.inner.curvature_start()
+        self.inner.signed_curvature_start()
     }
 
     /// Signed curvature at the last point.
     #[getter]
     fn curvature_end(&self) -> f64 {
-        self.inner.curvature_end()
+        self.inner.signed_curvature_end()
     }
 
     /// Total turning of the tangent from the first to the last point, radians, signed
@@ -118,8 +118,8 @@ impl PyCurve {
     }
 
     /// Signed curvature at arc length `s` (positive for a left turn).
-    fn curvature_at_s(&self, py: Python<'_>, s: f64) -> PyResult<f64> {
-        self.inner.curvature_at_s(s).or_raise(py)
+    fn signed_curvature_at_s(&self, py: Python<'_>, s: f64) -> PyResult<f64> {
+        self.inner.signed_curvature_at_s(s).or_raise(py)
     }
 
     /// `n ≥ 2` samples equally spaced in arc length, the first at the first point and the
@@ -319,8 +319,8 @@ impl PySegment {
     }
 
     /// Signed curvature at tangent angle `theta`.
-    fn curvature_at_theta(&self, py: Python<'_>, theta: f64) -> PyResult<f64> {
-        self.inner.curvature_at_theta(theta).or_raise(py)
+    fn signed_curvature_at_theta(&self, py: Python<'_>, theta: f64) -> PyResult<f64> {
+        self.inner.signed_curvature_at_theta(theta).or_raise(py)
     }
 
     /// `n ≥ 2` samples equally spaced in tangent angle.
@@ -460,7 +460,7 @@ impl PyCompoundCurve {
     /// Signed curvature at the joint (the same from both pieces).
     #[getter]
     fn curvature_joint(&self) -> f64 {
-        self.inner.curvature_joint()
+        self.inner.signed_curvature_joint()
     }
 
     /// The logarithmic curvature graph of each piece (None for a circular arc).

@@ -3,6 +3,7 @@
 //! through points (`lac::Spline`).
 
 use lac::{Alphas, Continuity, ControlPolygon};
+use lac::{Closure, Curve, SegmentChain};
 use numpy::{PyArray1, PyArray2, PyArray3};
 use pyo3::prelude::*;
 
@@ -39,9 +40,9 @@ impl PyPath {
     ) -> PyResult<Self> {
         let points = point_list(py, polygon, "polygon")?;
         let poly = if closed {
-            ControlPolygon::closed(&points)
+            ControlPolygon::from_points(&points, Closure::Closed)
         } else {
-            ControlPolygon::open(&points)
+            ControlPolygon::from_points(&points, Closure::Open)
         }
         .or_raise(py)?;
         let alphas = match alpha.extract::<f64>() {
@@ -57,9 +58,12 @@ impl PyPath {
                     "fractions place a G1 path's joints; use g2=False",
                 ));
             }
-            lac::Path::g2(&poly, &alphas, warm.as_deref())
+            match warm.as_deref() {
+                Some(near) => lac::Path::from_polygon_g2_near(&poly, &alphas, near),
+                None => lac::Path::from_polygon_g2(&poly, &alphas),
+            }
         } else {
-            lac::Path::g1(&poly, &alphas, fractions.as_deref())
+            lac::Path::from_polygon_g1(&poly, &alphas, fractions.as_deref())
         }
         .or_raise(py)?;
         Ok(PyPath(path))
@@ -168,7 +172,17 @@ impl PySpline {
             },
         };
         Ok(PySpline(
-            lac::Spline::g2(&points, alpha, closed, ends).or_raise(py)?,
+            lac::Spline::from_points(
+                &points,
+                alpha,
+                if closed {
+                    Closure::Closed
+                } else {
+                    Closure::Open
+                },
+                ends,
+            )
+            .or_raise(py)?,
         ))
     }
 
@@ -228,7 +242,6 @@ impl PySpline {
     /// Each piece's signed curvature at its start and end, shape (k, 2).
     #[getter]
     fn end_curvatures<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        use lac::Curve;
         end_curvatures(py, self.0.pieces())
     }
 
@@ -268,7 +281,7 @@ fn end_curvatures<'py>(
     use lac::Curve;
     let ends = segments
         .iter()
-        .map(|s| kurbo::Point::new(s.curvature_start(), s.curvature_end()));
+        .map(|s| kurbo::Point::new(s.signed_curvature_start(), s.signed_curvature_end()));
     points2(py, ends.collect::<Vec<_>>().into_iter())
 }
 

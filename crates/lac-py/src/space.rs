@@ -1,6 +1,7 @@
 //! Log-aesthetic space curves (seed 003 §4): a segment from four control points whose
 //! logarithmic curvature and torsion graphs are both straight.
 
+use lac::SpaceCurve;
 use lac::{Frame, GraphPoint, Vec3};
 use lac_io::json::SpaceInput;
 use numpy::{PyArray1, PyArray2};
@@ -103,7 +104,7 @@ impl PySpaceSegment {
 
     /// The Frenet frame, curvature and torsion at arc length `s`.
     fn frame_at(&self, py: Python<'_>, s: f64) -> PyResult<Frames> {
-        Ok(Frames(vec![self.0.frame_at(s).or_raise(py)?]))
+        Ok(Frames(vec![self.0.frame_at_s(s).or_raise(py)?]))
     }
 
     /// Frames at the given ascending arc lengths (a 1-D array within [0, arc_length]).
@@ -116,7 +117,7 @@ impl PySpaceSegment {
     fn sample(&self, py: Python<'_>, n: i64) -> PyResult<Frames> {
         let n = usize::try_from(n)
             .map_err(|_| invalid(py, format!("n must be at least 2, got {n}")))?;
-        Ok(Frames(self.0.sample(n).or_raise(py)?))
+        Ok(Frames(self.0.sample_by_arc_length(n).or_raise(py)?))
     }
 
     /// The logarithmic curvature graph at `n` points: (log ρ, log(ρ ds/dρ)).

@@ -3,7 +3,7 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use kurbo::{Point, Vec2};
-use lac::{Alphas, ControlPolygon, Path};
+use lac::{Alphas, Closure, ControlPolygon, Path};
 use std::hint::black_box;
 
 mod common;
@@ -24,14 +24,14 @@ fn set(alpha: f64) -> Vec<(ControlPolygon, ControlPolygon, Vec<f64>)> {
             p.push(last + Vec2::from_angle(dir) * len);
             dir += (20.0 + 40.0 * rng.next()).to_radians();
         }
-        let poly = ControlPolygon::open(&p).unwrap();
-        let Ok(path) = Path::g2(&poly, &Alphas::One(alpha), None) else {
+        let poly = ControlPolygon::from_points(&p, Closure::Open).unwrap();
+        let Ok(path) = Path::from_polygon_g2(&poly, &Alphas::One(alpha)) else {
             continue;
         };
         let k = 1 + (rng.next() * 10.0) as usize;
         p[k] += Vec2::new(0.1 * rng.next() - 0.05, 0.1 * rng.next() - 0.05);
-        let dragged = ControlPolygon::open(&p).unwrap();
-        if Path::g2(&dragged, &Alphas::One(alpha), None).is_ok() {
+        let dragged = ControlPolygon::from_points(&p, Closure::Open).unwrap();
+        if Path::from_polygon_g2(&dragged, &Alphas::One(alpha)).is_ok() {
             out.push((poly, dragged, path.joint_fractions()));
         }
     }
@@ -51,12 +51,12 @@ fn bench_path(c: &mut Criterion) {
                 b.iter(|| {
                     let (_, dragged, fractions) = &set[i % set.len()];
                     i += 1;
-                    let start = if warm {
-                        Some(fractions.as_slice())
+                    let alphas = Alphas::One(alpha);
+                    black_box(if warm {
+                        Path::from_polygon_g2_near(dragged, &alphas, fractions).unwrap()
                     } else {
-                        None
-                    };
-                    black_box(Path::g2(dragged, &Alphas::One(alpha), start).unwrap())
+                        Path::from_polygon_g2(dragged, &alphas).unwrap()
+                    })
                 })
             });
         }

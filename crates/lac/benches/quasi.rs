@@ -9,7 +9,7 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use kurbo::Point;
-use lac::Curve;
+use lac::ToBezier;
 use lac::Tolerance;
 use lac::{RationalCubic, Segment};
 use std::hint::black_box;

@@ -8,9 +8,11 @@
 //!
 //! * [`StandardForm`]: ρ(s), θ(s), s(θ), ρ(θ), bounds, points, and the
 //!   [`Classification`] of seed 000 Table 2;
-//! * [`Curve`]: what every planar curve offers, written once — evaluation by arc length,
-//!   sampling (equally, adaptively), the evolute, the curvature plot and the quasi-aesthetic
-//!   Bézier replacements — for any chain of log-aesthetic segments;
+//! * [`Curve`]: what a planar curve can do — its arc length and ends, its point, tangent
+//!   direction, signed curvature and dκ/ds at an arc length — with sampling (equally,
+//!   adaptively), the evolute, the curvature plot and the logarithmic curvature graph on top;
+//!   every planar curve type implements it, a chain of log-aesthetic segments through its
+//!   pieces ([`SegmentChain`]);
 //! * [`Segment`]: a segment drawn from three control points and α (seed 000 §4);
 //! * [`CompoundCurve`]: two pieces of slopes α0 and α1 joined with G3 continuity, from
 //!   three control points and a turning ratio (seed 004) or from four control points
@@ -18,14 +20,22 @@
 //! * [`region`]: the drawable region of seed 000 Fig. 9, and of compound curves;
 //! * [`RationalCubic`]: rational cubic Bézier curves, with a curvature-monotonicity test
 //!   whose verdict is a proof ([`RationalCubic::curvature_monotonicity`], seed 001 §5);
-//! * [`QuasiCurve`]: quasi-aesthetic curves (seed 001 §4), one rational cubic fitted as in
-//!   the seed ([`Curve::to_rational_cubic`]) or G2 chains of rational or plain cubics
-//!   within a [`Tolerance`] ([`Curve::to_rational_cubics`], [`Curve::to_cubics`]), as one
+//! * [`QuasiCurve`]: quasi-aesthetic curves (seed 001 §4) of any [`TurningCurve`] (through
+//!   [`ToBezier`]), one rational cubic fitted as in
+//!   the seed ([`ToBezier::to_rational_cubic`]) or G2 chains of rational or plain cubics
+//!   within a [`Tolerance`] ([`ToBezier::to_rational_cubics`], [`ToBezier::to_cubics`]), as one
 //!   curve ([`BezierChain`]) or a kurbo path ([`QuasiCurve::to_bez_path`]);
 //! * [`curvature_plot`] and [`log_curvature_graph`]: the curvature plot and logarithmic
 //!   curvature graph of any chain of Bézier pieces, with a least-squares α ([`LcgFit`]);
+//! * [`Path`] and [`Spline`]: G1 or G2 paths of segments from a control polygon, and G2
+//!   splines through points;
 //! * [`SpaceSegment`] and [`SpaceForm`]: log-aesthetic space curves (seed 003), whose
-//!   curvature and torsion graphs are both straight.
+//!   curvature and torsion graphs are both straight ([`SpaceCurve`]).
+//!
+//! The modules form layers, each using only those below it (docs/architecture.md):
+//! foundations (errors, numerics, tolerances), the families (standard form, chord angle,
+//! rational cubics), segments, curves and analysis, replacement and paths, and on top the
+//! space curves and drawable regions.
 //!
 //! # Conventions
 //!
@@ -57,60 +67,51 @@
 //! let end = seg.point_at_s(seg.arc_length()).unwrap();
 //! assert!((end - Point::new(1.0, 0.0)).hypot() < 1e-12);
 //! // The curve turns right (clockwise) from (-1,0) via (-0.2,0.8) to (1,0).
-//! assert!(seg.curvature_start() < 0.0);
+//! assert!(seg.signed_curvature_start() < 0.0);
 //! ```
 
-mod analysis;
-mod bezier;
-mod bezier_chain;
-mod chord_angle;
-mod compound;
+// The layers, each using only those above it in this list (docs/architecture.md; the
+// test `architecture` in tests/it checks it).
 mod curve;
-mod error;
-mod fresnel;
-mod gauss;
-mod lcg;
-mod monotone;
-mod numeric;
+mod family;
+mod foundation;
 mod path;
 mod quasi;
 pub mod region;
 mod segment;
 mod space;
-mod standard_form;
-mod tolerance;
-mod turn;
-mod vec3;
 
-pub use analysis::{
+pub use curve::analysis::{
     curvature_plot, log_curvature_graph, CurvaturePoint, LcgFit, LogCurvatureGraph,
 };
-pub use bezier::{RationalCubic, RationalCubicDerivative};
-pub use bezier_chain::{BezierChain, BezierChainDerivative};
-pub use compound::{CompoundCurve, CompoundDerivative, MIN_PIECE_SHARE};
-pub use curve::{Chain, Curve, HIDDEN_SHARE, HIDDEN_TURNING};
-pub use error::{Error, ErrorKind, NotDrawable, Result};
-pub use lcg::LcgLine;
-pub use monotone::{Monotonicity, MonotonicityReport};
+pub use curve::bezier_chain::{BezierChain, BezierChainDerivative};
+pub use curve::chain::{Chain, SegmentChain};
+pub use curve::compound::{CompoundCurve, CompoundDerivative, MIN_PIECE_SHARE};
+pub use curve::Curve;
+pub use family::bezier::{RationalCubic, RationalCubicDerivative};
+pub use family::lcg::LcgLine;
+pub use family::monotone::{Monotonicity, MonotonicityReport};
+pub use family::sample::{Sample, MAX_ADAPTIVE_SAMPLES};
+pub use family::standard_form::{Classification, InfiniteRadiusEnd, StandardForm, ZeroRadiusEnd};
+pub use foundation::error::{Error, ErrorKind, G2Failure, NotDrawable, Result};
+pub use foundation::tolerance::{Tolerance, MIN_RELATIVE_TOLERANCE};
+pub use foundation::turn::Turn;
+pub use foundation::vec3::Vec3;
 pub use path::{
-    Alphas, Continuity, ControlPolygon, G2Failure, G2Outcome, Joint, Path, Spline,
-    SplineInflection, StraightPiece, G2_JUMP_LIMIT, G2_TOLERANCE, INFLECTION_LIMIT,
-    MAX_POLYGON_POINTS,
+    Alphas, Closure, Continuity, ControlPolygon, G2Outcome, Joint, Path, Spline, SplineInflection,
+    StraightPiece, G2_JUMP_LIMIT, G2_TOLERANCE, INFLECTION_LIMIT, MAX_POLYGON_POINTS,
 };
-pub use quasi::{QuasiCurve, QuasiPiece, MAX_PIECES};
-pub use segment::{Sample, Segment, SegmentDerivative, MAX_ABS_ALPHA, MAX_ADAPTIVE_SAMPLES};
+pub use quasi::{QuasiCurve, QuasiPiece, ToBezier, TurningCurve, MAX_PIECES};
+pub use segment::visible::{HIDDEN_SHARE, HIDDEN_TURNING};
+pub use segment::{Segment, SegmentDerivative, MAX_ABS_ALPHA};
 pub use space::{
     BoundBy, EndBehaviour, RadiusCell, RadiusLimit, RatioLimit, SeedRow, SpaceClassification,
     SpaceEnd, TurningCell,
 };
 pub use space::{
-    Frame, GraphPoint, Similarity3, SpaceCubic, SpaceCubics, SpaceForm, SpaceFormParams,
-    SpaceSegment, SpaceShape, TorsionType, PLANAR_TOLERANCE,
+    Frame, GraphPoint, Similarity3, SpaceCubic, SpaceCubics, SpaceCurve, SpaceForm,
+    SpaceFormParams, SpaceSegment, SpaceShape, TorsionType, PLANAR_TOLERANCE,
 };
-pub use standard_form::{Classification, InfiniteRadiusEnd, StandardForm, ZeroRadiusEnd};
-pub use tolerance::{Tolerance, MIN_RELATIVE_TOLERANCE};
-pub use turn::Turn;
-pub use vec3::Vec3;
 
 /// The README's Rust examples, compiled and run as doc tests.
 #[cfg(doctest)]

@@ -16,8 +16,8 @@
 
 use kurbo::Point;
 
-use crate::compound::CompoundCurve;
-use crate::error::Error;
+use crate::curve::compound::CompoundCurve;
+use crate::foundation::error::Error;
 use crate::segment::Segment;
 
 /// The first control point of the region map.

@@ -342,7 +342,11 @@ fn caption(pieces: &[Segment], layers: &Layers, extras: &Extras) -> Block {
     );
     let largest = pieces
         .iter()
-        .map(|p| p.curvature_start().abs().max(p.curvature_end().abs()))
+        .map(|p| {
+            p.signed_curvature_start()
+                .abs()
+                .max(p.signed_curvature_end().abs())
+        })
         .fold(0.0, f64::max);
     let mut s = 0.0;
     for (i, piece) in pieces[..pieces.len() - 1].iter().enumerate() {
@@ -357,7 +361,7 @@ fn caption(pieces: &[Segment], layers: &Layers, extras: &Extras) -> Block {
         } else {
             // Pieces that meet at zero curvature (a spline's S, or a path's inflection with
             // a straight piece of zero length) meet at an inflection.
-            let name = if piece.curvature_end().abs() <= INFLECTION_SHARE * largest {
+            let name = if piece.signed_curvature_end().abs() <= INFLECTION_SHARE * largest {
                 "inflection"
             } else {
                 "joint"

@@ -6,6 +6,7 @@
 use std::fmt::Write as _;
 
 use kurbo::{Point, Rect};
+use lac::SpaceCurve;
 use lac::{SpaceSegment, Vec3};
 
 use super::measure::{self, Anchor, ASCENT, DESCENT, FAMILY};
@@ -206,7 +207,7 @@ struct Scene {
 /// The SVG document for `segment`.
 pub(crate) fn render(segment: &SpaceSegment) -> Result<String, ErrorBody> {
     let curve: Vec<Vec3> = segment
-        .sample(CURVE_POINTS)?
+        .sample_by_arc_length(CURVE_POINTS)?
         .iter()
         .map(|f| f.point)
         .collect();

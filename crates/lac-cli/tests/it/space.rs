@@ -254,13 +254,13 @@ fn the_transform_maps_the_standard_form_onto_the_samples() {
             let t = direction(transform, Vec3::X);
             assert!(t.distance((towards - start).normalize()) < 1e-12, "{t:?}");
             let end = if reversed { p[0] } else { p[3] };
-            let mapped = apply(transform, form.frame_at(s_end).unwrap().point);
+            let mapped = apply(transform, form.frame_at_s(s_end).unwrap().point);
             assert!(mapped.distance(end) <= 1e-9 * chord, "{mapped:?} {end:?}");
             // Every sample is the standard form's point at the matching arc length.
             for sample in v["samples"].as_array().unwrap().iter().step_by(8) {
                 let s = f(&sample["s"]) / scale;
                 let s = if reversed { s_end - s } else { s };
-                let frame = form.frame_at(s.max(0.0)).unwrap();
+                let frame = form.frame_at_s(s.max(0.0)).unwrap();
                 assert!(apply(transform, frame.point).distance(at(sample)) <= 1e-9 * chord);
                 assert!((frame.curvature / scale - f(&sample["kappa"])).abs() < 1e-9);
             }

@@ -16,6 +16,7 @@
 use super::nurbs::{Jet, Nurbs};
 use kurbo::Point;
 use lac::{Curve, Path, Result, Segment, SpaceSegment};
+use lac::{SegmentChain, SpaceCurve};
 
 /// Newton iterations per projection.
 const ITERATIONS: usize = 8;
@@ -30,9 +31,9 @@ pub trait Exact {
 }
 
 /// A planar log-aesthetic curve (z = 0).
-pub struct PlaneExact<'a>(pub &'a dyn Curve);
+pub struct PlaneExact<'a, C: Curve + ?Sized>(pub &'a C);
 
-impl Exact for PlaneExact<'_> {
+impl<C: Curve + ?Sized> Exact for PlaneExact<'_, C> {
     fn length(&self) -> f64 {
         self.0.arc_length()
     }

@@ -35,6 +35,7 @@ use lac::{
     Continuity, Curve, Error, Path, QuasiCurve, SpaceSegment, Spline, Tolerance,
     MIN_RELATIVE_TOLERANCE,
 };
+use lac::{SegmentChain, SpaceCurve, ToBezier};
 
 use crate::json::{ErrorBody, Solved};
 use certify::{
@@ -315,17 +316,17 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
         }
         .into()
     };
-    let fit = |c: &dyn Curve, target: f64| -> Result<QuasiCurve, ErrorBody> {
+    let fit = |c: &dyn SegmentChain, target: f64| -> Result<QuasiCurve, ErrorBody> {
         Ok(if plain {
             c.to_cubics(Tolerance::Absolute(target))?
         } else {
             c.to_rational_cubics(Tolerance::Absolute(target))?
         })
     };
-    let quasi_of = |c: &dyn Curve| fit(c, target);
+    let quasi_of = |c: &dyn SegmentChain| fit(c, target);
     // A piece of a chain (a path's segment, a spline's half) shorter than the tolerance is
     // fitted within its own length: the curve's tolerance, not the piece's, was asked for.
-    let piece_of = |c: &dyn Curve| fit(c, target.min(c.arc_length()));
+    let piece_of = |c: &dyn SegmentChain| fit(c, target.min(c.arc_length()));
     let planar = |chains: &[(QuasiCurve, f64)]| -> Result<Fitted, ErrorBody> {
         let pieces = || chains.iter().flat_map(|(q, _)| &q.pieces);
         let spans: Vec<Span> = pieces()

@@ -11,6 +11,7 @@
 //!   group code and a value.
 
 use kurbo::Point;
+use lac::{Closure, Curve};
 use lac::{CompoundCurve, Segment, SpaceSegment, SpaceShape, Tolerance, TorsionType, Vec3};
 use lac_io::export::certify::{deviation, PlaneExact};
 use lac_io::export::json::ExportDocument;
@@ -402,8 +403,8 @@ fn g2_paths_through_inflections_export_within_the_tolerance_with_monotone_pieces
             }
         }
         let alpha = [-1.5, -1.0, -0.75, -0.5, -0.25][(rng.uniform(0.0, 5.0) as usize).min(4)];
-        let polygon = ControlPolygon::open(&points).unwrap();
-        let Ok(path) = Path::g2(&polygon, &Alphas::One(alpha), None) else {
+        let polygon = ControlPolygon::from_points(&points, Closure::Open).unwrap();
+        let Ok(path) = Path::from_polygon_g2(&polygon, &Alphas::One(alpha)) else {
             continue;
         };
         if path.straight_pieces().is_empty() {
@@ -460,8 +461,8 @@ fn closed_g2_paths_through_inflections_export_as_one_closed_curve() {
             })
             .collect();
         let alpha = [-1.0, -0.75, -0.5][(rng.uniform(0.0, 3.0) as usize).min(2)];
-        let polygon = ControlPolygon::closed(&points).unwrap();
-        let Ok(path) = Path::g2(&polygon, &Alphas::One(alpha), None) else {
+        let polygon = ControlPolygon::from_points(&points, Closure::Closed).unwrap();
+        let Ok(path) = Path::from_polygon_g2(&polygon, &Alphas::One(alpha)) else {
             continue;
         };
         if path.straight_pieces().is_empty() {
@@ -522,7 +523,7 @@ fn splines_through_inflections_export_within_the_tolerance_with_monotone_pieces(
             };
         }
         let alpha = [-1.0, -0.75, -0.5, -0.25][(rng.uniform(0.0, 4.0) as usize).min(3)];
-        let Ok(spline) = Spline::g2(&points, alpha, false, None) else {
+        let Ok(spline) = Spline::from_points(&points, alpha, Closure::Open, None) else {
             continue;
         };
         if spline.inflections().is_empty() {

@@ -24,7 +24,7 @@ pub(crate) struct CurveAnswer<R> {
 }
 
 /// The curvature plot of `curve` at `n` points.
-pub(crate) fn plot(curve: &dyn Curve, n: usize) -> Result<LcgReport, ApiError> {
+pub(crate) fn plot(curve: &(impl Curve + ?Sized), n: usize) -> Result<LcgReport, ApiError> {
     Ok(LcgReport::new(&curve.curvature_plot(n)?).checked()?)
 }
 

@@ -3,7 +3,7 @@
 
 use axum::http::{header, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
-use lac::Tolerance;
+use lac::{Curve, SpaceCurve, Tolerance};
 use lac_io::export::{export as write_export, ExportCurve, Format, Meta, DEFAULT_TOLERANCE};
 use lac_io::json::{to_line, ErrorBody, PathInput, SpaceInput};
 

@@ -2,7 +2,7 @@
 //! exact curve, each piece's samples for its curvature comb, and both curvature plots.
 
 use kurbo::Vec2;
-use lac::RationalCubic;
+use lac::{Curve, RationalCubic};
 use lac_io::json::{to_line, CurveInput, ErrorBody, QuasiInput, QuasiReport, Report, SampleRow};
 use serde::Serialize;
 

@@ -1,12 +1,10 @@
 //! Newton's method on the joint fractions for curvature continuity (see the module
 //! documentation of [`crate::path`] for the equations).
 
-use std::fmt;
-
 use super::{banded, Continuity, ControlPolygon, Path};
 
-use crate::error::{Error, Result};
-use crate::segment::{end_curvatures_of, Segment, Solved};
+use crate::foundation::error::{Error, G2Failure, Result};
+use crate::segment::{end_curvatures_of, Segment, SegmentSolution};
 
 /// The solver stops once every joint's |ln(κ⁻/κ⁺)| is below this (about the rounding of
 /// the segments' end curvatures); a result must in any case meet
@@ -24,107 +22,6 @@ const MAX_STEP: f64 = 2.0;
 /// on the way (see [`evaluate`]) is solved again on its own if it misses by more.
 const MISS_TOLERANCE: f64 = 1e-14;
 
-/// Why no G2 path was found at a joint.
-#[derive(Clone, Debug, PartialEq)]
-#[non_exhaustive]
-pub enum G2Failure {
-    /// Newton's method did not bring the curvature jump at this joint to zero: the best
-    /// relative jump reached is `jump` (no G2 path nearby, e.g. the legs are too unequal for
-    /// the segments' curvature ratios).
-    NoConvergence {
-        /// The smallest |ln(κ⁻/κ⁺)| reached at this joint.
-        jump: f64,
-    },
-    /// The polygon turns one way before this leg and the other way after it: the curvature
-    /// must pass through zero, which a log-aesthetic segment does only for α < 0.
-    Inflection {
-        /// The slopes of the segments before and after the leg.
-        alphas: [f64; 2],
-    },
-    /// A segment next to this inflection (a path's leg, a spline's span) has α < 0, but its
-    /// zero-curvature end cannot be resolved in double precision (the curvature there falls
-    /// like d^(1/|α|) with the distance d from the inflection point: for α below about −1.7
-    /// not to 1e-10 in a path, below about −1.3 not to 1e-9 in a spline).
-    InflectionUnresolved {
-        /// The segment's slope.
-        alpha: f64,
-    },
-    /// The polygon's turning changes direction on both legs of one vertex: its segment would
-    /// need zero curvature at both ends, which a monotone-curvature segment cannot have.
-    InflectionsAtOneVertex {
-        /// The vertex.
-        vertex: usize,
-    },
-    /// A spline's span whose end tangents leave the chord on the same side (or where no
-    /// single segment fits them): it needs an inflection, which a log-aesthetic curve has
-    /// only for α < 0; for α < 0, no S-shaped span whose halves turn by at most π fits.
-    SpanInflects,
-    /// A spline's span passes through an inflection within a hair of one of its points (one
-    /// half of its S turns by less than 1e-3 rad): the half is too flat to be drawn in double
-    /// precision.
-    InflectionAtPoint,
-    /// The two segments that reach zero curvature on this leg need more than its length:
-    /// they overlap by `overlap` (a share of the leg).
-    InflectionLegTooShort {
-        /// How much of the leg is missing, as a share of it.
-        overlap: f64,
-    },
-}
-
-impl fmt::Display for G2Failure {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            G2Failure::NoConvergence { jump } => write!(
-                f,
-                "the curvature could not be made continuous there (smallest jump reached \
-                 ln(k-/k+) = {jump:.3e}); make the neighbouring legs more alike in length or \
-                 the turning angles at their vertices more alike"
-            ),
-            G2Failure::Inflection { alphas } => write!(
-                f,
-                "the polygon's turning changes direction on this leg, so the curvature must \
-                 pass through zero; the segments there have alpha = {} and {}, and a \
-                 log-aesthetic segment reaches zero curvature only for alpha < 0: use \
-                 alpha < 0 for the segments next to this leg or use the G1 path",
-                alphas[0], alphas[1]
-            ),
-            G2Failure::InflectionUnresolved { alpha } => write!(
-                f,
-                "the curve passes through an inflection here; a segment with alpha = {alpha} \
-                 that ends there cannot be brought to zero curvature in double precision \
-                 (use an alpha closer to 0: above about -1.5 next to a path's inflections, \
-                 above about -1.3 in a spline's)"
-            ),
-            G2Failure::InflectionsAtOneVertex { vertex } => write!(
-                f,
-                "the polygon's turning changes direction on both legs of vertex {vertex}: \
-                 its segment would need zero curvature at both ends; add a vertex that turns \
-                 the same way next to it"
-            ),
-            G2Failure::SpanInflects => write!(
-                f,
-                "it would have to inflect: no single segment fits its end tangents; a \
-                 log-aesthetic curve passes through an inflection only for alpha < 0 (and \
-                 then its two halves may turn by at most 180 deg each): use alpha < 0, or \
-                 add points where the curve turns"
-            ),
-            G2Failure::InflectionAtPoint => write!(
-                f,
-                "it passes through an inflection almost at one of its points (one half \
-                 of its S turns by less than 0.001 rad, too flat to draw in double precision); \
-                 move that point off the curve's inflection, or add a point"
-            ),
-            G2Failure::InflectionLegTooShort { overlap } => write!(
-                f,
-                "the polygon's turning changes direction on this leg, and the two segments \
-                 that reach zero curvature there need {:.1}% more than its length; make the \
-                 leg longer or its neighbours shorter",
-                100.0 * overlap
-            ),
-        }
-    }
-}
-
 /// A G2 path, or the nearest G1 path and why G2 failed.
 #[derive(Clone, Debug)]
 pub struct G2Outcome {
@@ -135,11 +32,21 @@ pub struct G2Outcome {
     pub failure: Option<Error>,
 }
 
+impl G2Outcome {
+    /// The G2 path, or the error that says why none was found.
+    pub(crate) fn into_result(self) -> Result<Path> {
+        match self.failure {
+            None => Ok(self.path),
+            Some(error) => Err(error),
+        }
+    }
+}
+
 /// One segment's end curvatures and the scale-free derivatives of ln|κ| at its ends in
 /// ln r.
 struct Eval {
     /// The segment, solved.
-    solved: Solved,
+    solved: SegmentSolution,
     /// Signed curvature at the first and last point.
     kappa: (f64, f64),
     /// ln|κ| at the first and last point, corrected for the chord angle the segment misses.
@@ -338,11 +245,11 @@ fn evaluate(
             let points = polygon.control_points(&t, &t_end, k);
             let advanced = match previous {
                 Some(Previous::State(p, step)) => p.evals[k].solved.advanced(points, step),
-                Some(Previous::Guess) => Solved::guessed(points, alphas[k]),
+                Some(Previous::Guess) => SegmentSolution::guessed(points, alphas[k]),
                 None => None,
             };
             advanced
-                .map_or_else(|| Solved::new(points, alphas[k]), Ok)
+                .map_or_else(|| SegmentSolution::new(points, alphas[k]), Ok)
                 .and_then(|solved| {
                     let (k0, k1) = solved.end_curvatures()?;
                     let [c0, c1] = solved.log_corrections().unwrap_or([0.0, 0.0]);
@@ -442,13 +349,13 @@ fn slopes(alphas: &[f64], infl: &Inflections, state: &State, k: usize) -> Option
 /// each joint splits its leg in proportion to what its two vertices can use on their other
 /// sides.
 fn balanced_start(polygon: &ControlPolygon) -> Vec<f64> {
-    let n = polygon.points.len();
+    let n = polygon.points().len();
     let length = |i: usize| {
         let (a, b) = polygon.leg(i);
         (b - a).hypot()
     };
     let joints = polygon.joint_legs();
-    let is_joint = |i: usize| polygon.closed || (i > 0 && i + 2 < n);
+    let is_joint = |i: usize| polygon.is_closed() || (i > 0 && i + 2 < n);
     let usable = |i: usize| {
         if is_joint(i) {
             0.5 * length(i)
@@ -750,10 +657,10 @@ fn nearest_g1(
     failure: Error,
 ) -> Result<G2Outcome> {
     let alphas = super::Alphas::PerSegment(alphas.to_vec());
-    let reached = fractions.map(|f| Path::g1(polygon, &alphas, Some(f)));
+    let reached = fractions.map(|f| Path::from_polygon_g1(polygon, &alphas, Some(f)));
     match reached
         .filter(Result::is_ok)
-        .unwrap_or_else(|| Path::g1(polygon, &alphas, None))
+        .unwrap_or_else(|| Path::from_polygon_g1(polygon, &alphas, None))
     {
         Ok(path) => Ok(G2Outcome {
             path,
@@ -785,7 +692,7 @@ mod tests {
                         let q0 = Point::new(-1.0, 0.0);
                         let p = Point::ZERO;
                         let q1 = p + Vec2::from_angle(side * turning) * ratio;
-                        let Ok(solved) = Solved::new([q0, p, q1], alpha) else {
+                        let Ok(solved) = SegmentSolution::new([q0, p, q1], alpha) else {
                             continue;
                         };
                         let exact = solved.log_slopes().expect("exact slopes");

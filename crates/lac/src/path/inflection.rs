@@ -19,7 +19,7 @@
 
 use kurbo::Point;
 
-use crate::error::Result;
+use crate::foundation::error::Result;
 use crate::segment::end_curvatures_of;
 
 /// The target |κ| at the inflection end relative to the other end's.

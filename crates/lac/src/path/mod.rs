@@ -8,8 +8,8 @@
 //! tangent (the leg's direction), so the path is G1 by construction. A closed polygon has a
 //! joint on every leg.
 //!
-//! * [`Path::g1`]: the joints at given fractions (the leg midpoints by default).
-//! * [`Path::g2`]: the fractions solved so that the curvature is continuous at every joint.
+//! * [`Path::from_polygon_g1`]: the joints at given fractions (the leg midpoints by default).
+//! * [`Path::from_polygon_g2`]: the fractions solved so that the curvature is continuous at every joint.
 //!   The curvature jump at a joint depends on its own fraction and on those of the two
 //!   neighbouring joints only (each segment is fixed by the fractions of its two legs), so
 //!   the system is tridiagonal (cyclic for closed paths) and Newton's method solves it in
@@ -50,18 +50,20 @@
 mod banded;
 mod g2;
 mod inflection;
+mod polygon;
 mod s_span;
 mod spline;
 
 use kurbo::Point;
 
-use crate::curve::Curve;
-use crate::error::{finite, Error, Result};
-use crate::segment::Sample;
-use crate::segment::{check_alpha, Segment};
-use crate::turn::Turn;
+use crate::curve::{check_arc_length, check_ascending, Curve};
+use crate::family::sample::Sample;
+use crate::foundation::error::{finite, Error, Result};
+use crate::segment::Segment;
 
-pub use g2::{G2Failure, G2Outcome, G2_TOLERANCE};
+use crate::foundation::error::G2Failure;
+pub use g2::{G2Outcome, G2_TOLERANCE};
+pub use polygon::{Alphas, Closure, ControlPolygon, MAX_POLYGON_POINTS};
 pub use spline::{Spline, SplineInflection};
 
 /// The largest relative curvature jump a G2 path may have at a joint,
@@ -71,255 +73,6 @@ pub const G2_JUMP_LIMIT: f64 = 1e-9;
 /// Largest gap between the ends of two segments at a joint, relative to the polygon's size,
 /// and largest tangent jump (radians), for any path.
 const G1_LIMIT: f64 = 1e-10;
-
-/// The most vertices a control polygon may have (the work is linear in it; this bounds a
-/// request's memory and time).
-pub const MAX_POLYGON_POINTS: usize = 100_000;
-
-/// A validated control polygon: at least three points, finite, consecutive points distinct;
-/// open (the path runs from the first point to the last) or closed.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ControlPolygon {
-    points: Vec<Point>,
-    closed: bool,
-}
-
-impl ControlPolygon {
-    /// An open polygon P0 … Pn (n ≥ 2): the path starts at P0 tangent to P1 − P0 and ends at
-    /// Pn tangent to Pn − Pn−1, with one segment per interior vertex.
-    pub fn open(points: &[Point]) -> Result<ControlPolygon> {
-        ControlPolygon::new(points, false)
-    }
-
-    /// A closed polygon (at least three vertices; a last point equal to the first is
-    /// dropped): one segment per vertex and a joint on every leg.
-    pub fn closed(points: &[Point]) -> Result<ControlPolygon> {
-        let mut points = points.to_vec();
-        if points.len() > 3 && points.first() == points.last() {
-            points.pop();
-        }
-        ControlPolygon::new(&points, true)
-    }
-
-    fn new(points: &[Point], closed: bool) -> Result<ControlPolygon> {
-        if points.len() < 3 || points.len() > MAX_POLYGON_POINTS {
-            return Err(Error::OutOfRange {
-                name: "number of polygon points",
-                value: points.len() as f64,
-                expected: "at least 3 points (one interior vertex) and at most 100000",
-            });
-        }
-        for p in points {
-            finite("polygon point x", p.x)?;
-            finite("polygon point y", p.y)?;
-        }
-        let n = points.len();
-        let legs = if closed { n } else { n - 1 };
-        for i in 0..legs {
-            let j = (i + 1) % n;
-            let d = points[j] - points[i];
-            if points[i] == points[j] {
-                return Err(Error::CoincidentPoints {
-                    first: i,
-                    second: j,
-                });
-            }
-            if !d.x.hypot(d.y).is_finite() {
-                return Err(Error::OutOfRange {
-                    name: "polygon points",
-                    value: f64::INFINITY,
-                    expected: "coordinates whose differences do not overflow",
-                });
-            }
-        }
-        Ok(ControlPolygon {
-            points: points.to_vec(),
-            closed,
-        })
-    }
-
-    /// The vertices.
-    pub fn points(&self) -> &[Point] {
-        &self.points
-    }
-
-    /// Whether the polygon is closed.
-    pub fn is_closed(&self) -> bool {
-        self.closed
-    }
-
-    /// Number of legs: n for an open polygon of n + 1 points, n for a closed one of n.
-    pub fn leg_count(&self) -> usize {
-        if self.closed {
-            self.points.len()
-        } else {
-            self.points.len() - 1
-        }
-    }
-
-    /// Number of segments: one per interior vertex (every vertex when closed).
-    pub fn segment_count(&self) -> usize {
-        if self.closed {
-            self.points.len()
-        } else {
-            self.points.len() - 2
-        }
-    }
-
-    /// The vertex that carries segment `k`.
-    pub fn vertex_of_segment(&self, k: usize) -> usize {
-        if self.closed {
-            k
-        } else {
-            k + 1
-        }
-    }
-
-    /// The legs on which segment `k` starts and ends.
-    fn legs_of_segment(&self, k: usize) -> (usize, usize) {
-        let n = self.points.len();
-        if self.closed {
-            ((k + n - 1) % n, k)
-        } else {
-            (k, k + 1)
-        }
-    }
-
-    /// The legs that carry a joint between two segments (all but the end legs when open).
-    pub fn joint_legs(&self) -> Vec<usize> {
-        if self.closed {
-            (0..self.points.len()).collect()
-        } else {
-            (1..self.points.len() - 2).collect()
-        }
-    }
-
-    /// The segments that end and start on joint leg `leg`.
-    fn segments_at_leg(&self, leg: usize) -> (usize, usize) {
-        if self.closed {
-            (leg, (leg + 1) % self.points.len())
-        } else {
-            (leg - 1, leg)
-        }
-    }
-
-    /// Leg `i` from `P_i` to `P_{i+1}` (cyclically).
-    fn leg(&self, i: usize) -> (Point, Point) {
-        let n = self.points.len();
-        (self.points[i], self.points[(i + 1) % n])
-    }
-
-    /// The point at fraction `t` along leg `i` (exactly the vertex at t = 0 and t = 1).
-    fn at(&self, i: usize, t: f64) -> Point {
-        let (a, b) = self.leg(i);
-        if t == 0.0 {
-            a
-        } else if t == 1.0 {
-            b
-        } else {
-            a.lerp(b, t)
-        }
-    }
-
-    /// The control triangle of segment `k` when the segments starting on each leg start at
-    /// fraction `start[leg]` and those ending on it end at `end[leg]` (the same but on an
-    /// inflection leg, where a straight piece runs between them).
-    fn control_points(&self, start: &[f64], end: &[f64], k: usize) -> [Point; 3] {
-        let (sl, el) = self.legs_of_segment(k);
-        let v = self.vertex_of_segment(k);
-        [self.at(sl, start[sl]), self.points[v], self.at(el, end[el])]
-    }
-
-    /// Length of leg `i`.
-    fn leg_length(&self, i: usize) -> f64 {
-        let (a, b) = self.leg(i);
-        (b - a).hypot()
-    }
-
-    /// The joint legs where the turning direction changes (the curvature must pass through
-    /// zero there).
-    fn inflection_legs(&self) -> Vec<usize> {
-        self.joint_legs()
-            .into_iter()
-            .filter(|&leg| {
-                let (before, after) = self.segments_at_leg(leg);
-                self.turn_at(self.vertex_of_segment(before))
-                    != self.turn_at(self.vertex_of_segment(after))
-            })
-            .collect()
-    }
-
-    /// The turning direction at vertex `v` (`None` when the legs are collinear).
-    fn turn_at(&self, v: usize) -> Option<Turn> {
-        let n = self.points.len();
-        let (p, q, r) = (
-            self.points[(v + n - 1) % n],
-            self.points[v],
-            self.points[(v + 1) % n],
-        );
-        Turn::of((q - p).cross(r - q))
-    }
-
-    /// Largest coordinate extent, the scale of position checks.
-    fn size(&self) -> f64 {
-        let (mut lo, mut hi) = (self.points[0], self.points[0]);
-        for p in &self.points {
-            lo = Point::new(lo.x.min(p.x), lo.y.min(p.y));
-            hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
-        }
-        (hi.x - lo.x).max(hi.y - lo.y)
-    }
-
-    /// The fractions of every leg for joints `fractions` on the joint legs (in the order of
-    /// [`ControlPolygon::joint_legs`]); an open polygon's end legs get 0 (start at P0) and
-    /// 1 (end at Pn).
-    fn leg_fractions(&self, joint_fractions: &[f64]) -> Vec<f64> {
-        let mut t = vec![0.0; self.leg_count()];
-        if !self.closed {
-            let last = t.len() - 1;
-            t[last] = 1.0;
-        }
-        for (leg, f) in self.joint_legs().into_iter().zip(joint_fractions) {
-            t[leg] = *f;
-        }
-        t
-    }
-}
-
-/// The slopes of a path's segments: one α for all, or one per segment (in the order of the
-/// vertices that carry them).
-#[derive(Clone, Debug, PartialEq)]
-pub enum Alphas {
-    /// The same α for every segment.
-    One(f64),
-    /// α of each segment.
-    PerSegment(Vec<f64>),
-}
-
-impl Alphas {
-    /// One α per segment of `polygon`, checked.
-    fn resolve(&self, polygon: &ControlPolygon) -> Result<Vec<f64>> {
-        let n = polygon.segment_count();
-        let out = match self {
-            Alphas::One(a) => vec![check_alpha("alpha", *a)?; n],
-            Alphas::PerSegment(list) => {
-                if list.len() != n {
-                    return Err(Error::OutOfRange {
-                        name: "number of alphas",
-                        value: list.len() as f64,
-                        expected: "one alpha per segment (per interior vertex of an open \
-                                   polygon, per vertex of a closed one), or a single alpha",
-                    });
-                }
-                for a in list {
-                    check_alpha("alpha", *a)?;
-                }
-                list.clone()
-            }
-        };
-        Ok(out)
-    }
-}
 
 /// How continuous a path is at its joints.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -340,6 +93,8 @@ pub enum Continuity {
 pub struct Joint {
     /// The polygon leg the joint lies on (leg i runs from P_i to P_{i+1}).
     pub leg: usize,
+    /// Arc length from the path's start (a closed path's last joint is at its full length).
+    pub s: f64,
     /// The fraction of the leg from P_i, in (0, 1).
     pub fraction: f64,
     /// The joint.
@@ -363,6 +118,8 @@ pub struct Joint {
 pub struct StraightPiece {
     /// The polygon leg it lies on.
     pub leg: usize,
+    /// Arc length from the path's start to where it starts.
+    pub s: f64,
     /// Fractions of the leg from P_leg where it starts and ends.
     pub fractions: [f64; 2],
     /// Where it starts (the end of the segment before it).
@@ -392,21 +149,21 @@ pub const INFLECTION_LIMIT: f64 = 1e-9;
 
 /// A log-aesthetic path: one [`Segment`] per interior vertex of a [`ControlPolygon`], joined
 /// at points on the legs with continuous position and tangent (G1), and curvature too when
-/// solved by [`Path::g2`]. See the module documentation for the construction.
+/// solved by [`Path::from_polygon_g2`]. See the module documentation for the construction.
 ///
 /// Arc length runs from the start of the first segment (P0 when open; the joint on the last
-/// leg when closed) through the segments and straight pieces in order. A path is not a
-/// [`Curve`] (whose pieces are all segments): each of its [`Path::segments`] is, and
-/// [`Path::sample_by_arc_length`] samples the whole path, straight pieces included.
+/// leg when closed) through the segments and straight pieces in order. A path is a
+/// [`Curve`] through its segments and straight pieces together (κ = 0 on the straight
+/// pieces), and each of its [`Path::segments`] is one too.
 ///
 /// ```
 /// use kurbo::Point;
-/// use lac::{Alphas, ControlPolygon, Path};
+/// use lac::{Alphas, Closure, ControlPolygon, Curve, Path};
 ///
-/// let polygon = ControlPolygon::open(&[
+/// let polygon = ControlPolygon::from_points(&[
 ///     Point::new(0.0, 0.0), Point::new(2.0, 0.0), Point::new(3.0, 1.5), Point::new(3.0, 3.0),
-/// ])?;
-/// let path = Path::g2(&polygon, &Alphas::One(0.5), None)?;
+/// ], Closure::Open)?;
+/// let path = Path::from_polygon_g2(&polygon, &Alphas::One(0.5))?;
 /// let joint = path.joints()[0];
 /// assert!(joint.curvature_jump <= 1e-9);
 /// assert!((path.end_point() - Point::new(3.0, 3.0)).hypot() < 1e-12);
@@ -434,7 +191,7 @@ impl Path {
     ///
     /// Errors: [`Error::PathSegment`] naming the vertex whose segment cannot be drawn (and
     /// why), or a fraction out of range.
-    pub fn g1(
+    pub fn from_polygon_g1(
         polygon: &ControlPolygon,
         alphas: &Alphas,
         fractions: Option<&[f64]>,
@@ -479,30 +236,35 @@ impl Path {
     }
 
     /// The G2 path: the joints placed so that the curvature is continuous at every one
-    /// (relative jump ≤ [`G2_JUMP_LIMIT`]), by Newton's method on the joint fractions, from
-    /// `warm` (the [`Path::joint_fractions`] of an earlier solution for a polygon with the
-    /// same number of points, e.g. before a drag) or from the leg midpoints.
+    /// (relative jump ≤ [`G2_JUMP_LIMIT`]), by Newton's method on the joint fractions from the
+    /// leg midpoints.
     ///
     /// Errors: [`Error::NoG2Path`] naming the joint where no continuous curvature was
     /// reached, and why; [`Error::PathSegment`] when a segment cannot be drawn at the start.
-    /// [`Path::g2_or_nearest_g1`] offers the nearest G1 path instead.
-    pub fn g2(polygon: &ControlPolygon, alphas: &Alphas, warm: Option<&[f64]>) -> Result<Path> {
-        let outcome = g2::solve(polygon, &alphas.resolve(polygon)?, warm)?;
-        match outcome.failure {
-            None => Ok(outcome.path),
-            Some(error) => Err(error),
-        }
+    /// [`Path::from_polygon_g2_or_nearest_g1`] offers the nearest G1 path instead.
+    pub fn from_polygon_g2(polygon: &ControlPolygon, alphas: &Alphas) -> Result<Path> {
+        g2::solve(polygon, &alphas.resolve(polygon)?, None)?.into_result()
     }
 
-    /// [`Path::g2`], or when no G2 path is found, the G1 path whose curvature jumps were the
-    /// smallest the search reached (never a silent kink: the outcome says why G2 failed and
-    /// the path's [`Path::continuity`] is [`Continuity::G1`]).
-    pub fn g2_or_nearest_g1(
+    /// [`Path::from_polygon_g2`] with a warm start: Newton's method starts from `near`, the
+    /// [`Path::joint_fractions`] of an earlier solution for a polygon with the same number
+    /// of points (e.g. before a drag), which takes fewer steps than the leg midpoints.
+    pub fn from_polygon_g2_near(
         polygon: &ControlPolygon,
         alphas: &Alphas,
-        warm: Option<&[f64]>,
+        near: &[f64],
+    ) -> Result<Path> {
+        g2::solve(polygon, &alphas.resolve(polygon)?, Some(near))?.into_result()
+    }
+
+    /// [`Path::from_polygon_g2`], or when no G2 path is found, the G1 path whose curvature
+    /// jumps were the smallest the search reached (never a silent kink: the outcome says why
+    /// G2 failed and the path's [`Path::continuity`] is [`Continuity::G1`]).
+    pub fn from_polygon_g2_or_nearest_g1(
+        polygon: &ControlPolygon,
+        alphas: &Alphas,
     ) -> Result<G2Outcome> {
-        g2::solve(polygon, &alphas.resolve(polygon)?, warm)
+        g2::solve(polygon, &alphas.resolve(polygon)?, None)
     }
 
     /// Check every joint and build the path: positions within 1e-10 of the polygon's size,
@@ -568,6 +330,7 @@ impl Path {
             let big = kb.abs().max(ka.abs());
             let joint = Joint {
                 leg,
+                s: f64::NAN, // (set by `Path::place_joints`)
                 fraction: fractions[leg],
                 point: polygon.at(leg, fractions[leg]),
                 curvature_before: kb,
@@ -590,7 +353,7 @@ impl Path {
             }
             joints.push(joint);
         }
-        Ok(Path {
+        let mut path = Path {
             polygon,
             alphas,
             fractions,
@@ -599,7 +362,35 @@ impl Path {
             joints,
             straight,
             continuity,
-        })
+        };
+        path.place_joints();
+        Ok(path)
+    }
+
+    /// The arc length of each joint and straight piece from the path's start.
+    fn place_joints(&mut self) {
+        let (mut s, mut joints, mut straight) = (0.0, Vec::new(), Vec::new());
+        for item in self.items() {
+            match item {
+                Item::Segment(k) => {
+                    s += self.item_length(&item);
+                    let (_, end_leg) = self.polygon.legs_of_segment(k);
+                    if self.joints.iter().any(|j| j.leg == end_leg) {
+                        joints.push(s);
+                    }
+                }
+                Item::Line(p) => {
+                    straight.push(s);
+                    s += p.length();
+                }
+            }
+        }
+        for (joint, s) in self.joints.iter_mut().zip(joints) {
+            joint.s = s;
+        }
+        for (piece, s) in self.straight.iter_mut().zip(straight) {
+            piece.s = s;
+        }
     }
 
     /// The control polygon.
@@ -614,7 +405,7 @@ impl Path {
 
     /// The fraction of each joint leg at which its joint lies (the order of
     /// [`ControlPolygon::joint_legs`]; on an inflection leg, where its straight piece
-    /// starts): the warm start for [`Path::g2`].
+    /// starts): the warm start for [`Path::from_polygon_g2_near`].
     pub fn joint_fractions(&self) -> Vec<f64> {
         self.polygon
             .joint_legs()
@@ -655,37 +446,6 @@ impl Path {
         &self.joints
     }
 
-    /// The arc length of each joint from the path's start (the order of [`Path::joints`];
-    /// a closed path's last joint is at its full length).
-    pub fn joints_s(&self) -> Vec<f64> {
-        let mut s = 0.0;
-        let mut out = Vec::new();
-        for item in self.items() {
-            s += self.item_length(&item);
-            if let Item::Segment(k) = item {
-                let (_, el) = self.polygon.legs_of_segment(k);
-                if self.joints.iter().any(|j| j.leg == el) {
-                    out.push(s);
-                }
-            }
-        }
-        out
-    }
-
-    /// The arc length from the path's start to the start of each straight piece (the order
-    /// of [`Path::straight_pieces`]).
-    pub fn straight_pieces_s(&self) -> Vec<f64> {
-        let mut s = 0.0;
-        let mut out = Vec::new();
-        for item in self.items() {
-            if let Item::Line(_) = item {
-                out.push(s);
-            }
-            s += self.item_length(&item);
-        }
-        out
-    }
-
     /// The segments and straight pieces in order from the path's start.
     fn items(&self) -> Vec<Item<'_>> {
         let mut out = Vec::new();
@@ -699,11 +459,6 @@ impl Path {
         out
     }
 
-    /// Arc length from the first point to the last (segments and straight pieces).
-    pub fn arc_length(&self) -> f64 {
-        self.items().iter().map(|i| self.item_length(i)).sum()
-    }
-
     fn item_length(&self, item: &Item) -> f64 {
         match item {
             Item::Segment(k) => self.segments[*k].arc_length(),
@@ -711,71 +466,24 @@ impl Path {
         }
     }
 
-    /// Total turning of the tangent from the first to the last point, radians, signed
-    /// (positive for a left turn; the straight pieces do not turn).
-    pub fn turning(&self) -> f64 {
-        self.segments.iter().map(Curve::turning).sum()
-    }
-
-    /// The first point.
-    pub fn start_point(&self) -> Point {
-        self.segments[0].start_point()
-    }
-
-    /// The last point: the last segment's end, or where the straight piece after it ends
-    /// (a closed path whose closing leg is an inflection leg ends on it, where its first
-    /// segment starts).
-    pub fn end_point(&self) -> Point {
-        match self.items().last() {
-            Some(Item::Line(p)) => p.to,
-            _ => self.segments[self.segments.len() - 1].end_point(),
-        }
-    }
-
-    /// `n ≥ 2` samples equally spaced in arc length over the whole path (straight pieces
-    /// included, with κ = 0 there), the first at its first point and the last at its last;
-    /// θ is continuous from the first point.
-    pub fn sample_by_arc_length(&self, n: usize) -> Result<Vec<Sample>> {
-        crate::segment::sampling::check_count(n)?;
+    /// The item holding arc length `s` (a joint belongs to the item after it), the tangent
+    /// direction where it starts (continuous from the first point), and `s` within it
+    /// (clamped to its length).
+    fn locate(&self, s: f64) -> Result<(Item<'_>, f64, f64)> {
         let items = self.items();
-        let lengths: Vec<f64> = items.iter().map(|i| self.item_length(i)).collect();
-        let total: f64 = lengths.iter().sum();
-        let step = total / (n - 1) as f64;
-        let mut out: Vec<Sample> = Vec::with_capacity(n);
-        let (mut item, mut start) = (0, 0.0);
-        for i in 0..n {
-            let s = if i == n - 1 { total } else { i as f64 * step };
-            while item + 1 < items.len() && s > start + lengths[item] {
-                start += lengths[item];
-                item += 1;
+        check_arc_length(s, self.arc_length())?;
+        let (mut start, mut theta) = (0.0, self.segments[0].theta_at_s(0.0)?);
+        for (i, item) in items.iter().enumerate() {
+            let length = self.item_length(item);
+            if s < start + length || i + 1 == items.len() {
+                return Ok((*item, theta, (s - start).clamp(0.0, length)));
             }
-            let local = (s - start).clamp(0.0, lengths[item]);
-            let mut sample = match items[item] {
-                Item::Segment(k) => {
-                    let seg = &self.segments[k];
-                    let mut smp = seg.samples_at_arc_lengths(&[local])?[0];
-                    smp.s = s;
-                    smp
-                }
-                Item::Line(p) => {
-                    let len = p.length();
-                    let u = if len > 0.0 { local / len } else { 0.0 };
-                    let (a, b) = self.polygon.leg(p.leg);
-                    Sample {
-                        s,
-                        point: p.from.lerp(p.to, u),
-                        theta: (b - a).atan2(),
-                        kappa: 0.0,
-                    }
-                }
-            };
-            if let Some(prev) = out.last() {
-                let tau = std::f64::consts::TAU;
-                sample.theta -= tau * ((sample.theta - prev.theta) / tau).round();
+            start += length;
+            if let Item::Segment(k) = item {
+                theta += self.segments[*k].turning();
             }
-            out.push(sample);
         }
-        Ok(out)
+        unreachable!("a path has at least one segment")
     }
 
     /// G1 or G2.
@@ -790,6 +498,134 @@ impl Path {
             .map(|j| j.curvature_jump)
             .fold(0.0, f64::max)
     }
+}
+
+impl Curve for Path {
+    /// Arc length from the first point to the last (segments and straight pieces).
+    fn arc_length(&self) -> f64 {
+        self.items().iter().map(|i| self.item_length(i)).sum()
+    }
+
+    fn start_point(&self) -> Point {
+        self.segments[0].start_point()
+    }
+
+    /// The last segment's end, or where the straight piece after it ends (a closed path
+    /// whose closing leg is an inflection leg ends on it, where its first segment starts).
+    fn end_point(&self) -> Point {
+        match self.items().last() {
+            Some(Item::Line(p)) => p.to,
+            _ => self.segments[self.segments.len() - 1].end_point(),
+        }
+    }
+
+    fn signed_curvature_start(&self) -> f64 {
+        self.segments[0].signed_curvature_start()
+    }
+
+    fn signed_curvature_end(&self) -> f64 {
+        match self.items().last() {
+            Some(Item::Line(_)) => 0.0,
+            _ => self.segments[self.segments.len() - 1].signed_curvature_end(),
+        }
+    }
+
+    /// The segments' turning (the straight pieces do not turn).
+    fn turning(&self) -> f64 {
+        self.segments.iter().map(Curve::turning).sum()
+    }
+
+    fn point_at_s(&self, s: f64) -> Result<Point> {
+        match self.locate(s)? {
+            (Item::Segment(k), _, local) => self.segments[k].point_at_s(local),
+            (Item::Line(p), _, local) => Ok(line_point(p, local)),
+        }
+    }
+
+    fn theta_at_s(&self, s: f64) -> Result<f64> {
+        Ok(match self.locate(s)? {
+            (Item::Segment(k), at_start, local) => {
+                let seg = &self.segments[k];
+                at_start + (seg.theta_at_s(local)? - seg.theta_at_s(0.0)?)
+            }
+            (Item::Line(_), at_start, _) => at_start,
+        })
+    }
+
+    fn signed_curvature_at_s(&self, s: f64) -> Result<f64> {
+        match self.locate(s)? {
+            (Item::Segment(k), _, local) => self.segments[k].signed_curvature_at_s(local),
+            (Item::Line(_), _, _) => Ok(0.0),
+        }
+    }
+
+    fn curvature_derivative_at_s(&self, s: f64) -> Result<f64> {
+        match self.locate(s)? {
+            (Item::Segment(k), _, local) => self.segments[k].curvature_derivative_at_s(local),
+            (Item::Line(_), _, _) => Ok(0.0),
+        }
+    }
+
+    /// Where consecutive segments and straight pieces meet.
+    fn joint_arc_lengths(&self) -> Vec<f64> {
+        let items = self.items();
+        let mut s = 0.0;
+        items[..items.len() - 1]
+            .iter()
+            .map(|item| {
+                s += self.item_length(item);
+                s
+            })
+            .collect()
+    }
+
+    /// The samples over the whole path (straight pieces included, with κ = 0 there); θ is
+    /// continuous from the first point.
+    fn samples_at_arc_lengths(&self, at: &[f64]) -> Result<Vec<Sample>> {
+        let items = self.items();
+        let lengths: Vec<f64> = items.iter().map(|i| self.item_length(i)).collect();
+        let total: f64 = lengths.iter().sum();
+        check_ascending(at, total)?;
+        let mut out: Vec<Sample> = Vec::with_capacity(at.len());
+        let (mut item, mut start) = (0, 0.0);
+        for &s in at {
+            while item + 1 < items.len() && s > start + lengths[item] {
+                start += lengths[item];
+                item += 1;
+            }
+            let local = (s - start).clamp(0.0, lengths[item]);
+            let mut sample = match items[item] {
+                Item::Segment(k) => {
+                    let seg = &self.segments[k];
+                    let mut smp = seg.samples_at_arc_lengths(&[local])?[0];
+                    smp.s = s;
+                    smp
+                }
+                Item::Line(p) => {
+                    let (a, b) = self.polygon.leg(p.leg);
+                    Sample {
+                        s,
+                        point: line_point(p, local),
+                        theta: (b - a).atan2(),
+                        kappa: 0.0,
+                    }
+                }
+            };
+            if let Some(prev) = out.last() {
+                let tau = std::f64::consts::TAU;
+                sample.theta -= tau * ((sample.theta - prev.theta) / tau).round();
+            }
+            out.push(sample);
+        }
+        Ok(out)
+    }
+}
+
+/// The point at arc length `local` along a straight piece.
+fn line_point(p: &StraightPiece, local: f64) -> Point {
+    let len = p.length();
+    let u = if len > 0.0 { local / len } else { 0.0 };
+    p.from.lerp(p.to, u)
 }
 
 /// A segment or a straight piece of a path.
@@ -820,6 +656,7 @@ fn straight_piece(
     let start_theta = b.theta_of(&b.station_at_turning(0.0)?);
     Ok(StraightPiece {
         leg,
+        s: f64::NAN, // (set by `Path::place_joints`)
         fractions: [end[leg], start[leg]],
         from,
         to,

@@ -29,7 +29,7 @@ use std::f64::consts::PI;
 
 use kurbo::{Point, Vec2};
 
-use crate::numeric::Complex;
+use crate::foundation::numeric::Complex;
 
 /// Largest turning of one half, radians: the series for F loses about a digit per radian
 /// beyond π, and a spline's span that turns by more is a loop, not an S.

@@ -18,9 +18,11 @@ use std::f64::consts::{PI, TAU};
 use kurbo::{Point, Vec2};
 
 use super::s_span::{SSpan, Unit, HAIR};
-use super::{banded, G2Failure, G2_JUMP_LIMIT, G2_TOLERANCE, INFLECTION_LIMIT, MAX_POLYGON_POINTS};
+use super::{banded, Closure, G2_JUMP_LIMIT, G2_TOLERANCE, INFLECTION_LIMIT, MAX_POLYGON_POINTS};
+use crate::curve::chain::SegmentChain;
 use crate::curve::Curve;
-use crate::error::{finite, Error, Result};
+use crate::foundation::error::G2Failure;
+use crate::foundation::error::{finite, Error, Result};
 use crate::segment::{check_alpha, end_curvatures_of, Segment};
 
 /// The signed end curvatures of every span.
@@ -42,12 +44,12 @@ const TINY_HALF: f64 = 1e-3;
 ///
 /// ```
 /// use kurbo::Point;
-/// use lac::{Curve, Spline};
+/// use lac::{Closure, Curve, Spline};
 ///
 /// let points = [
 ///     Point::new(0.0, 0.0), Point::new(2.0, 0.3), Point::new(3.5, 1.5), Point::new(4.0, 3.0),
 /// ];
-/// let spline = Spline::g2(&points, 0.5, false, None)?;
+/// let spline = Spline::from_points(&points, 0.5, Closure::Open, None)?;
 /// assert!(spline.max_curvature_jump() <= 1e-9);
 /// assert!((spline.end_point() - points[3]).hypot() < 1e-12);
 /// # Ok::<(), lac::Error>(())
@@ -99,7 +101,7 @@ fn dir(v: Vec2) -> f64 {
 
 impl Spline {
     /// The G2 spline through `points` (at least 3; the first repeated last of a closed one
-    /// is dropped) with slope `alpha`, open or `closed`; an open spline's end tangent
+    /// is dropped) with slope `alpha`, open or closed (`closure`); an open spline's end tangent
     /// directions are `ends` (radians) or those of the circles through its first and last
     /// three points.
     ///
@@ -107,13 +109,14 @@ impl Spline {
     /// must inflect ([`G2Failure::SpanInflects`]) or where the curvature could not be made
     /// continuous, or [`Error::SplineSpan`] naming the span whose segment cannot be drawn;
     /// bad input.
-    pub fn g2(
+    pub fn from_points(
         points: &[Point],
         alpha: f64,
-        closed: bool,
+        closure: Closure,
         ends: Option<[f64; 2]>,
     ) -> Result<Spline> {
         check_alpha("alpha", alpha)?;
+        let closed = closure == Closure::Closed;
         let mut points = points.to_vec();
         if closed && points.len() > 3 && points.first() == points.last() {
             points.pop();
@@ -615,7 +618,7 @@ impl Spline {
     }
 }
 
-impl Curve for Spline {
+impl SegmentChain for Spline {
     fn pieces(&self) -> &[Segment] {
         &self.segments
     }

@@ -6,8 +6,8 @@
 use super::deviation::has_flat_end;
 use super::fit::{fit_span, Fitted};
 use super::{Kind, QuasiPiece, TurningCurve};
-use crate::error::{Error, Result};
-use crate::monotone::Monotonicity;
+use crate::family::monotone::Monotonicity;
+use crate::foundation::error::{Error, Result};
 
 /// Most pieces a tolerance may ask for: about a second of work at most, and far beyond
 /// what a CAD system wants of one curve.
@@ -31,7 +31,7 @@ fn faithful(piece: &QuasiPiece, expected: Monotonicity, k0: f64, k1: f64) -> boo
 /// The pieces from the curve's start to its end, each as long as a maximum deviation of
 /// `tol` (caller's units) and a faithful monotonicity allow.
 pub(super) fn greedy(
-    curve: &impl TurningCurve,
+    curve: &(impl TurningCurve + ?Sized),
     tol: f64,
     kind: Kind,
     expected: Monotonicity,

@@ -20,8 +20,8 @@ use kurbo::Vec2;
 
 use super::fit::{Candidate, Node, Span};
 use super::TurningCurve;
-use crate::error::Result;
-use crate::numeric::find_root;
+use crate::foundation::error::Result;
+use crate::foundation::numeric::find_root;
 
 /// Deviation samples per piece for the maximum.
 const CHECK_STEPS: usize = 64;
@@ -33,7 +33,7 @@ pub(super) const FLAT_END: f64 = 1e-3;
 /// Only curves of slope α < 0 reach zero curvature (at a finite arc length); a small
 /// |κ| ratio of α ≥ 0 comes with a tight hook at the other end, where 65 points of the
 /// curve are too few for closest points (a fuzzed α = 0.36 hook was understated by 10%).
-pub(super) fn has_flat_end(curve: &impl TurningCurve) -> bool {
+pub(super) fn has_flat_end(curve: &(impl TurningCurve + ?Sized)) -> bool {
     let (a, b) = curve.end_curvatures();
     let (a, b) = (a.abs(), b.abs());
     curve.can_inflect() && a.min(b) <= FLAT_END * a.max(b)
@@ -98,7 +98,11 @@ impl Span {
     /// changes, is not passed over), each paired with the curve's point at the candidate's
     /// tangent direction there; refined at the vertex of the parabola through each large
     /// local maximum and its neighbours.
-    pub(super) fn max_deviation(&self, curve: &impl TurningCurve, cand: &Candidate) -> Result<f64> {
+    pub(super) fn max_deviation(
+        &self,
+        curve: &(impl TurningCurve + ?Sized),
+        cand: &Candidate,
+    ) -> Result<f64> {
         let ts: Vec<f64> = (0..=CHECK_STEPS)
             .map(|i| i as f64 / CHECK_STEPS as f64)
             .collect();
@@ -137,7 +141,11 @@ impl Span {
     /// by Gauss–Newton on (x(t) − q)·x′(t) = 0 from the last one's parameter. Every
     /// iterate's distance is the distance to a point of the candidate, so the smallest seen
     /// bounds the true one from above even where the iteration does not settle.
-    pub(super) fn max_distance(&self, curve: &impl TurningCurve, cand: &Candidate) -> Result<f64> {
+    pub(super) fn max_distance(
+        &self,
+        curve: &(impl TurningCurve + ?Sized),
+        cand: &Candidate,
+    ) -> Result<f64> {
         let [sa, sb] = self.s;
         let at: Vec<f64> = (0..=CHECK_STEPS)
             .map(|i| {

@@ -21,10 +21,10 @@ use kurbo::{Point, Vec2};
 
 use super::deviation::{has_flat_end, Solve};
 use super::{unfittable, Kind, QuasiPiece, TurningCurve};
-use crate::bezier::{power_basis, Hom, RationalCubic};
-use crate::error::Result;
-use crate::gauss::GAUSS_16;
-use crate::monotone::Monotonicity;
+use crate::family::bezier::{power_basis, Hom, RationalCubic};
+use crate::family::monotone::Monotonicity;
+use crate::foundation::error::Result;
+use crate::foundation::gauss::GAUSS_16;
 
 /// A piece with what the totals of the chain need.
 pub(super) struct Fitted {
@@ -56,7 +56,7 @@ const ROUGH: (f64, f64) = (1e-4, 1e-3);
 /// The cubic of `kind` over the span of the curve from turning `phi_a` to `phi_b`, with
 /// its deviation and monotonicity.
 pub(super) fn fit_span(
-    curve: &impl TurningCurve,
+    curve: &(impl TurningCurve + ?Sized),
     phi_a: f64,
     phi_b: f64,
     kind: Kind,
@@ -134,7 +134,7 @@ pub(super) struct Node {
 
 /// How to find the parameter of a node.
 impl Span {
-    fn new(curve: &impl TurningCurve, phi_a: f64, phi_b: f64) -> Result<Span> {
+    fn new(curve: &(impl TurningCurve + ?Sized), phi_a: f64, phi_b: f64) -> Result<Span> {
         let turning = phi_b - phi_a;
         let (mid, half) = (0.5 * (phi_a + phi_b), 0.5 * turning);
         let mut phi = Vec::with_capacity(2 * GAUSS_16.len() + 2);
@@ -383,7 +383,7 @@ impl Span {
     }
 
     /// The piece for local homogeneous control points `q`, with its deviation and verdict.
-    fn trial(&self, curve: &impl TurningCurve, q: &[Hom; 4]) -> Result<Trial> {
+    fn trial(&self, curve: &(impl TurningCurve + ?Sized), q: &[Hom; 4]) -> Result<Trial> {
         let cand = Candidate::new(*q);
         // Both in the caller's units: the local frame is scaled by `scale`.
         let (integral, _) = self.integral(&cand).ok_or_else(unfittable)?;

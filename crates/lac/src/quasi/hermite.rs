@@ -7,9 +7,9 @@ use kurbo::Vec2;
 
 use super::fit::{Candidate, Span};
 use super::unfittable;
-use crate::bezier::Hom;
-use crate::error::Result;
-use crate::numeric::find_root;
+use crate::family::bezier::Hom;
+use crate::foundation::error::Result;
+use crate::foundation::numeric::find_root;
 
 impl Span {
     /// The plain cubic of the G2 Hermite data with the smallest deviation.

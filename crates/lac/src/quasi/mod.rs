@@ -16,14 +16,15 @@ mod hermite;
 
 use kurbo::BezPath;
 
-use crate::bezier::RationalCubic;
-use crate::bezier_chain::BezierChain;
-use crate::curve::{Chain, Curve};
-use crate::error::{Error, Result};
-use crate::monotone::{Monotonicity, MonotonicityReport};
-use crate::segment::{Sample, Segment};
-use crate::tolerance::Tolerance;
-use crate::turn::Turn;
+use crate::curve::bezier_chain::BezierChain;
+use crate::curve::chain::SegmentChain;
+use crate::family::bezier::RationalCubic;
+use crate::family::monotone::{Monotonicity, MonotonicityReport};
+use crate::family::sample::Sample;
+use crate::foundation::error::{Error, Result};
+use crate::foundation::tolerance::Tolerance;
+use crate::foundation::turn::Turn;
+use crate::segment::Segment;
 
 use chain::greedy;
 use fit::fit_span;
@@ -50,7 +51,7 @@ pub struct QuasiPiece {
 ///
 /// ```
 /// use kurbo::Point;
-/// use lac::{Curve, Monotonicity, Segment, Tolerance};
+/// use lac::{Monotonicity, Segment, ToBezier, Tolerance};
 ///
 /// let seg = Segment::from_control_points(
 ///     [Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(1.0, 0.8)],
@@ -87,25 +88,53 @@ impl QuasiCurve {
     }
 
     /// The chain as a kurbo path when every piece is a plain cubic (all its weights equal),
-    /// as [`Segment::to_cubics`] makes them, e.g. for [`BezPath::to_svg`]; None when a piece
+    /// as [`ToBezier::to_cubics`] makes them, e.g. for [`BezPath::to_svg`]; None when a piece
     /// is rational (or there are none).
     pub fn to_bez_path(&self) -> Option<BezPath> {
         self.chain().ok()?.to_bez_path()
     }
 }
 
-/// The quasi-aesthetic replacement of the chain of log-aesthetic `pieces` (see
-/// [`Curve::to_rational_cubic`], [`Curve::to_rational_cubics`], [`Curve::to_cubics`]).
-pub(crate) fn replace(
-    pieces: &[Segment],
+/// Bézier replacements of a curve with monotone curvature of one sign (seed 001 §4): every
+/// [`TurningCurve`] has them, e.g. a [`Segment`](crate::Segment) or a
+/// [`CompoundCurve`](crate::CompoundCurve).
+///
+/// Each answer is checked before it is returned: every number finite, and the G2 joins as a
+/// reader of the control points sees them.
+pub trait ToBezier: TurningCurve {
+    /// One rational cubic with the curve's ends, end tangents and end curvatures, closest
+    /// to it in the least-squares sense of seed 001 §4 (see [`QuasiCurve`]).
+    fn to_rational_cubic(&self) -> Result<QuasiCurve> {
+        replace(self, None, Kind::Seed)
+    }
+
+    /// As few rational cubics as needed for a maximum deviation within `tolerance`, each
+    /// with curvature proven monotone in the curve's direction, joined G2.
+    fn to_rational_cubics(&self, tolerance: Tolerance) -> Result<QuasiCurve> {
+        replace(self, Some(tolerance), Kind::Rational)
+    }
+
+    /// As few plain (polynomial) cubics as needed for a maximum deviation within
+    /// `tolerance`, each with curvature proven monotone, joined G2: for consumers that only
+    /// take cubics (SVG paths, fonts). Their chain is a kurbo `BezPath`
+    /// ([`QuasiCurve::to_bez_path`]).
+    fn to_cubics(&self, tolerance: Tolerance) -> Result<QuasiCurve> {
+        replace(self, Some(tolerance), Kind::Polynomial)
+    }
+}
+
+impl<C: TurningCurve + ?Sized> ToBezier for C {}
+
+/// The quasi-aesthetic replacement of `curve` (see [`ToBezier`]).
+fn replace(
+    curve: &(impl TurningCurve + ?Sized),
     tolerance: Option<Tolerance>,
     kind: Kind,
 ) -> Result<QuasiCurve> {
-    let chain = Chain(pieces);
     let tolerance = tolerance
-        .map(|t| t.relative_to(chain.arc_length()))
+        .map(|t| t.relative_to(curve.length()))
         .transpose()?;
-    let quasi = approximate(&chain, tolerance, kind)?;
+    let quasi = approximate(curve, tolerance, kind)?;
     // Every number of the answer finite, or no answer: a near-straight curve with a hook
     // at an end asks the single rational cubic for weights ~1e152 and an infinite deviation.
     let finite = quasi.rms.is_finite()
@@ -182,9 +211,11 @@ fn end_curvature_rounding(c: &RationalCubic, at_start: bool) -> f64 {
     }
 }
 
-/// A curve with monotone curvature of one sign, evaluated by its turning φ ∈ [0, Θ] from
-/// the start tangent.
-pub(crate) trait TurningCurve {
+/// What a Bézier replacement needs of a curve ([`ToBezier`]): a curve with monotone
+/// curvature of one sign, evaluated by its turning φ ∈ [0, Θ] from the start tangent, as
+/// kurbo's `fit_to_bezpath` asks `ParamCurveFit` of its input. Every chain of log-aesthetic
+/// segments ([`SegmentChain`]) is one.
+pub trait TurningCurve {
     /// Total turning Θ, radians, in (0, 2π).
     fn total_turning(&self) -> f64;
     /// Does it turn left (positive curvature)?
@@ -201,7 +232,7 @@ pub(crate) trait TurningCurve {
     fn can_inflect(&self) -> bool;
 }
 
-impl<C: Curve + ?Sized> TurningCurve for C {
+impl<C: SegmentChain + ?Sized> TurningCurve for C {
     fn total_turning(&self) -> f64 {
         self.pieces().iter().map(Segment::turning_angle).sum()
     }
@@ -211,11 +242,15 @@ impl<C: Curve + ?Sized> TurningCurve for C {
     }
 
     fn length(&self) -> f64 {
-        self.arc_length()
+        self.pieces().iter().map(Segment::length).sum()
     }
 
     fn end_curvatures(&self) -> (f64, f64) {
-        (self.curvature_start(), self.curvature_end())
+        let pieces = self.pieces();
+        (
+            pieces[0].end_curvatures().0,
+            pieces[pieces.len() - 1].end_curvatures().1,
+        )
     }
 
     fn at_turning(&self, phi: &[f64]) -> Result<Vec<Sample>> {
@@ -243,7 +278,7 @@ impl<C: Curve + ?Sized> TurningCurve for C {
     }
 
     fn at_arc_lengths(&self, s: &[f64]) -> Result<Vec<Sample>> {
-        self.samples_at_arc_lengths(s)
+        crate::curve::Curve::samples_at_arc_lengths(self, s)
     }
 
     fn can_inflect(&self) -> bool {
@@ -263,7 +298,7 @@ pub(crate) enum Kind {
 }
 
 fn approximate(
-    curve: &impl TurningCurve,
+    curve: &(impl TurningCurve + ?Sized),
     tolerance: Option<f64>,
     kind: Kind,
 ) -> Result<QuasiCurve> {

@@ -4,7 +4,7 @@
 //! The traits cannot return errors, so their domain is stated instead: t is clamped to
 //! [0, 1] (kurbo's curves extrapolate; a log-aesthetic segment may end at a singular point,
 //! so it does not), and a NaN t gives NaN. Curvature follows kurbo's sign
-//! (`d″ × d′ / |d′|³`, negative for a left turn); [`Curve::curvature_at_s`](crate::Curve)
+//! (`d″ × d′ / |d′|³`, negative for a left turn); [`Curve::signed_curvature_at_s`](crate::Curve)
 //! is docs/math.md's signed curvature, positive for a left turn.
 
 use std::ops::Range;
@@ -12,7 +12,7 @@ use std::ops::Range;
 use kurbo::{ParamCurve, ParamCurveArclen, ParamCurveCurvature, ParamCurveDeriv, Point, Vec2};
 
 use super::Segment;
-use crate::standard_form::Station;
+use crate::family::standard_form::Station;
 
 /// A point whose every coordinate is NaN: what a trait method that cannot fail returns
 /// when it has no answer.
@@ -205,7 +205,7 @@ pub(crate) fn central_difference(t: f64, f: impl Fn(f64) -> Point) -> Point {
 
 impl ParamCurveCurvature for Segment {
     /// Exact curvature with kurbo's sign: negative for a left turn (the opposite of
-    /// [`Curve::curvature_at_s`](crate::Curve::curvature_at_s)). NaN for a NaN t.
+    /// [`Curve::signed_curvature_at_s`](crate::Curve::signed_curvature_at_s)). NaN for a NaN t.
     fn curvature(&self, t: f64) -> f64 {
         match self.station_of_t(t) {
             Some(st) => -self.kappa_of(&st),

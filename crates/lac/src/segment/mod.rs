@@ -2,20 +2,20 @@
 
 use ::kurbo::{Point, Vec2};
 
-use crate::chord_angle::{self, Solution};
-use crate::error::{finite, Error, Result};
-use crate::lcg::LcgLine;
-use crate::numeric::{clamp, Complex};
-use crate::standard_form::integrate::integrate;
-use crate::standard_form::{StandardForm, Station};
-use crate::turn::Turn;
+use crate::family::chord_angle::{self, Solution};
+use crate::family::lcg::LcgLine;
+use crate::family::standard_form::integrate::integrate;
+use crate::family::standard_form::{StandardForm, Station};
+use crate::foundation::error::{finite, Error, Result};
+use crate::foundation::numeric::{clamp, Complex};
+use crate::foundation::turn::Turn;
 
 mod kurbo;
 pub(crate) mod sampling;
+pub(crate) mod visible;
 
 pub use kurbo::SegmentDerivative;
 pub(crate) use kurbo::{central_difference, Travel};
-pub use sampling::{Sample, MAX_ADAPTIVE_SAMPLES};
 
 /// The angles of a three-point control polygon (docs/math.md §3 steps 1 and 3).
 pub(crate) struct Triangle {
@@ -140,7 +140,7 @@ pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
 /// A segment solved from its control points but not yet built: its end curvatures and
 /// their derivatives for a solver that iterates on control points (a path's G2 joints),
 /// and the segment itself once that solver is done, without solving again.
-pub(crate) struct Solved {
+pub(crate) struct SegmentSolution {
     points: [Point; 3],
     alpha: f64,
     tri: Triangle,
@@ -153,23 +153,23 @@ pub(crate) struct Solved {
     theta_e: f64,
 }
 
-impl Solved {
+impl SegmentSolution {
     /// Solve the segment on `points` with slope `alpha` (not checked: see
     /// [`Segment::from_control_points`]).
-    pub(crate) fn new(points: [Point; 3], alpha: f64) -> Result<Solved> {
+    pub(crate) fn new(points: [Point; 3], alpha: f64) -> Result<SegmentSolution> {
         let arranged = Self::arrange(points)?;
         let solution = chord_angle::solve(alpha, arranged.0.turning, arranged.2)?;
         Ok(Self::with(points, alpha, arranged, solution))
     }
 
-    /// The segment on `points`, arranged by [`Solved::arrange`], with its piece.
+    /// The segment on `points`, arranged by [`SegmentSolution::arrange`], with its piece.
     fn with(
         points: [Point; 3],
         alpha: f64,
         (tri, reversed, theta_e): (Triangle, bool, f64),
         solution: Solution,
-    ) -> Solved {
-        Solved {
+    ) -> SegmentSolution {
+        SegmentSolution {
             points,
             alpha,
             tri,
@@ -195,8 +195,8 @@ impl Solved {
     }
 
     /// The segment on `points` with slope `alpha`, not solved: its piece taken at the
-    /// chord-angle search's first guess (see [`Solved::advanced`]).
-    pub(crate) fn guessed(points: [Point; 3], alpha: f64) -> Option<Solved> {
+    /// chord-angle search's first guess (see [`SegmentSolution::advanced`]).
+    pub(crate) fn guessed(points: [Point; 3], alpha: f64) -> Option<SegmentSolution> {
         let arranged = Self::arrange(points).ok()?;
         let (turning, theta_e) = (arranged.0.turning, arranged.2);
         if theta_e - 0.5 * turning <= 1e-6 * turning {
@@ -209,11 +209,11 @@ impl Solved {
     /// The segment on `points` (this one's control points moved, with the same vertex
     /// angle), not solved: its piece taken once at the μ that this one's derivatives
     /// predict, for a solver that iterates on μ and on the control points together (its
-    /// chord angle misses by [`Solved::chord_angle_miss`]). `None` where that prediction
+    /// chord angle misses by [`SegmentSolution::chord_angle_miss`]). `None` where that prediction
     /// is not to be trusted (the piece would be solved from the other leg, or next to the
-    /// circular arc of equal legs); then solve it with [`Solved::new`]. The share `step` of
+    /// circular arc of equal legs); then solve it with [`SegmentSolution::new`]. The share `step` of
     /// this one's own miss is corrected (1 for a whole Newton step, less for a damped one).
-    pub(crate) fn advanced(&self, points: [Point; 3], step: f64) -> Option<Solved> {
+    pub(crate) fn advanced(&self, points: [Point; 3], step: f64) -> Option<SegmentSolution> {
         let arranged = Self::arrange(points).ok()?;
         let (turning, reversed, theta_e) = (arranged.0.turning, arranged.1, arranged.2);
         let sens = self.solution.sensitivity?;
@@ -229,7 +229,7 @@ impl Solved {
     }
 
     /// How far the piece's chord angle is from the one asked for (radians; rounding when
-    /// solved by [`Solved::new`]).
+    /// solved by [`SegmentSolution::new`]).
     pub(crate) fn chord_angle_miss(&self) -> f64 {
         self.solution.g
     }
@@ -325,7 +325,7 @@ impl Solved {
 
     /// The segment, checked.
     pub(crate) fn into_segment(self) -> Result<Segment> {
-        let Solved {
+        let SegmentSolution {
             points,
             alpha,
             tri,
@@ -352,7 +352,7 @@ impl Solved {
         };
         let segment = Segment::new(alpha, piece.form, [first, last], chord, placement);
         segment.check()?;
-        crate::curve::check_visible_ends(std::slice::from_ref(&segment))?;
+        crate::segment::visible::check_visible_ends(std::slice::from_ref(&segment))?;
         Ok(segment)
     }
 }
@@ -361,7 +361,7 @@ impl Solved {
 /// building or checking it: for solvers that iterate on them (a path's G2 joints), whose
 /// final answer is built by [`Segment::from_control_points`] and checked there.
 pub(crate) fn end_curvatures_of(points: [Point; 3], alpha: f64) -> Result<(f64, f64)> {
-    Solved::new(points, alpha)?.end_curvatures()
+    SegmentSolution::new(points, alpha)?.end_curvatures()
 }
 
 /// A planar log-aesthetic curve segment defined like a quadratic Bézier curve: it starts
@@ -442,7 +442,7 @@ impl Segment {
     /// points, or [`Error::NotDrawable`] when no segment of this α fits the triangle.
     pub fn from_control_points(points: [Point; 3], alpha: f64) -> Result<Segment> {
         check_alpha("alpha", alpha)?;
-        Solved::new(points, alpha)?.into_segment()
+        SegmentSolution::new(points, alpha)?.into_segment()
     }
 
     /// The one constructor: the piece of `form` from station `ends[0]` to `ends[1]` (in the
@@ -592,7 +592,7 @@ impl Segment {
     }
 
     /// Signed curvature where the tangent direction is `theta`.
-    pub fn curvature_at_theta(&self, theta: f64) -> Result<f64> {
+    pub fn signed_curvature_at_theta(&self, theta: f64) -> Result<f64> {
         Ok(self.kappa_of(&self.station_at_theta(theta)?))
     }
 

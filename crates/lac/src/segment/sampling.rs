@@ -12,45 +12,12 @@
 //! integrated by the general quadrature. So a sample costs one
 //! evaluation of θ and κ, which the output needs anyway, and no extra quadrature nodes.
 
-use kurbo::{Point, Vec2};
-
-use crate::error::{Error, Result};
-use crate::numeric::{expm1_ratio, ln1p_ratio, Complex};
+use crate::family::sample::{check_count, Sample, MAX_ADAPTIVE_SAMPLES};
+use crate::family::standard_form::integrate::integrate;
+use crate::family::standard_form::{StandardForm, Station};
+use crate::foundation::error::{Error, Result};
+use crate::foundation::numeric::{expm1_ratio, ln1p_ratio, Complex};
 use crate::segment::Segment;
-use crate::standard_form::integrate::integrate;
-use crate::standard_form::{StandardForm, Station};
-
-/// One sample of a segment, in the caller's frame.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Sample {
-    /// Arc length from the first control point.
-    pub s: f64,
-    /// Position.
-    pub point: Point,
-    /// Tangent direction, radians, continuous from the first control point.
-    pub theta: f64,
-    /// Signed curvature (positive for a left turn).
-    pub kappa: f64,
-}
-
-impl Sample {
-    /// The unit tangent (cos θ, sin θ).
-    pub fn tangent(&self) -> Vec2 {
-        Vec2::from_angle(self.theta)
-    }
-
-    /// The centre of curvature, `P + N/κ` with N the left normal: a point of the evolute.
-    pub fn center_of_curvature(&self) -> Point {
-        self.point + self.tangent().turn_90() * (1.0 / self.kappa)
-    }
-}
-
-/// Largest number of samples any sampling call returns.
-const MAX_SAMPLES: usize = 10_000_000;
-
-/// Most samples adaptive sampling may need (see `Curve::sample_adaptive`): about 0.2 s of
-/// work on one core.
-pub const MAX_ADAPTIVE_SAMPLES: usize = 50_000;
 
 impl Segment {
     /// Samples at the given ascending arc lengths within the segment (caller's units,
@@ -175,7 +142,7 @@ impl Segment {
         while target < lo - 1e-9 {
             target += tau;
         }
-        let target = crate::numeric::clamp(target, lo, hi);
+        let target = crate::foundation::numeric::clamp(target, lo, hi);
         let st = self.form.advance_theta(a, target - a.theta)?;
         let z = span(self, a, &st);
         // Across the unit chord: the product of two standard-form lengths would overflow
@@ -334,18 +301,6 @@ fn span(seg: &Segment, a: &Station, b: &Station) -> Complex {
         integrate(&seg.form, a, b, false).value
     } else {
         -integrate(&seg.form, b, a, false).value
-    }
-}
-
-pub(crate) fn check_count(n: usize) -> Result<()> {
-    if (2..=MAX_SAMPLES).contains(&n) {
-        Ok(())
-    } else {
-        Err(Error::OutOfRange {
-            name: "samples",
-            value: n as f64,
-            expected: "between 2 and 10000000 samples",
-        })
     }
 }
 

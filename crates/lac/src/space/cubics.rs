@@ -19,10 +19,11 @@
 //! halved, until at most [`MAX_PIECES`] pieces.
 
 use super::segment::SpaceSegment;
-use crate::error::{Error, Result};
+use super::SpaceCurve;
+use crate::foundation::error::{Error, Result};
+use crate::foundation::tolerance::Tolerance;
+use crate::foundation::vec3::Vec3;
 use crate::quasi::MAX_PIECES;
-use crate::tolerance::Tolerance;
-use crate::vec3::Vec3;
 
 /// Pairs compared per piece.
 const CHECK_STEPS: usize = 48;

@@ -2,8 +2,8 @@
 
 use super::taylor::{Accuracy, Expansion, State};
 use super::Frame;
-use crate::error::{finite, Error, Result};
-use crate::numeric::{expm1_ratio, ln1p_ratio};
+use crate::foundation::error::{finite, Error, Result};
+use crate::foundation::numeric::{expm1_ratio, ln1p_ratio};
 
 /// `f(s) = c (1 + a e s)^(−1/e)`, and `c e^(−a s)` at `e = 0`.
 ///
@@ -187,7 +187,7 @@ pub struct SpaceFormParams {
 ///     torsion: TorsionType::One,
 /// })
 /// .unwrap();
-/// let f = helix.frame_at(1.0).unwrap();
+/// let f = helix.frame_at_s(1.0).unwrap();
 /// assert!((f.curvature - 1.0).abs() < 1e-15 && (f.torsion - 0.5).abs() < 1e-15);
 /// ```
 ///
@@ -357,7 +357,7 @@ impl SpaceForm {
 
     /// The point and Frenet frame at s, by the Taylor integrator of
     /// [`SpaceForm::frames`].
-    pub fn frame_at(&self, s: f64) -> Result<Frame> {
+    pub fn frame_at_s(&self, s: f64) -> Result<Frame> {
         Ok(self.frames(&[s])?.remove(0))
     }
 

@@ -2,7 +2,7 @@
 
 use std::ops::Mul;
 
-use crate::Vec3;
+use crate::foundation::vec3::Vec3;
 
 /// A 3×3 matrix, stored by rows as [`super::Similarity3::rotation`] is.
 #[derive(Clone, Copy, Debug, PartialEq)]

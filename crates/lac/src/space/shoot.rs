@@ -3,8 +3,8 @@
 
 use super::family::SpaceForm;
 use super::taylor::{Accuracy, EndDerivatives, Expansion, Sensitivity, State};
-use crate::numeric::{find_root, quadratic_roots, RootFailure};
-use crate::Vec3;
+use crate::foundation::numeric::{find_root, quadratic_roots, RootFailure};
+use crate::foundation::vec3::Vec3;
 
 /// Most Taylor steps one shot may take before the crossing is declared missing.
 const MAX_STEPS: usize = 400;

@@ -18,8 +18,8 @@
 //! [`Expansion::stepping`]): the same recurrence with κ, τ and x′ multiplied by ds/dσ.
 
 use super::family::SpaceForm;
-use crate::gauss::GAUSS_4;
-use crate::Vec3;
+use crate::foundation::gauss::GAUSS_4;
+use crate::foundation::vec3::Vec3;
 
 /// Order of the series.
 pub(crate) const ORDER: usize = 20;

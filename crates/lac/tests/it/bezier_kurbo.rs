@@ -9,7 +9,7 @@ use kurbo::{
     BezPath, CubicBez, ParamCurve, ParamCurveArclen, ParamCurveCurvature, ParamCurveDeriv, PathSeg,
     Point, Vec2,
 };
-use lac::Curve;
+use lac::ToBezier;
 use lac::Tolerance;
 use lac::{BezierChain, RationalCubic, Segment};
 

@@ -2,6 +2,7 @@
 
 use kurbo::{Point, Vec2};
 use lac::Curve;
+use lac::SegmentChain;
 use lac::{CompoundCurve, Error, NotDrawable, Segment};
 use proptest::prelude::*;
 
@@ -30,15 +31,15 @@ fn the_joint_is_g3() {
         let j = c.joint_s();
         assert!((p.point_at_s(j).unwrap() - q.point_at_s(0.0).unwrap()).hypot() < 1e-14);
         assert!((p.theta_at_s(j).unwrap() - q.theta_at_s(0.0).unwrap()).abs() < 1e-14);
-        let (k0, k1) = (p.curvature_end(), q.curvature_start());
+        let (k0, k1) = (p.signed_curvature_end(), q.signed_curvature_start());
         assert!((k0 - k1).abs() < 1e-13 * k0.abs(), "{a0} {a1}: {k0} {k1}");
         // One-sided second-order differences of κ on each side of the joint.
         let h = 1e-4 * c.arc_length();
-        let left = (3.0 * k0 - 4.0 * c.curvature_at_s(j - h).unwrap()
-            + c.curvature_at_s(j - 2.0 * h).unwrap())
+        let left = (3.0 * k0 - 4.0 * c.signed_curvature_at_s(j - h).unwrap()
+            + c.signed_curvature_at_s(j - 2.0 * h).unwrap())
             / (2.0 * h);
-        let right = (-3.0 * k1 + 4.0 * c.curvature_at_s(j + h).unwrap()
-            - c.curvature_at_s(j + 2.0 * h).unwrap())
+        let right = (-3.0 * k1 + 4.0 * c.signed_curvature_at_s(j + h).unwrap()
+            - c.signed_curvature_at_s(j + 2.0 * h).unwrap())
             / (2.0 * h);
         assert!(
             (left - right).abs() < 1e-5 * left.abs().max(right.abs()),
@@ -67,7 +68,7 @@ fn the_seed_002_joint_conditions_hold() {
             .unwrap(),
         ] {
             let (len, sc) = (c.arc_length(), c.joint_s());
-            let rho = |s: f64| 1.0 / c.curvature_at_s(s).unwrap().abs();
+            let rho = |s: f64| 1.0 / c.signed_curvature_at_s(s).unwrap().abs();
             // Fit c, d on each piece from two points, check a third.
             let fit = |alpha: f64, s0: f64, s1: f64| {
                 let (y0, y1) = (rho(s0).powf(alpha), rho(s1).powf(alpha));
@@ -83,7 +84,7 @@ fn the_seed_002_joint_conditions_hold() {
                     "linearity, {a0} {a1}"
                 );
             }
-            let rc = 1.0 / c.curvature_joint().abs();
+            let rc = 1.0 / c.signed_curvature_joint().abs();
             let want_c1 = a1 / a0 * c0 * rc.powf(a1 - a0);
             assert!(
                 (c1 - want_c1).abs() < 1e-8 * c1.abs(),
@@ -107,11 +108,12 @@ fn equal_slopes_give_the_single_segment() {
             let c = CompoundCurve::from_three_points(three(), alpha, alpha, ratio).unwrap();
             assert!((c.arc_length() - seg.arc_length()).abs() < 1e-13);
             assert!(
-                (c.curvature_start() - seg.curvature_start()).abs()
-                    < 1e-12 * seg.curvature_start().abs()
+                (c.signed_curvature_start() - seg.signed_curvature_start()).abs()
+                    < 1e-12 * seg.signed_curvature_start().abs()
             );
             assert!(
-                (c.curvature_end() - seg.curvature_end()).abs() < 1e-12 * seg.curvature_end().abs()
+                (c.signed_curvature_end() - seg.signed_curvature_end()).abs()
+                    < 1e-12 * seg.signed_curvature_end().abs()
             );
             for u in [0.2, 0.7] {
                 let s = u * c.arc_length();
@@ -192,7 +194,7 @@ fn errors_name_the_problem() {
     let c = CompoundCurve::from_three_points(three(), 0.5, -1.0, 0.5).unwrap();
     for s in [-0.1, 1.5 * c.arc_length(), f64::INFINITY, f64::NAN] {
         assert!(
-            c.point_at_s(s).is_err() && c.curvature_at_s(s).is_err(),
+            c.point_at_s(s).is_err() && c.signed_curvature_at_s(s).is_err(),
             "s = {s}"
         );
     }
@@ -232,7 +234,7 @@ fn the_lcg_is_one_continuous_polyline() {
     // And it is the graph of the curve: ρ ds/dρ from finite differences.
     let s = 0.3 * c.joint_s();
     let h = 1e-5;
-    let rho = |s: f64| 1.0 / c.curvature_at_s(s).unwrap().abs();
+    let rho = |s: f64| 1.0 / c.signed_curvature_at_s(s).unwrap().abs();
     let drho = (rho(s + h) - rho(s - h)) / (2.0 * h);
     let y = (rho(s) / drho.abs()).ln();
     assert!((y - l0.at(rho(s).ln())).abs() < 1e-6);
@@ -287,5 +289,5 @@ fn near_circles_converge_fully() {
         "{}",
         c.lambda()
     );
-    assert!((c.curvature_start() - 9.196_928_382_371_977).abs() < 1e-13 * 9.2);
+    assert!((c.signed_curvature_start() - 9.196_928_382_371_977).abs() < 1e-13 * 9.2);
 }

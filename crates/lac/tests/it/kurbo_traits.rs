@@ -4,6 +4,7 @@
 //! for gives NaN rather than a made-up point.
 
 use kurbo::{ParamCurve, ParamCurveArclen, ParamCurveCurvature, ParamCurveDeriv, Point};
+use lac::SegmentChain;
 use lac::{CompoundCurve, Curve, Segment};
 
 fn p(x: f64, y: f64) -> Point {
@@ -63,7 +64,7 @@ where
         );
         // kurbo's sign: a″ × a′ / |a′|³, the opposite of docs/math.md's signed curvature.
         let k = curve.curvature(t);
-        let ours = curve.curvature_at_s(t * len).unwrap();
+        let ours = curve.signed_curvature_at_s(t * len).unwrap();
         assert!(
             (k + ours).abs() <= 1e-14 * ours.abs(),
             "{name} t={t}: {k} {ours}"

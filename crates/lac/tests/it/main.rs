@@ -3,6 +3,7 @@
 //! One test binary for the crate (linked once); `cargo test -p lac --test it MODULE`
 //! runs one module's tests.
 
+mod architecture;
 mod bezier_kurbo;
 mod common;
 mod compound;

@@ -3,6 +3,7 @@
 //! both sides of each joint (not by the solver's own report).
 
 use kurbo::Point;
+use lac::Closure;
 use lac::{Alphas, Continuity, ControlPolygon, Curve, Error, G2Failure, Path, INFLECTION_LIMIT};
 
 fn pts(list: &[(f64, f64)]) -> Vec<Point> {
@@ -23,7 +24,12 @@ fn continuity(path: &Path) -> (f64, f64, f64) {
     let wrap = |d: f64| (d - std::f64::consts::TAU * (d / std::f64::consts::TAU).round()).abs();
     let scale = pieces
         .iter()
-        .flat_map(|p| [p.curvature_start().abs(), p.curvature_end().abs()])
+        .flat_map(|p| {
+            [
+                p.signed_curvature_start().abs(),
+                p.signed_curvature_end().abs(),
+            ]
+        })
         .fold(0.0, f64::max);
     for i in 0..pairs {
         let (a, b) = (&pieces[i], &pieces[(i + 1) % n]);
@@ -32,8 +38,8 @@ fn continuity(path: &Path) -> (f64, f64, f64) {
         let pb = b.point_at_s(0.0).unwrap();
         let (ta, tb) = (a.theta_at_s(la).unwrap(), b.theta_at_s(0.0).unwrap());
         let (ka, kb) = (
-            a.curvature_at_s(la).unwrap(),
-            b.curvature_at_s(0.0).unwrap(),
+            a.signed_curvature_at_s(la).unwrap(),
+            b.signed_curvature_at_s(0.0).unwrap(),
         );
         let leg = if closed { i } else { i + 1 };
         if let Some(line) = path.straight_pieces().iter().find(|p| p.leg == leg) {
@@ -61,15 +67,12 @@ fn continuity(path: &Path) -> (f64, f64, f64) {
 
 #[test]
 fn g1_path_joins_at_the_leg_midpoints_with_matching_tangents() {
-    let poly = ControlPolygon::open(&pts(&[
-        (0.0, 0.0),
-        (2.0, 0.0),
-        (3.0, 1.5),
-        (3.0, 3.0),
-        (1.0, 4.0),
-    ]))
+    let poly = ControlPolygon::from_points(
+        &pts(&[(0.0, 0.0), (2.0, 0.0), (3.0, 1.5), (3.0, 3.0), (1.0, 4.0)]),
+        Closure::Open,
+    )
     .unwrap();
-    let path = Path::g1(&poly, &Alphas::One(0.5), None).unwrap();
+    let path = Path::from_polygon_g1(&poly, &Alphas::One(0.5), None).unwrap();
     assert_eq!(path.continuity(), Continuity::G1);
     assert_eq!(path.segments().len(), 3);
     assert_eq!(path.joint_fractions(), vec![0.5, 0.5]);
@@ -82,17 +85,20 @@ fn g1_path_joins_at_the_leg_midpoints_with_matching_tangents() {
 
 #[test]
 fn g2_path_has_continuous_curvature_for_every_alpha() {
-    let poly = ControlPolygon::open(&pts(&[
-        (0.0, 0.0),
-        (2.0, 0.0),
-        (3.5, 1.0),
-        (4.0, 3.0),
-        (3.0, 4.5),
-        (1.0, 5.0),
-    ]))
+    let poly = ControlPolygon::from_points(
+        &pts(&[
+            (0.0, 0.0),
+            (2.0, 0.0),
+            (3.5, 1.0),
+            (4.0, 3.0),
+            (3.0, 4.5),
+            (1.0, 5.0),
+        ]),
+        Closure::Open,
+    )
     .unwrap();
     for alpha in [-0.5, 0.0, 0.5, 1.0, 2.0] {
-        let path = Path::g2(&poly, &Alphas::One(alpha), None).unwrap();
+        let path = Path::from_polygon_g2(&poly, &Alphas::One(alpha)).unwrap();
         assert_eq!(path.continuity(), Continuity::G2);
         let (gap, tan, curv) = continuity(&path);
         assert!(
@@ -109,16 +115,19 @@ fn g2_path_has_continuous_curvature_for_every_alpha() {
 fn a_polygon_without_a_g2_clothoid_path_is_reported_at_its_worst_joint_with_a_g1_path() {
     // The clothoid's drawable region is narrow: on this polygon Newton's method stops at the
     // edge of it (a segment's chord angle at its largest) with a jump of about 0.46.
-    let poly = ControlPolygon::open(&pts(&[
-        (0.0, 0.0),
-        (2.0, 0.0),
-        (3.5, 1.0),
-        (4.0, 3.0),
-        (3.0, 4.5),
-        (1.0, 5.0),
-    ]))
+    let poly = ControlPolygon::from_points(
+        &pts(&[
+            (0.0, 0.0),
+            (2.0, 0.0),
+            (3.5, 1.0),
+            (4.0, 3.0),
+            (3.0, 4.5),
+            (1.0, 5.0),
+        ]),
+        Closure::Open,
+    )
     .unwrap();
-    let outcome = Path::g2_or_nearest_g1(&poly, &Alphas::One(-1.0), None).unwrap();
+    let outcome = Path::from_polygon_g2_or_nearest_g1(&poly, &Alphas::One(-1.0)).unwrap();
     match &outcome.failure {
         Some(Error::NoG2Path {
             leg: 1,
@@ -131,22 +140,19 @@ fn a_polygon_without_a_g2_clothoid_path_is_reported_at_its_worst_joint_with_a_g1
     assert_eq!(outcome.path.continuity(), Continuity::G1);
     let (gap, tan, _) = continuity(&outcome.path);
     assert!(gap < 1e-12 && tan < 1e-12);
-    assert!(Path::g2(&poly, &Alphas::One(-1.0), None).is_err());
+    assert!(Path::from_polygon_g2(&poly, &Alphas::One(-1.0)).is_err());
 }
 
 #[test]
 fn closed_g2_path_is_continuous_all_round() {
     // A pentagon-like closed polygon, unequal legs.
-    let poly = ControlPolygon::closed(&pts(&[
-        (0.0, 0.0),
-        (3.0, -0.5),
-        (4.5, 2.0),
-        (2.0, 4.0),
-        (-0.5, 2.5),
-    ]))
+    let poly = ControlPolygon::from_points(
+        &pts(&[(0.0, 0.0), (3.0, -0.5), (4.5, 2.0), (2.0, 4.0), (-0.5, 2.5)]),
+        Closure::Closed,
+    )
     .unwrap();
     for alpha in [-1.0, 0.0, 1.0] {
-        let path = Path::g2(&poly, &Alphas::One(alpha), None).unwrap();
+        let path = Path::from_polygon_g2(&poly, &Alphas::One(alpha)).unwrap();
         assert_eq!(path.joints().len(), 5);
         let (gap, tan, curv) = continuity(&path);
         assert!(
@@ -168,12 +174,13 @@ fn warm_start_from_a_previous_solution_gives_the_same_path() {
         (3.0, 4.5),
         (1.0, 5.0),
     ]);
-    let poly = ControlPolygon::open(&p).unwrap();
-    let first = Path::g2(&poly, &Alphas::One(0.5), None).unwrap();
+    let poly = ControlPolygon::from_points(&p, Closure::Open).unwrap();
+    let first = Path::from_polygon_g2(&poly, &Alphas::One(0.5)).unwrap();
     p[2] = Point::new(3.6, 1.1);
-    let dragged = ControlPolygon::open(&p).unwrap();
-    let cold = Path::g2(&dragged, &Alphas::One(0.5), None).unwrap();
-    let warm = Path::g2(&dragged, &Alphas::One(0.5), Some(&first.joint_fractions())).unwrap();
+    let dragged = ControlPolygon::from_points(&p, Closure::Open).unwrap();
+    let cold = Path::from_polygon_g2(&dragged, &Alphas::One(0.5)).unwrap();
+    let warm =
+        Path::from_polygon_g2_near(&dragged, &Alphas::One(0.5), &first.joint_fractions()).unwrap();
     for (a, b) in cold.joint_fractions().iter().zip(warm.joint_fractions()) {
         assert!((a - b).abs() < 1e-9, "{a} {b}");
     }
@@ -181,25 +188,35 @@ fn warm_start_from_a_previous_solution_gives_the_same_path() {
 
 #[test]
 fn per_segment_alphas_are_used_in_order() {
-    let poly =
-        ControlPolygon::open(&pts(&[(0.0, 0.0), (2.0, 0.0), (3.0, 1.5), (3.0, 3.0)])).unwrap();
-    let path = Path::g2(&poly, &Alphas::PerSegment(vec![0.0, 2.0]), None).unwrap();
+    let poly = ControlPolygon::from_points(
+        &pts(&[(0.0, 0.0), (2.0, 0.0), (3.0, 1.5), (3.0, 3.0)]),
+        Closure::Open,
+    )
+    .unwrap();
+    let path = Path::from_polygon_g2(&poly, &Alphas::PerSegment(vec![0.0, 2.0])).unwrap();
     assert_eq!(path.segments()[0].alpha(), 0.0);
     assert_eq!(path.segments()[1].alpha(), 2.0);
-    let err = Path::g2(&poly, &Alphas::PerSegment(vec![0.5]), None).unwrap_err();
+    let err = Path::from_polygon_g2(&poly, &Alphas::PerSegment(vec![0.5])).unwrap_err();
     assert!(matches!(err, Error::OutOfRange { .. }));
 }
 
 #[test]
 fn failures_name_the_vertex_or_the_leg() {
     // A collinear interior vertex: that segment cannot be drawn.
-    let poly =
-        ControlPolygon::open(&pts(&[(0.0, 0.0), (1.0, 0.0), (2.0, 0.0), (3.0, 1.0)])).unwrap();
-    let err = Path::g1(&poly, &Alphas::One(0.5), None).unwrap_err();
+    let poly = ControlPolygon::from_points(
+        &pts(&[(0.0, 0.0), (1.0, 0.0), (2.0, 0.0), (3.0, 1.0)]),
+        Closure::Open,
+    )
+    .unwrap();
+    let err = Path::from_polygon_g1(&poly, &Alphas::One(0.5), None).unwrap_err();
     assert!(matches!(err, Error::PathSegment { vertex: 1, .. }), "{err}");
     // An S-shaped polygon with α ≥ 0 cannot pass through zero curvature.
-    let s = ControlPolygon::open(&pts(&[(0.0, 0.0), (2.0, 0.0), (3.0, 1.0), (4.0, 1.0)])).unwrap();
-    let outcome = Path::g2_or_nearest_g1(&s, &Alphas::One(0.5), None).unwrap();
+    let s = ControlPolygon::from_points(
+        &pts(&[(0.0, 0.0), (2.0, 0.0), (3.0, 1.0), (4.0, 1.0)]),
+        Closure::Open,
+    )
+    .unwrap();
+    let outcome = Path::from_polygon_g2_or_nearest_g1(&s, &Alphas::One(0.5)).unwrap();
     match outcome.failure {
         Some(Error::NoG2Path {
             leg: 1,
@@ -209,9 +226,17 @@ fn failures_name_the_vertex_or_the_leg() {
     }
     assert_eq!(outcome.path.continuity(), Continuity::G1);
     // Bad input is refused, not panicked on.
-    assert!(ControlPolygon::open(&pts(&[(0.0, 0.0), (1.0, 0.0)])).is_err());
-    assert!(ControlPolygon::open(&pts(&[(0.0, 0.0), (0.0, 0.0), (1.0, 1.0)])).is_err());
-    assert!(ControlPolygon::open(&pts(&[(0.0, f64::NAN), (1.0, 0.0), (1.0, 1.0)])).is_err());
+    assert!(ControlPolygon::from_points(&pts(&[(0.0, 0.0), (1.0, 0.0)]), Closure::Open).is_err());
+    assert!(ControlPolygon::from_points(
+        &pts(&[(0.0, 0.0), (0.0, 0.0), (1.0, 1.0)]),
+        Closure::Open
+    )
+    .is_err());
+    assert!(ControlPolygon::from_points(
+        &pts(&[(0.0, f64::NAN), (1.0, 0.0), (1.0, 1.0)]),
+        Closure::Open
+    )
+    .is_err());
 }
 
 #[test]
@@ -219,18 +244,21 @@ fn s_shaped_g2_path_passes_through_zero_curvature_on_a_straight_piece() {
     // Turns left at P1, P2, then right at P3, P4: one inflection leg (P2–P3).
     // (A segment from an inflection point is flat there: its leg on the inflection side is
     // about 2–5 times its other leg, so the inflection leg is long.)
-    let poly = ControlPolygon::open(&pts(&[
-        (0.0, 0.0),
-        (1.0, 0.0),
-        (2.0, 0.5),
-        (5.0, 2.5),
-        (6.0, 3.0),
-        (7.0, 3.0),
-    ]))
+    let poly = ControlPolygon::from_points(
+        &pts(&[
+            (0.0, 0.0),
+            (1.0, 0.0),
+            (2.0, 0.5),
+            (5.0, 2.5),
+            (6.0, 3.0),
+            (7.0, 3.0),
+        ]),
+        Closure::Open,
+    )
     .unwrap();
     for alpha in [-1.0, -0.75, -0.5, -0.25] {
-        let path =
-            Path::g2(&poly, &Alphas::One(alpha), None).unwrap_or_else(|e| panic!("α {alpha}: {e}"));
+        let path = Path::from_polygon_g2(&poly, &Alphas::One(alpha))
+            .unwrap_or_else(|e| panic!("α {alpha}: {e}"));
         assert_eq!(path.continuity(), Continuity::G2);
         let lines = path.straight_pieces();
         assert_eq!(lines.len(), 1);
@@ -242,7 +270,7 @@ fn s_shaped_g2_path_passes_through_zero_curvature_on_a_straight_piece() {
         // The curvature changes sign across the straight piece, and the samples run
         // through it with κ = 0 and an unbroken tangent.
         let k = path.segments();
-        assert!(k[1].curvature_end() > 0.0 && k[2].curvature_start() < 0.0);
+        assert!(k[1].signed_curvature_end() > 0.0 && k[2].signed_curvature_start() < 0.0);
         let samples = path.sample_by_arc_length(400).unwrap();
         assert!((samples[399].s - path.arc_length()).abs() < 1e-12);
         assert!((samples[399].point - Point::new(7.0, 3.0)).hypot() < 1e-12);
@@ -252,11 +280,12 @@ fn s_shaped_g2_path_passes_through_zero_curvature_on_a_straight_piece() {
             assert!((chord - (w[1].s - w[0].s)).abs() < 1e-3 * (w[1].s - w[0].s));
         }
         // The warm start reproduces it.
-        let again = Path::g2(&poly, &Alphas::One(alpha), Some(&path.joint_fractions())).unwrap();
+        let again = Path::from_polygon_g2_near(&poly, &Alphas::One(alpha), &path.joint_fractions())
+            .unwrap();
         assert!((again.arc_length() - path.arc_length()).abs() < 1e-9);
     }
     // α ≥ 0 next to the inflection: refused with the G1 path (unchanged).
-    let outcome = Path::g2_or_nearest_g1(&poly, &Alphas::One(0.5), None).unwrap();
+    let outcome = Path::from_polygon_g2_or_nearest_g1(&poly, &Alphas::One(0.5)).unwrap();
     assert!(matches!(
         outcome.failure,
         Some(Error::NoG2Path {
@@ -266,7 +295,7 @@ fn s_shaped_g2_path_passes_through_zero_curvature_on_a_straight_piece() {
     ));
     // α too steep to resolve its zero curvature: refused, naming the leg.
     let steep = Alphas::PerSegment(vec![0.5, -3.0, -3.0, 0.5]);
-    let err = Path::g2(&poly, &steep, None).unwrap_err();
+    let err = Path::from_polygon_g2(&poly, &steep).unwrap_err();
     assert!(
         matches!(
             err,
@@ -278,15 +307,12 @@ fn s_shaped_g2_path_passes_through_zero_curvature_on_a_straight_piece() {
         "{err:?}"
     );
     // A zigzag: both legs of one vertex inflect.
-    let zig = ControlPolygon::open(&pts(&[
-        (0.0, 0.0),
-        (2.0, 0.0),
-        (3.0, 1.0),
-        (4.0, 1.0),
-        (5.0, 2.0),
-    ]))
+    let zig = ControlPolygon::from_points(
+        &pts(&[(0.0, 0.0), (2.0, 0.0), (3.0, 1.0), (4.0, 1.0), (5.0, 2.0)]),
+        Closure::Open,
+    )
     .unwrap();
-    let err = Path::g2(&zig, &Alphas::One(-1.0), None).unwrap_err();
+    let err = Path::from_polygon_g2(&zig, &Alphas::One(-1.0)).unwrap_err();
     assert!(
         matches!(
             err,
@@ -322,9 +348,9 @@ fn figure_eight(first: usize) -> Vec<Point> {
 
 #[test]
 fn closed_figure_eight_has_two_straight_pieces() {
-    let poly = ControlPolygon::closed(&figure_eight(0)).unwrap();
+    let poly = ControlPolygon::from_points(&figure_eight(0), Closure::Closed).unwrap();
     for alpha in [-1.0, -0.5] {
-        let path = Path::g2(&poly, &Alphas::One(alpha), None).unwrap();
+        let path = Path::from_polygon_g2(&poly, &Alphas::One(alpha)).unwrap();
         assert_eq!(path.straight_pieces().len(), 2);
         let (gap, tan, curv) = continuity(&path);
         assert!(
@@ -374,14 +400,14 @@ mod properties {
         /// curve's own evaluation; a failed G2 always names a joint and offers a G1 path.
         #[test]
         fn every_ok_path_is_verified((p, closed, alpha) in polygon()) {
-            let poly = if closed { ControlPolygon::closed(&p) } else { ControlPolygon::open(&p) };
+            let poly = if closed { ControlPolygon::from_points(&p, Closure::Closed) } else { ControlPolygon::from_points(&p, Closure::Open) };
             let Ok(poly) = poly else { return Ok(()); };
             let alphas = Alphas::One(alpha);
-            if let Ok(path) = Path::g1(&poly, &alphas, None) {
+            if let Ok(path) = Path::from_polygon_g1(&poly, &alphas, None) {
                 let (gap, tan, _) = continuity(&path);
                 prop_assert!(gap < 1e-11 && tan < 1e-11, "{gap} {tan}");
             }
-            if let Ok(outcome) = Path::g2_or_nearest_g1(&poly, &alphas, None) {
+            if let Ok(outcome) = Path::from_polygon_g2_or_nearest_g1(&poly, &alphas) {
                 let (gap, tan, curv) = continuity(&outcome.path);
                 prop_assert!(gap < 1e-11 && tan < 1e-11, "{gap} {tan}");
                 match outcome.failure {
@@ -401,10 +427,10 @@ mod properties {
         /// verified path, never a panic.
         #[test]
         fn arbitrary_points_never_panic(p in wild(), closed in any::<bool>(), alpha in -3f64..3.0) {
-            let poly = if closed { ControlPolygon::closed(&p) } else { ControlPolygon::open(&p) };
+            let poly = if closed { ControlPolygon::from_points(&p, Closure::Closed) } else { ControlPolygon::from_points(&p, Closure::Open) };
             if let Ok(poly) = poly {
-                let _ = Path::g1(&poly, &Alphas::One(alpha), None);
-                if let Ok(path) = Path::g2(&poly, &Alphas::One(alpha), None) {
+                let _ = Path::from_polygon_g1(&poly, &Alphas::One(alpha), None);
+                if let Ok(path) = Path::from_polygon_g2(&poly, &Alphas::One(alpha)) {
                     prop_assert!(path.max_curvature_jump() <= 1e-9);
                 }
             }
@@ -442,12 +468,12 @@ fn share_of_random_polygons_with_a_g2_path() {
                     dir += t;
                 }
                 let poly = if closed {
-                    ControlPolygon::closed(&p)
+                    ControlPolygon::from_points(&p, Closure::Closed)
                 } else {
-                    ControlPolygon::open(&p)
+                    ControlPolygon::from_points(&p, Closure::Open)
                 };
                 let Ok(poly) = poly else { continue };
-                if let Ok(path) = Path::g2(&poly, &Alphas::One(alpha), None) {
+                if let Ok(path) = Path::from_polygon_g2(&poly, &Alphas::One(alpha)) {
                     solved += 1;
                     worst = worst.max(continuity(&path).2);
                 }
@@ -506,10 +532,10 @@ fn share_of_random_polygons_with_inflections_with_a_g2_path() {
                 dir += t;
                 before = t;
             }
-            let Ok(poly) = ControlPolygon::open(&p) else {
+            let Ok(poly) = ControlPolygon::from_points(&p, Closure::Open) else {
                 continue;
             };
-            match Path::g2(&poly, &Alphas::One(alpha), None) {
+            match Path::from_polygon_g2(&poly, &Alphas::One(alpha)) {
                 Ok(path) => {
                     solved += 1;
                     lines += path.straight_pieces().len();
@@ -542,9 +568,9 @@ fn a_closed_path_whose_closing_leg_inflects_ends_where_it_starts() {
     // A figure eight started next to a crossing: the leg that closes the polygon is an
     // inflection leg, so the path's last piece is the straight piece on it, which ends
     // where the first segment starts.
-    let poly = ControlPolygon::closed(&figure_eight(1)).unwrap();
+    let poly = ControlPolygon::from_points(&figure_eight(1), Closure::Closed).unwrap();
     for alpha in [-1.0, -0.5] {
-        let path = Path::g2(&poly, &Alphas::One(alpha), None).unwrap();
+        let path = Path::from_polygon_g2(&poly, &Alphas::One(alpha)).unwrap();
         let legs: Vec<usize> = path.straight_pieces().iter().map(|p| p.leg).collect();
         assert_eq!(legs, [5, 11]);
         // (To rounding: the segment's first point is evaluated from its placement.)
@@ -574,9 +600,9 @@ fn an_inflection_that_cannot_reach_zero_curvature_is_named_not_a_numerical_failu
         (6.66383536450807, -7.76828562779175),
     ]
     .map(|(x, y)| Point::new(x, y));
-    let poly = ControlPolygon::open(&p).unwrap();
+    let poly = ControlPolygon::from_points(&p, Closure::Open).unwrap();
     let alphas = Alphas::One(-1.5);
-    match Path::g2(&poly, &alphas, None) {
+    match Path::from_polygon_g2(&poly, &alphas) {
         Err(Error::NoG2Path {
             leg: 4,
             reason: G2Failure::InflectionUnresolved { alpha },
@@ -586,13 +612,13 @@ fn an_inflection_that_cannot_reach_zero_curvature_is_named_not_a_numerical_failu
     // No G1 path can be drawn either (the segment at P2 is not drawable at α = −1.5 with
     // its joints at the fractions reached or at the midpoints): the G2 reason is the error.
     assert!(matches!(
-        Path::g2_or_nearest_g1(&poly, &alphas, None),
+        Path::from_polygon_g2_or_nearest_g1(&poly, &alphas),
         Err(Error::NoG2Path {
             reason: G2Failure::InflectionUnresolved { .. },
             ..
         })
     ));
     // A little closer to 0, the same polygon has its G2 path through both inflections.
-    let path = Path::g2(&poly, &Alphas::One(-1.4), None).unwrap();
+    let path = Path::from_polygon_g2(&poly, &Alphas::One(-1.4)).unwrap();
     assert_eq!(path.straight_pieces().len(), 2);
 }

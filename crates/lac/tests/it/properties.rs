@@ -114,7 +114,7 @@ proptest! {
         if let Ok(seg) = Segment::from_control_points(pts, alpha) {
             let l = seg.arc_length();
             prop_assert!(l.is_finite() && l > 0.0);
-            prop_assert!(seg.curvature_start().is_finite() && seg.curvature_end().is_finite());
+            prop_assert!(seg.signed_curvature_start().is_finite() && seg.signed_curvature_end().is_finite());
             for s in seg.sample_by_arc_length(9).unwrap() {
                 prop_assert!(s.point.x.is_finite() && s.point.y.is_finite() && s.kappa.is_finite());
             }

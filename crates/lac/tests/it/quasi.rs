@@ -7,6 +7,7 @@ use kurbo::{ParamCurve, Point};
 use lac::Curve;
 use lac::Tolerance;
 use lac::{CompoundCurve, Error, Monotonicity, QuasiCurve, RationalCubic, Segment};
+use lac::{SegmentChain, ToBezier};
 
 fn seg(p: [(f64, f64); 3], alpha: f64) -> Segment {
     Segment::from_control_points(p.map(|(x, y)| Point::new(x, y)), alpha).unwrap()
@@ -15,7 +16,7 @@ fn seg(p: [(f64, f64); 3], alpha: f64) -> Segment {
 /// max d over the chain, by dense sampling of each piece, relative to the arc length.
 fn dense_max_deviation(seg: &Segment, q: &QuasiCurve) -> f64 {
     let theta0 = seg.theta_at_s(0.0).unwrap();
-    let left = seg.curvature_start() > 0.0;
+    let left = seg.signed_curvature_start() > 0.0;
     let mut max = 0.0f64;
     for piece in &q.pieces {
         for i in 0..=400 {
@@ -101,7 +102,7 @@ fn an_isosceles_triangle_gives_the_exact_circular_arc() {
         assert!((u - 2.0 * c / (1.0 + 2.0 * c)).abs() < 1e-14);
         // Every point of the rational cubic is on the circle.
         let centre = s.sample_by_arc_length(2).unwrap()[0].center_of_curvature();
-        let r = 1.0 / s.curvature_start();
+        let r = 1.0 / s.signed_curvature_start();
         for i in 0..=20 {
             let d = (p.curve.eval(i as f64 / 20.0) - centre).hypot();
             assert!((d - r).abs() < 1e-14 * r);
@@ -136,8 +137,8 @@ fn the_seed_setting_fits_within_its_reported_deviation() {
                 &q,
                 Point::ZERO,
                 Point::new(1.0, r),
-                s.curvature_start(),
-                s.curvature_end(),
+                s.signed_curvature_start(),
+                s.signed_curvature_end(),
                 1.0,
             );
         }
@@ -157,7 +158,7 @@ fn a_tolerance_is_met_with_proven_monotone_g2_pieces() {
     ];
     for (p, alpha) in cases {
         let s = seg(p, alpha);
-        let want = if s.curvature_end() > s.curvature_start() {
+        let want = if s.signed_curvature_end() > s.signed_curvature_start() {
             Monotonicity::Increasing
         } else {
             Monotonicity::Decreasing
@@ -179,7 +180,14 @@ fn a_tolerance_is_met_with_proven_monotone_g2_pieces() {
                     assert_eq!(piece.monotonicity.verdict, want);
                 }
                 let [a, _, c] = s.control_points();
-                assert_g2_chain(&q, a, c, s.curvature_start(), s.curvature_end(), scale);
+                assert_g2_chain(
+                    &q,
+                    a,
+                    c,
+                    s.signed_curvature_start(),
+                    s.signed_curvature_end(),
+                    scale,
+                );
             }
         }
         // Plain cubics have equal weights; rational ones need fewer pieces.
@@ -210,7 +218,7 @@ fn compound_curves_are_approximated_across_the_joint() {
     .unwrap();
     let q = c.to_rational_cubics(Tolerance::Relative(1e-8)).unwrap();
     assert!(q.max <= 1e-8);
-    let want = if c.curvature_end() > c.curvature_start() {
+    let want = if c.signed_curvature_end() > c.signed_curvature_start() {
         Monotonicity::Increasing
     } else {
         Monotonicity::Decreasing
@@ -223,8 +231,8 @@ fn compound_curves_are_approximated_across_the_joint() {
         &q,
         Point::ZERO,
         Point::new(1.6, 0.9),
-        c.curvature_start(),
-        c.curvature_end(),
+        c.signed_curvature_start(),
+        c.signed_curvature_end(),
         1.0,
     );
     let total = c.pieces()[0].turning_angle() + c.pieces()[1].turning_angle();

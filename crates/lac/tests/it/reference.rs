@@ -203,8 +203,14 @@ fn segments_match_the_40_digit_reference() {
         } else {
             &mut curv
         };
-        curv.see((seg.curvature_start() - c.curvature_start).abs() / kmax, id);
-        curv.see((seg.curvature_end() - c.curvature_end).abs() / kmax, id);
+        curv.see(
+            (seg.signed_curvature_start() - c.curvature_start).abs() / kmax,
+            id,
+        );
+        curv.see(
+            (seg.signed_curvature_end() - c.curvature_end).abs() / kmax,
+            id,
+        );
         // Single evaluations, and the Hermite-integrated samples (21 samples hit every u).
         let samples = seg.sample_by_arc_length(21).unwrap();
         for r in &c.samples {
@@ -219,7 +225,7 @@ fn segments_match_the_40_digit_reference() {
                 format!("{} u {} (sampled)", id(), r.u)
             });
             curv.see(
-                (seg.curvature_at_s(s).unwrap() - r.kappa).abs() / kmax,
+                (seg.signed_curvature_at_s(s).unwrap() - r.kappa).abs() / kmax,
                 || format!("{} u {}", id(), r.u),
             );
             curv.see((samples[k].kappa - r.kappa).abs() / kmax, || {

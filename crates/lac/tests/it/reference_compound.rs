@@ -104,9 +104,9 @@ fn compound_curves_match_the_40_digit_reference() {
         worst_len = worst_len.max((curve.joint_s() - c.joint_s).abs() / c.arc_length);
         let kmax = c.curvature_start.abs().max(c.curvature_end.abs());
         for (got, want) in [
-            (curve.curvature_start(), c.curvature_start),
-            (curve.curvature_joint(), c.curvature_joint),
-            (curve.curvature_end(), c.curvature_end),
+            (curve.signed_curvature_start(), c.curvature_start),
+            (curve.signed_curvature_joint(), c.curvature_joint),
+            (curve.signed_curvature_end(), c.curvature_end),
         ] {
             worst_curv = worst_curv.max((got - want).abs() / kmax);
         }
@@ -125,7 +125,7 @@ fn compound_curves_match_the_40_digit_reference() {
                     where_pos = format!("{} u {} {what}", id(), r.u);
                 }
             }
-            let kerr = (curve.curvature_at_s(s).unwrap() - r.kappa).abs() / kmax;
+            let kerr = (curve.signed_curvature_at_s(s).unwrap() - r.kappa).abs() / kmax;
             let terr = (curve.theta_at_s(s).unwrap() - r.theta).abs();
             if kerr > worst_curv {
                 worst_curv = kerr;

@@ -28,7 +28,9 @@ fn evaluations_by_s_and_by_theta_agree() {
                 (seg.point_at_theta(theta).unwrap() - seg.point_at_s(s).unwrap()).hypot() < 1e-13
             );
             assert!(
-                (seg.curvature_at_theta(theta).unwrap() - seg.curvature_at_s(s).unwrap()).abs()
+                (seg.signed_curvature_at_theta(theta).unwrap()
+                    - seg.signed_curvature_at_s(s).unwrap())
+                .abs()
                     < 1e-13
             );
             let t = seg.tangent_at_s(s).unwrap();
@@ -51,8 +53,8 @@ fn a_right_turn_has_negative_curvature_and_a_mirror_image_mirrors_everything() {
         0.5,
     )
     .unwrap();
-    assert!(right.curvature_start() < 0.0 && left.curvature_start() > 0.0);
-    assert!((right.curvature_end() + left.curvature_end()).abs() < 1e-14);
+    assert!(right.signed_curvature_start() < 0.0 && left.signed_curvature_start() > 0.0);
+    assert!((right.signed_curvature_end() + left.signed_curvature_end()).abs() < 1e-14);
     for u in [0.1, 0.5, 0.9] {
         let (p, q) = (
             right.point_at_s(u * 2.0).unwrap(),
@@ -76,7 +78,7 @@ fn reversing_the_control_points_reverses_the_curve() {
     .unwrap();
     let len = fwd.arc_length();
     assert!((back.arc_length() - len).abs() < 1e-14);
-    assert!((fwd.curvature_start() + back.curvature_end()).abs() < 1e-13);
+    assert!((fwd.signed_curvature_start() + back.signed_curvature_end()).abs() < 1e-13);
     for u in [0.0, 0.3, 0.7, 1.0] {
         let p = fwd.point_at_s(u * len).unwrap();
         let q = back.point_at_s((1.0 - u) * len).unwrap();
@@ -97,7 +99,7 @@ fn an_isosceles_triangle_is_a_circular_arc_for_every_alpha() {
         )
         .unwrap();
         assert!(seg.is_circle());
-        assert!((seg.curvature_start() - seg.curvature_end()).abs() < 1e-15);
+        assert!((seg.signed_curvature_start() - seg.signed_curvature_end()).abs() < 1e-15);
     }
 }
 

@@ -10,6 +10,7 @@ use crate::common::space_inputs;
 
 use std::collections::BTreeMap;
 
+use lac::SpaceCurve;
 use lac::{SpaceSegment, TorsionType};
 use space_inputs::{check_ends, generate, Case};
 
@@ -167,7 +168,10 @@ fn warm_start_follows_a_drag_continuously() {
             assert!(pos < 1e-9 && tan < 1e-9, "{pos:e} {tan:e}");
             // The drawn curve moves about as much as the point did (no jump to another
             // branch): samples at equal fractions of the length stay within 1/50 of the chord.
-            let (a, b) = (seg.sample(17).unwrap(), next.sample(17).unwrap());
+            let (a, b) = (
+                seg.sample_by_arc_length(17).unwrap(),
+                next.sample_by_arc_length(17).unwrap(),
+            );
             let jump = a
                 .iter()
                 .zip(&b)

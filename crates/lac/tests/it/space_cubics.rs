@@ -3,6 +3,7 @@
 //! the chain found by a dense search), the joins C1, the ends on the control polygon, and a
 //! tolerance that needs too many pieces refused.
 
+use lac::SpaceCurve;
 use lac::{Error, SpaceCubics, SpaceSegment, SpaceShape, Tolerance, TorsionType, Vec3};
 
 struct Rng(u64);

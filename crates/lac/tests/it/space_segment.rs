@@ -3,6 +3,7 @@
 //! classical Runge–Kutta with step doubling on the closed-form κ(s), τ(s) written out
 //! below, not the library's Taylor integrator).
 
+use lac::SpaceCurve;
 use lac::{Error, NotDrawable, SpaceForm, SpaceFormParams, SpaceSegment, SpaceShape};
 use lac::{TorsionType, Vec3};
 
@@ -72,8 +73,8 @@ fn check_ends(seg: &SpaceSegment, p: [Vec3; 4]) -> (f64, f64) {
 /// Four control points from a standard-form piece, moved by a rotation, scale, translation
 /// and (optionally) a mirror: solvable by construction.
 fn constructed(rng: &mut Rng, form: &SpaceForm, s_end: f64) -> [Vec3; 4] {
-    let f0 = form.frame_at(0.0).unwrap();
-    let f1 = form.frame_at(s_end).unwrap();
+    let f0 = form.frame_at_s(0.0).unwrap();
+    let f1 = form.frame_at_s(s_end).unwrap();
     let (a, b) = (0.3 + 0.5 * rng.next(), 0.3 + 0.5 * rng.next());
     let mut p = [
         f0.point,
@@ -181,7 +182,7 @@ fn solved_segments_reproduce_ends_and_tangents_within_1e_9() {
 fn frames_are_orthonormal_right_handed_and_match_the_ends() {
     let p = twisted();
     let seg = SpaceSegment::from_control_points(p, shape(0.0, 0.0, 0.2, TorsionType::One)).unwrap();
-    let frames = seg.sample(33).unwrap();
+    let frames = seg.sample_by_arc_length(33).unwrap();
     assert_eq!(frames.len(), 33);
     assert!(frames[0].point.distance(p[0]) < 1e-12);
     assert!(frames[32].point.distance(p[3]) < 1e-9 * 3.0);
@@ -219,7 +220,7 @@ fn curvature_and_torsion_graphs_are_lines_of_slopes_alpha_and_beta() {
             }
         }
         // Finite differences of the sampled radii give the same ordinate.
-        let frames = seg.sample(2001).unwrap();
+        let frames = seg.sample_by_arc_length(2001).unwrap();
         let lcg = seg.log_curvature_graph(2001).unwrap();
         let i = 1000;
         let (r0, r1) = (1.0 / frames[i - 1].curvature, 1.0 / frames[i + 1].curvature);
@@ -241,7 +242,7 @@ fn coplanar_points_give_the_planar_segment() {
     assert!(seg.is_planar() && seg.standard_form().is_none() && seg.transform().is_none());
     let planar = seg.planar().unwrap();
     assert_eq!(planar.alpha(), 0.5);
-    let frames = seg.sample(17).unwrap();
+    let frames = seg.sample_by_arc_length(17).unwrap();
     assert!(frames[0].point.distance(p[0]) < 1e-12);
     assert!(frames[16].point.distance(p[3]) < 1e-12);
     assert!(frames[16].tangent.angle_to(p[3] - p[2]) < 1e-12);
@@ -326,7 +327,7 @@ fn too_large_omega_reports_the_largest_that_works() {
 }
 
 mod never_panics {
-    use lac::{SpaceSegment, SpaceShape, TorsionType, Vec3};
+    use lac::{SpaceCurve, SpaceSegment, SpaceShape, TorsionType, Vec3};
     use proptest::prelude::*;
 
     fn coord() -> impl Strategy<Value = f64> {
@@ -357,7 +358,7 @@ mod never_panics {
             let torsion = if two { TorsionType::Two } else { TorsionType::One };
             let shape = SpaceShape { alpha, beta, omega, torsion };
             if let Ok(seg) = SpaceSegment::from_control_points(p, shape) {
-                let frames = seg.sample(5).unwrap();
+                let frames = seg.sample_by_arc_length(5).unwrap();
                 prop_assert!(frames.iter().all(|f| f.point.is_finite()));
             }
         }

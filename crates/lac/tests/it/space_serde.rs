@@ -3,6 +3,7 @@
 //! form read from JSON is checked as `SpaceForm::new` checks it.
 #![cfg(feature = "serde")]
 
+use lac::SpaceCurve;
 use lac::{
     BoundBy, Error, SpaceForm, SpaceFormParams, SpaceSegment, SpaceShape, TorsionType, TurningCell,
     Vec3,
@@ -109,7 +110,7 @@ fn frames_shapes_and_similarities_round_trip() {
         serde_json::from_value::<lac::Similarity3>(value).unwrap(),
         transform
     );
-    for frame in seg.sample(3).unwrap() {
+    for frame in seg.sample_by_arc_length(3).unwrap() {
         let text = serde_json::to_string(&frame).unwrap();
         assert_eq!(serde_json::from_str::<lac::Frame>(&text).unwrap(), frame);
     }

@@ -4,6 +4,7 @@
 //! curvature; spans that must inflect for α ≥ 0 refused and named.
 
 use kurbo::Point;
+use lac::{Closure, SegmentChain};
 use lac::{Curve, Error, G2Failure, Spline, INFLECTION_LIMIT};
 
 /// The largest (gap, tangent jump, relative curvature jump) over the joints at the points,
@@ -23,11 +24,11 @@ fn continuity(s: &Spline) -> (f64, f64, f64) {
         let i = spans[k];
         if k == 0 || spans[k - 1] != i {
             gap = gap.max((p.start_point() - pts[i]).hypot());
-            scale = scale.max(p.curvature_start().abs());
+            scale = scale.max(p.signed_curvature_start().abs());
         }
         if k + 1 == n || spans[k + 1] != i {
             gap = gap.max((p.end_point() - pts[(i + 1) % pts.len()]).hypot());
-            scale = scale.max(p.curvature_end().abs());
+            scale = scale.max(p.signed_curvature_end().abs());
         }
     }
     for k in 0..pairs {
@@ -37,8 +38,8 @@ fn continuity(s: &Spline) -> (f64, f64, f64) {
         let d = a.theta_at_s(la).unwrap() - b.theta_at_s(0.0).unwrap();
         tan = tan.max((d - std::f64::consts::TAU * (d / std::f64::consts::TAU).round()).abs());
         let (ka, kb) = (
-            a.curvature_at_s(la).unwrap(),
-            b.curvature_at_s(0.0).unwrap(),
+            a.signed_curvature_at_s(la).unwrap(),
+            b.signed_curvature_at_s(0.0).unwrap(),
         );
         if spans[k] == spans[(k + 1) % n] {
             let flat = ka.abs().max(kb.abs()) <= INFLECTION_LIMIT * scale;
@@ -64,15 +65,16 @@ fn arc(count: usize, span: f64) -> Vec<Point> {
 #[test]
 fn open_and_closed_splines_are_g2_for_every_alpha() {
     for alpha in [-1.0, -0.5, 0.0, 0.5, 1.0, 2.0] {
-        let open = Spline::g2(&arc(7, 4.0), alpha, false, None)
+        let open = Spline::from_points(&arc(7, 4.0), alpha, Closure::Open, None)
             .unwrap_or_else(|e| panic!("open α {alpha}: {e}"));
         let (gap, tan, curv) = continuity(&open);
         assert!(
             gap < 1e-12 && tan < 1e-12 && curv <= 1e-9,
             "α {alpha}: {gap} {tan} {curv}"
         );
-        let closed = Spline::g2(&arc(8, std::f64::consts::TAU), alpha, true, None)
-            .unwrap_or_else(|e| panic!("closed α {alpha}: {e}"));
+        let closed =
+            Spline::from_points(&arc(8, std::f64::consts::TAU), alpha, Closure::Closed, None)
+                .unwrap_or_else(|e| panic!("closed α {alpha}: {e}"));
         assert_eq!(closed.pieces().len(), 8);
         let (gap, tan, curv) = continuity(&closed);
         assert!(
@@ -82,7 +84,7 @@ fn open_and_closed_splines_are_g2_for_every_alpha() {
         assert!((closed.turning() - std::f64::consts::TAU).abs() < 1e-9);
     }
     // Given end tangents are kept.
-    let s = Spline::g2(&arc(5, 2.0), 0.5, false, Some([1.55, 3.1])).unwrap();
+    let s = Spline::from_points(&arc(5, 2.0), 0.5, Closure::Open, Some([1.55, 3.1])).unwrap();
     assert_eq!(s.angles()[0], 1.55);
     assert!((s.pieces()[0].theta_at_s(0.0).unwrap() - 1.55).abs() < 1e-12);
 }
@@ -96,16 +98,18 @@ fn a_span_that_must_inflect_is_named_for_alpha_at_least_zero() {
         Point::new(6.0, -0.5),
         Point::new(8.0, 0.0),
     ];
-    match Spline::g2(&points, 0.5, false, None) {
+    match Spline::from_points(&points, 0.5, Closure::Open, None) {
         Err(Error::NoG2Spline {
             reason: G2Failure::SpanInflects,
             span,
         }) => assert!(span <= 3),
         other => panic!("{other:?}"),
     }
-    assert!(Spline::g2(&points[..2], 0.5, false, None).is_err());
-    assert!(Spline::g2(&[points[0], points[0], points[1]], 0.5, false, None).is_err());
-    assert!(Spline::g2(&points, f64::NAN, false, None).is_err());
+    assert!(Spline::from_points(&points[..2], 0.5, Closure::Open, None).is_err());
+    assert!(
+        Spline::from_points(&[points[0], points[0], points[1]], 0.5, Closure::Open, None).is_err()
+    );
+    assert!(Spline::from_points(&points, f64::NAN, Closure::Open, None).is_err());
 }
 
 /// Points on a wave: for α < 0 the spline passes through an inflection on the spans where
@@ -117,7 +121,8 @@ fn spans_through_inflections_for_alpha_below_zero() {
         .map(|i| Point::new(i as f64, (0.9 * i as f64 + 0.3).sin()))
         .collect();
     for alpha in [-0.1, -0.25, -0.5, -0.75, -1.0] {
-        let s = Spline::g2(&wave, alpha, false, None).unwrap_or_else(|e| panic!("{alpha}: {e}"));
+        let s = Spline::from_points(&wave, alpha, Closure::Open, None)
+            .unwrap_or_else(|e| panic!("{alpha}: {e}"));
         let (gap, tan, curv) = continuity(&s);
         assert!(
             gap < 1e-11 && tan < 1e-11 && curv <= 1e-9,
@@ -147,7 +152,7 @@ fn spans_through_inflections_for_alpha_below_zero() {
             Point::new(2.0 * t.sin(), (2.0 * t).sin())
         })
         .collect();
-    let s = Spline::g2(&eight, -0.5, true, None).unwrap();
+    let s = Spline::from_points(&eight, -0.5, Closure::Closed, None).unwrap();
     let (gap, tan, curv) = continuity(&s);
     assert!(
         gap < 1e-11 && tan < 1e-11 && curv <= 1e-9,
@@ -190,7 +195,16 @@ fn share_of_random_convex_point_sets_with_a_g2_spline() {
                     p.push(last + kurbo::Vec2::from_angle(dir) * (0.5 + next()));
                     dir += t;
                 }
-                match Spline::g2(&p, alpha, closed, None) {
+                match Spline::from_points(
+                    &p,
+                    alpha,
+                    if closed {
+                        Closure::Closed
+                    } else {
+                        Closure::Open
+                    },
+                    None,
+                ) {
                     Ok(s) => {
                         solved += 1;
                         let (gap, tan, curv) = continuity(&s);
@@ -246,7 +260,7 @@ fn share_of_random_point_sets_turning_either_way() {
                 let turn = (15.0 + 60.0 * next()).to_radians();
                 dir += if next() < 0.5 { turn } else { -turn };
             }
-            match Spline::g2(&p, alpha, false, None) {
+            match Spline::from_points(&p, alpha, Closure::Open, None) {
                 Ok(s) => {
                     solved += 1;
                     inflections += s.inflections().len();
@@ -289,7 +303,7 @@ mod properties {
             alpha in -3f64..3.0,
         ) {
             let p: Vec<Point> = p.into_iter().map(|(x, y)| Point::new(x, y)).collect();
-            if let Ok(s) = Spline::g2(&p, alpha, closed, None) {
+            if let Ok(s) = Spline::from_points(&p, alpha, if closed { Closure::Closed } else { Closure::Open }, None) {
                 let (gap, tan, curv) = continuity(&s);
                 prop_assert!(gap < 1e-10 && tan < 1e-10 && curv <= 1e-9, "{} {} {}", gap, tan, curv);
             }

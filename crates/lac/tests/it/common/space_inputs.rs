@@ -52,7 +52,7 @@ pub(crate) struct Case {
 /// `(θ0, θ1, θ2)` of the standard-form piece from 0 to `s`: the angles of the chord with the
 /// two end tangents and the dihedral about it (docs/math.md §6), written out here.
 fn angles(form: &SpaceForm, s: f64) -> Option<(f64, f64, f64)> {
-    let f = form.frame_at(s).ok()?;
+    let f = form.frame_at_s(s).ok()?;
     let c = f.point.normalize();
     let u0 = Vec3::X - c * c.x;
     let m = -f.tangent;
@@ -216,7 +216,7 @@ pub(crate) fn generate(seed: u64, n: usize) -> Vec<Case> {
         let Some((theta0, _, _)) = acceptable(&form, s_end) else {
             continue;
         };
-        let end = form.frame_at(s_end).unwrap();
+        let end = form.frame_at_s(s_end).unwrap();
         let chord = end.point.length();
         let (a, b) = (
             chord * (0.3 + 0.5 * rng.next()),

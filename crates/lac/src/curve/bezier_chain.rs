@@ -10,8 +10,9 @@ use std::ops::Range;
 
 use kurbo::{BezPath, ParamCurve, ParamCurveArclen, ParamCurveCurvature, ParamCurveDeriv, Point};
 
-use crate::bezier::RationalCubic;
-use crate::error::{Error, Result};
+use crate::curve::{check_arc_length, Curve};
+use crate::family::bezier::RationalCubic;
+use crate::foundation::error::{Error, Result};
 
 /// Rational cubic Bézier pieces x₀, …, xₙ₋₁ as one curve, x(t) = xᵢ((t − kᵢ)/(kᵢ₊₁ − kᵢ))
 /// for t ∈ [kᵢ, kᵢ₊₁], with kurbo's [`ParamCurve`], [`ParamCurveDeriv`],
@@ -25,7 +26,7 @@ use crate::error::{Error, Result};
 ///
 /// ```
 /// use kurbo::{ParamCurve, ParamCurveArclen, Point};
-/// use lac::{Curve, Segment, Tolerance};
+/// use lac::{Curve, Segment, ToBezier, Tolerance};
 ///
 /// let seg = Segment::from_control_points(
 ///     [Point::new(0.0, 0.0), Point::new(3.0, 0.0), Point::new(4.0, 1.5)],
@@ -197,6 +198,111 @@ impl ParamCurveArclen for BezierChain {
         }
         1.0
     }
+}
+
+/// By arc length, each piece's length by its fixed Gauss rule ([`RationalCubic::arc_length`])
+/// and a point at `s` by the piece's inverse arc length (to 1e-13 of its length); the
+/// tangent direction is followed along each piece in 16 steps, so it stays continuous while
+/// no step turns by π or more (no cusp).
+impl Curve for BezierChain {
+    fn arc_length(&self) -> f64 {
+        self.pieces.iter().map(RationalCubic::arc_length).sum()
+    }
+
+    fn start_point(&self) -> Point {
+        self.start()
+    }
+
+    fn end_point(&self) -> Point {
+        self.end()
+    }
+
+    fn signed_curvature_start(&self) -> f64 {
+        self.pieces[0].signed_curvature(0.0)
+    }
+
+    fn signed_curvature_end(&self) -> f64 {
+        self.pieces[self.pieces.len() - 1].signed_curvature(1.0)
+    }
+
+    fn turning(&self) -> f64 {
+        self.pieces.iter().map(|p| turning_to(p, 1.0)).sum()
+    }
+
+    fn point_at_s(&self, s: f64) -> Result<Point> {
+        let (i, t) = self.at_s(s)?;
+        Ok(self.pieces[i].eval(t))
+    }
+
+    fn theta_at_s(&self, s: f64) -> Result<f64> {
+        let (i, t) = self.at_s(s)?;
+        let first = self.pieces[0].derivative(0.0);
+        let before: f64 = self.pieces[..i].iter().map(|p| turning_to(p, 1.0)).sum();
+        let theta = first.y.atan2(first.x) + before + turning_to(&self.pieces[i], t);
+        if self.pieces[i].derivative(t).hypot() > 0.0 && theta.is_finite() {
+            Ok(theta)
+        } else {
+            Err(Error::CurvatureUndefined { piece: i, t })
+        }
+    }
+
+    fn signed_curvature_at_s(&self, s: f64) -> Result<f64> {
+        let (i, t) = self.at_s(s)?;
+        Ok(self.pieces[i].signed_curvature(t))
+    }
+
+    fn curvature_derivative_at_s(&self, s: f64) -> Result<f64> {
+        let (i, t) = self.at_s(s)?;
+        Ok(self.pieces[i].curvature_derivative(t))
+    }
+
+    fn joint_arc_lengths(&self) -> Vec<f64> {
+        let mut s = 0.0;
+        self.pieces[..self.pieces.len() - 1]
+            .iter()
+            .map(|p| {
+                s += p.arc_length();
+                s
+            })
+            .collect()
+    }
+}
+
+impl BezierChain {
+    /// The piece holding arc length `s` (a knot belongs to the piece after it) and the
+    /// piece's own parameter there.
+    fn at_s(&self, s: f64) -> Result<(usize, f64)> {
+        let lengths: Vec<f64> = self.pieces.iter().map(RationalCubic::arc_length).collect();
+        check_arc_length(s, lengths.iter().sum())?;
+        let mut before = 0.0;
+        for (i, (piece, &length)) in self.pieces.iter().zip(&lengths).enumerate() {
+            if s < before + length || i + 1 == self.pieces.len() {
+                let local = (s - before).clamp(0.0, length);
+                return Ok((i, piece.inv_arclen(local, 1e-13 * length)));
+            }
+            before += length;
+        }
+        unreachable!("a chain has at least one piece")
+    }
+}
+
+/// The signed turning of the tangent of `piece` from its start to `t`, in 16 steps each
+/// taken as the smaller angle between the step's end tangents.
+fn turning_to(piece: &RationalCubic, t: f64) -> f64 {
+    let direction = |u: f64| {
+        let d = piece.derivative(u);
+        d.y.atan2(d.x)
+    };
+    let steps = 16;
+    let mut turned = 0.0;
+    let mut previous = direction(0.0);
+    for k in 1..=steps {
+        let next = direction(t * k as f64 / steps as f64);
+        let d = next - previous;
+        turned += d - std::f64::consts::TAU * (d / std::f64::consts::TAU).round();
+        previous = next;
+    }
+    turned
 }
 
 impl ParamCurveCurvature for BezierChain {

@@ -21,8 +21,8 @@
 use std::cell::OnceCell;
 
 use super::{StandardForm, Station};
-use crate::gauss::{GAUSS_16, GAUSS_8};
-use crate::numeric::{expm1_ratio, ln1p_ratio, Complex};
+use crate::foundation::gauss::{GAUSS_16, GAUSS_8};
+use crate::foundation::numeric::{expm1_ratio, ln1p_ratio, Complex};
 
 /// Below this distance (radians) from ψₛ the power series is used.
 const SERIES_RADIUS: f64 = 4.0;
@@ -186,7 +186,7 @@ pub(crate) const CLOTHOID_MIN_LAMBDA_TURN: f64 = 0.01;
 ///
 /// With κ = √(1 − 2Λψ) and t the arc length left to the inflection (κ = Λt), ψ =
 /// 1/(2Λ) − Λt²/2, so P = e^{i/(2Λ)} √(π/Λ) conj(F(x_a) − F(x_b)) with x = κ/√(πΛ) and F the
-/// Fresnel integral (see `crate::fresnel`). Written with the auxiliary functions,
+/// Fresnel integral (see `crate::foundation::fresnel`). Written with the auxiliary functions,
 /// e^{i/(2Λ)} e^{−iπx²/2} = e^{iψ} and
 ///
 /// ```text
@@ -230,7 +230,7 @@ pub(crate) fn clothoid_arc(
 ) -> Integral {
     let root = (std::f64::consts::PI * lambda).sqrt();
     let h = |kappa: f64| {
-        let (f, g) = crate::fresnel::aux(kappa / root);
+        let (f, g) = crate::foundation::fresnel::aux(kappa / root);
         Complex::new(g, -f)
     };
     let value = (eb * h(at_b.kappa) - ea * h(at_a.kappa)).scale(std::f64::consts::PI / root);

@@ -1,6 +1,6 @@
 //! How approximations are asked to be accurate.
 
-use crate::error::{finite, Error, Result};
+use crate::foundation::error::{finite, Error, Result};
 
 /// The accuracy asked of an approximation (a chain of Bézier pieces replacing a curve, an
 /// export): the largest distance allowed between the approximation and the exact curve.

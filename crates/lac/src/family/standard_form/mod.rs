@@ -2,10 +2,10 @@
 
 use kurbo::{Point, Vec2};
 
-use crate::error::{finite, Error, Result};
+use crate::foundation::error::{finite, Error, Result};
 pub(crate) mod integrate;
 
-use crate::numeric::{expm1_ratio, ln1p_ratio, ln_1p_product, minus_one};
+use crate::foundation::numeric::{expm1_ratio, ln1p_ratio, ln_1p_product, minus_one};
 use integrate::integrate;
 
 /// A planar log-aesthetic curve in standard form II (seed 000 §3.3, docs/math.md §2).

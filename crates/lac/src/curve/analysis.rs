@@ -11,11 +11,11 @@
 
 use kurbo::{ParamCurve, Point};
 
-use crate::bezier::RationalCubic;
-use crate::error::{Error, Result};
-use crate::gauss::GAUSS_8;
-use crate::numeric::length;
-use crate::segment::sampling::{check_count, Sample};
+use crate::family::bezier::RationalCubic;
+use crate::family::sample::{check_count, Sample};
+use crate::foundation::error::{Error, Result};
+use crate::foundation::gauss::GAUSS_8;
+use crate::foundation::numeric::length;
 use crate::segment::Segment;
 
 /// One point of a curvature plot.
@@ -73,7 +73,7 @@ pub struct LogCurvatureGraph {
 ///
 /// ```
 /// use kurbo::Point;
-/// use lac::{curvature_plot, log_curvature_graph, Curve, Segment, Tolerance};
+/// use lac::{curvature_plot, log_curvature_graph, Segment, ToBezier, Tolerance};
 ///
 /// let seg = Segment::from_control_points(
 ///     [Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(1.0, 0.8)], 0.5)?;
@@ -150,10 +150,10 @@ pub fn log_curvature_graph(plot: &[CurvaturePoint]) -> LogCurvatureGraph {
 impl LogCurvatureGraph {
     /// Any logarithmic graph given by its points `(x, y)` in the order of travel, with the
     /// line fitted as for [`log_curvature_graph`]: the curvature graph `(ln ρ, ln(ρ |ds/dρ|))`
-    /// of a space curve ([`SpaceSegment::log_curvature_graph`]) or its torsion graph
+    /// of a space curve ([`SpaceCurve::log_curvature_graph`]) or its torsion graph
     /// `(ln μ, ln(μ |ds/dμ|))`, whose slope is β.
     ///
-    /// [`SpaceSegment::log_curvature_graph`]: crate::SpaceSegment::log_curvature_graph
+    /// [`SpaceCurve::log_curvature_graph`]: crate::SpaceCurve::log_curvature_graph
     pub fn from_points(points: Vec<(f64, f64)>) -> LogCurvatureGraph {
         let fit = fit_line(&points);
         LogCurvatureGraph { points, fit }
@@ -230,13 +230,17 @@ fn fit_line(points: &[(f64, f64)]) -> Option<LcgFit> {
 impl Segment {
     /// The curvature point of a sample of this segment, with the exact dκ/ds.
     pub(crate) fn curvature_point(&self, s: &Sample) -> CurvaturePoint {
-        let ln_rho = -(s.kappa.abs() * self.scale()).ln();
         CurvaturePoint {
             s: s.s,
             point: s.point,
             kappa: s.kappa,
-            dkappa_ds: self.dkappa_ds_of(ln_rho),
+            dkappa_ds: self.dkappa_ds_at(s.kappa),
         }
+    }
+
+    /// The exact dκ/ds where the signed curvature is `kappa`.
+    pub(crate) fn dkappa_ds_at(&self, kappa: f64) -> f64 {
+        self.dkappa_ds_of(-(kappa.abs() * self.scale()).ln())
     }
 }
 
@@ -295,7 +299,8 @@ mod tests {
         let plot = seg.curvature_plot(9).unwrap();
         let h = 1e-6;
         for p in &plot[1..8] {
-            let fd = (seg.curvature_at_s(p.s + h).unwrap() - seg.curvature_at_s(p.s - h).unwrap())
+            let fd = (seg.signed_curvature_at_s(p.s + h).unwrap()
+                - seg.signed_curvature_at_s(p.s - h).unwrap())
                 / (2.0 * h);
             assert!(
                 (fd - p.dkappa_ds).abs() < 1e-6 * fd.abs(),

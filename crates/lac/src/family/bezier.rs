@@ -32,9 +32,9 @@ use kurbo::{
     CubicBez, ParamCurve, ParamCurveArclen, ParamCurveCurvature, ParamCurveDeriv, Point, Vec2,
 };
 
-use crate::error::{finite, Error, Result};
-use crate::gauss::GAUSS_16;
-use crate::numeric::{find_root, length, RootFailure};
+use crate::foundation::error::{finite, Error, Result};
+use crate::foundation::gauss::GAUSS_16;
+use crate::foundation::numeric::{find_root, length, RootFailure};
 
 /// A rational cubic Bézier curve with positive weights:
 ///

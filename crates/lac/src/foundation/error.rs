@@ -2,7 +2,7 @@
 
 use std::fmt;
 
-use crate::turn::Turn;
+use crate::foundation::turn::Turn;
 
 /// Result alias used throughout the crate.
 pub type Result<T> = std::result::Result<T, Error>;
@@ -142,7 +142,7 @@ pub enum Error {
         /// The leg, from 0 (leg i runs from P_i to P_{i+1}).
         leg: usize,
         /// Why.
-        reason: crate::path::G2Failure,
+        reason: G2Failure,
     },
     /// The span of a G2 spline from point `span` to the next cannot be drawn as one
     /// segment.
@@ -160,7 +160,7 @@ pub enum Error {
         /// The span (0-based): from point `span` to the next.
         span: usize,
         /// Why.
-        reason: crate::path::G2Failure,
+        reason: G2Failure,
     },
     /// A computation that should succeed for a solved curve did not (an overflow, or a
     /// bound of the family reached through rounding). This is a defect: please report the
@@ -479,5 +479,106 @@ pub(crate) fn finite(what: &'static str, value: f64) -> Result<f64> {
         Ok(value)
     } else {
         Err(Error::NonFinite { what, value })
+    }
+}
+
+/// Why no G2 path was found at a joint.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum G2Failure {
+    /// Newton's method did not bring the curvature jump at this joint to zero: the best
+    /// relative jump reached is `jump` (no G2 path nearby, e.g. the legs are too unequal for
+    /// the segments' curvature ratios).
+    NoConvergence {
+        /// The smallest |ln(κ⁻/κ⁺)| reached at this joint.
+        jump: f64,
+    },
+    /// The polygon turns one way before this leg and the other way after it: the curvature
+    /// must pass through zero, which a log-aesthetic segment does only for α < 0.
+    Inflection {
+        /// The slopes of the segments before and after the leg.
+        alphas: [f64; 2],
+    },
+    /// A segment next to this inflection (a path's leg, a spline's span) has α < 0, but its
+    /// zero-curvature end cannot be resolved in double precision (the curvature there falls
+    /// like d^(1/|α|) with the distance d from the inflection point: for α below about −1.7
+    /// not to 1e-10 in a path, below about −1.3 not to 1e-9 in a spline).
+    InflectionUnresolved {
+        /// The segment's slope.
+        alpha: f64,
+    },
+    /// The polygon's turning changes direction on both legs of one vertex: its segment would
+    /// need zero curvature at both ends, which a monotone-curvature segment cannot have.
+    InflectionsAtOneVertex {
+        /// The vertex.
+        vertex: usize,
+    },
+    /// A spline's span whose end tangents leave the chord on the same side (or where no
+    /// single segment fits them): it needs an inflection, which a log-aesthetic curve has
+    /// only for α < 0; for α < 0, no S-shaped span whose halves turn by at most π fits.
+    SpanInflects,
+    /// A spline's span passes through an inflection within a hair of one of its points (one
+    /// half of its S turns by less than 1e-3 rad): the half is too flat to be drawn in double
+    /// precision.
+    InflectionAtPoint,
+    /// The two segments that reach zero curvature on this leg need more than its length:
+    /// they overlap by `overlap` (a share of the leg).
+    InflectionLegTooShort {
+        /// How much of the leg is missing, as a share of it.
+        overlap: f64,
+    },
+}
+
+impl fmt::Display for G2Failure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            G2Failure::NoConvergence { jump } => write!(
+                f,
+                "the curvature could not be made continuous there (smallest jump reached \
+                 ln(k-/k+) = {jump:.3e}); make the neighbouring legs more alike in length or \
+                 the turning angles at their vertices more alike"
+            ),
+            G2Failure::Inflection { alphas } => write!(
+                f,
+                "the polygon's turning changes direction on this leg, so the curvature must \
+                 pass through zero; the segments there have alpha = {} and {}, and a \
+                 log-aesthetic segment reaches zero curvature only for alpha < 0: use \
+                 alpha < 0 for the segments next to this leg or use the G1 path",
+                alphas[0], alphas[1]
+            ),
+            G2Failure::InflectionUnresolved { alpha } => write!(
+                f,
+                "the curve passes through an inflection here; a segment with alpha = {alpha} \
+                 that ends there cannot be brought to zero curvature in double precision \
+                 (use an alpha closer to 0: above about -1.5 next to a path's inflections, \
+                 above about -1.3 in a spline's)"
+            ),
+            G2Failure::InflectionsAtOneVertex { vertex } => write!(
+                f,
+                "the polygon's turning changes direction on both legs of vertex {vertex}: \
+                 its segment would need zero curvature at both ends; add a vertex that turns \
+                 the same way next to it"
+            ),
+            G2Failure::SpanInflects => write!(
+                f,
+                "it would have to inflect: no single segment fits its end tangents; a \
+                 log-aesthetic curve passes through an inflection only for alpha < 0 (and \
+                 then its two halves may turn by at most 180 deg each): use alpha < 0, or \
+                 add points where the curve turns"
+            ),
+            G2Failure::InflectionAtPoint => write!(
+                f,
+                "it passes through an inflection almost at one of its points (one half \
+                 of its S turns by less than 0.001 rad, too flat to draw in double precision); \
+                 move that point off the curve's inflection, or add a point"
+            ),
+            G2Failure::InflectionLegTooShort { overlap } => write!(
+                f,
+                "the polygon's turning changes direction on this leg, and the two segments \
+                 that reach zero curvature there need {:.1}% more than its length; make the \
+                 leg longer or its neighbours shorter",
+                100.0 * overlap
+            ),
+        }
     }
 }

@@ -21,9 +21,9 @@
 
 use kurbo::{Point, Vec2};
 
-use crate::bezier::{numerator, power_basis, power_jet, Hom, RationalCubic};
-use crate::error::{finite, Error, Result};
-use crate::numeric::{find_root, RootFailure};
+use crate::family::bezier::{numerator, power_basis, power_jet, Hom, RationalCubic};
+use crate::foundation::error::{finite, Error, Result};
+use crate::foundation::numeric::{find_root, RootFailure};
 
 /// How the signed curvature κ of a curve varies with its parameter (docs/math.md §5).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -566,7 +566,7 @@ mod tests {
                     w[k] = (1.0 - t) * w[k] + t * w[k + 1];
                 }
             }
-            let want = numerator(&crate::bezier::hom_jet(&qf, t));
+            let want = numerator(&crate::family::bezier::hom_jet(&qf, t));
             assert!(
                 (w[0] - want).abs() < 1e-12 * want.abs().max(1e-3),
                 "{t}: {} {want}",

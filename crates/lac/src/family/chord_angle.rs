@@ -20,13 +20,13 @@ use std::cell::OnceCell;
 
 mod guess;
 
-use crate::error::{Error, NotDrawable, Result};
-use crate::numeric::{expm1_ratio, ln1p_ratio, quadratic_roots, Complex};
-use crate::standard_form::integrate::{
+use crate::family::standard_form::integrate::{
     clothoid_arc, integrate_with, ClothoidEnd, NodeCache, CLOTHOID_MIN_LAMBDA_TURN,
     CLOTHOID_MIN_TURN,
 };
-use crate::standard_form::{StandardForm, Station};
+use crate::family::standard_form::{StandardForm, Station};
+use crate::foundation::error::{Error, NotDrawable, Result};
+use crate::foundation::numeric::{expm1_ratio, ln1p_ratio, quadratic_roots, Complex};
 
 /// Largest supported ln(ρ_max/ρ_min) along one curve (ρ ratio ≈ 1e260).
 pub(crate) const MAX_LOG_RATIO: f64 = 600.0;

@@ -5,15 +5,16 @@ use std::ops::Range;
 
 use kurbo::{ParamCurve, ParamCurveArclen, ParamCurveCurvature, ParamCurveDeriv, Point, Vec2};
 
-use crate::chord_angle::ChordAngle;
-use crate::curve::{locate, Curve};
-use crate::error::{finite, Error, NotDrawable, Result};
-use crate::lcg::LcgLine;
-use crate::numeric::Complex;
+use crate::curve::chain::{locate, SegmentChain};
+use crate::curve::Curve;
+use crate::family::chord_angle::ChordAngle;
+use crate::family::lcg::LcgLine;
+use crate::foundation::error::{finite, Error, NotDrawable, Result};
+use crate::foundation::numeric::Complex;
+use crate::foundation::turn::Turn;
 use crate::segment::{
     check_alpha, control_triangle, finite_length, normalized, Placement, Segment, Travel,
 };
-use crate::turn::Turn;
 
 /// A compound-rhythm log-aesthetic curve: a piece of slope α0 from the first control point
 /// to the joint, then a piece of slope α1 to the last control point, with position,
@@ -31,7 +32,7 @@ use crate::turn::Turn;
 ///
 /// ```
 /// use kurbo::Point;
-/// use lac::{CompoundCurve, Curve};
+/// use lac::{CompoundCurve, Curve, SegmentChain};
 ///
 /// // A "valley": clothoid-like α0 = −1 into a circle-involute-like α1 = 2.
 /// let curve = CompoundCurve::from_three_points(
@@ -41,7 +42,7 @@ use crate::turn::Turn;
 /// let joint = curve.joint_s();
 /// assert!(joint > 0.0 && joint < curve.arc_length());
 /// // Curvature is continuous at the joint.
-/// let (a, b) = (curve.pieces()[0].curvature_end(), curve.pieces()[1].curvature_start());
+/// let (a, b) = (curve.pieces()[0].signed_curvature_end(), curve.pieces()[1].signed_curvature_start());
 /// assert!((a - b).abs() < 1e-12 * a.abs());
 /// # Ok::<(), lac::Error>(())
 /// ```
@@ -56,7 +57,7 @@ pub struct CompoundCurve {
 /// trillionth of the curve (see [`HIDDEN_SHARE`](crate::HIDDEN_SHARE)): no sampled or
 /// exported form of the curve could show it, and its end tangent would not be the one its
 /// points suggest.
-pub const MIN_PIECE_SHARE: f64 = crate::curve::HIDDEN_SHARE;
+pub const MIN_PIECE_SHARE: f64 = crate::segment::visible::HIDDEN_SHARE;
 
 /// The caller's problem, in the caller's order.
 struct Input {
@@ -260,7 +261,7 @@ impl CompoundCurve {
                 }));
             }
         }
-        crate::curve::check_visible_ends(&pieces)?;
+        crate::segment::visible::check_visible_ends(&pieces)?;
         Ok(CompoundCurve { pieces })
     }
 
@@ -285,7 +286,7 @@ impl CompoundCurve {
     }
 
     /// Signed curvature at the joint.
-    pub fn curvature_joint(&self) -> f64 {
+    pub fn signed_curvature_joint(&self) -> f64 {
         self.pieces[1].end_curvatures().0
     }
 
@@ -296,7 +297,7 @@ impl CompoundCurve {
     }
 }
 
-impl Curve for CompoundCurve {
+impl SegmentChain for CompoundCurve {
     /// The two pieces in the caller's order: slope α0 from the first control point to the
     /// joint, slope α1 from the joint to the last control point.
     fn pieces(&self) -> &[Segment] {
@@ -338,7 +339,7 @@ impl ParamCurve for CompoundCurve {
         let (lo, hi) = (a.min(b), a.max(b));
         // Forward parts as (piece, from, to) in the piece's own arc length.
         let in0 = |x: f64| x.min(joint);
-        let in1 = |x: f64| crate::numeric::clamp(x - joint, 0.0, l1);
+        let in1 = |x: f64| crate::foundation::numeric::clamp(x - joint, 0.0, l1);
         let parts = if hi <= joint {
             [(0, lo, hi), (0, hi, hi)]
         } else if lo >= joint {
@@ -450,7 +451,7 @@ impl ParamCurve for CompoundDerivative {
 
 impl ParamCurveCurvature for CompoundCurve {
     /// Exact curvature with kurbo's sign: negative for a left turn (the opposite of
-    /// [`Curve::curvature_at_s`]). NaN for a NaN t.
+    /// [`Curve::signed_curvature_at_s`]). NaN for a NaN t.
     fn curvature(&self, t: f64) -> f64 {
         self.at_t(t)
             .and_then(|(piece, s)| piece.station_at_s(s).ok().map(|st| -piece.kappa_of(&st)))

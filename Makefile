@@ -61,8 +61,9 @@ $(VENV)/.installed: tools/reference/requirements.txt tools/reference/requirement
 		-r tools/reference/requirements-export.txt -r crates/lac-py/requirements.txt
 	touch $@
 
-# Redraw the README's figures (docs/*.svg) from its *Made by* lines with the freshly built
-# `lac`; `make test` fails while a committed figure differs from what its command draws.
+# Redraw the documentation's figures (docs/*.svg) from the *Made by* lines of README.md and
+# docs/*.md with the freshly built `lac`; `make test` fails while a committed figure differs
+# from what its command draws.
 docs:
 	LAC_WRITE_FIGURES=1 $(CARGO_TEST) --test it readme_figures -- --nocapture
 

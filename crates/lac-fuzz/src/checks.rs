@@ -15,7 +15,7 @@ use lac_io::json::Solved;
 
 use crate::Input;
 
-/// The bounds the invariants use, as documented in the README's robustness section.
+/// The bounds the invariants use, as documented in docs/testing.md (Fuzzing).
 pub mod bounds {
     /// Ends within this × (chord + the rounding of the inputs' magnitudes).
     pub const POSITION: f64 = 1e-9;

@@ -50,7 +50,7 @@
 //!   [`Tolerance::Relative`] (a fraction of the curve's arc length); reported deviations say
 //!   which they are in their names (`max_deviation` in the caller's units, `rms` and `max`
 //!   relative). Exact quantities (arc length, curvature, points) carry no tolerance: they are
-//!   computed to within a few ulps of their condition (see the README's accuracy figures).
+//!   computed to within a few ulps of their condition (see docs/accuracy.md).
 //! * With the `serde` feature, the types whose names a format needs (error kinds, turning
 //!   directions, monotonicity verdicts, tolerances, space-curve types) serialise with stable
 //!   snake_case names; the crate itself does no I/O.
@@ -117,3 +117,8 @@ pub use space::{
 #[cfg(doctest)]
 #[doc = include_str!("../../../README.md")]
 pub struct ReadmeDoctests;
+
+/// The Rust examples of docs/library.md, compiled and run as doc tests.
+#[cfg(doctest)]
+#[doc = include_str!("../../../docs/library.md")]
+pub struct DocsLibraryDoctests;

@@ -1,6 +1,6 @@
 //! Every drawing of `lac` is clean: each text lies on the canvas, no two texts overlap, each
 //! coloured entry of a key is a text of its own, and everything drawn lies on the canvas; for
-//! every kind of drawing, with the README's examples and with awkward inputs (tiny and huge
+//! every kind of drawing, with the documentation's examples and with awkward inputs (tiny and huge
 //! coordinates, coordinates far from the origin, numbers with many digits, long captions,
 //! flat and elongated curves, views in which control points coincide).
 //!
@@ -693,6 +693,6 @@ fn the_readme_figures_are_clean() {
     );
     assert!(
         report.is_empty(),
-        "figures that are not clean (regenerate them with the commands in README.md):\n{report}"
+        "figures that are not clean (regenerate them with `make docs`):\n{report}"
     );
 }

@@ -11,21 +11,45 @@ type Asset = (&'static str, &'static str, &'static str);
 
 const JS: &str = "text/javascript; charset=utf-8";
 
-/// Every file the page loads besides `index.html`.
+/// A JavaScript module of `web/`, by its path there (its name under `/app/`).
+macro_rules! js {
+    ($path:literal) => {
+        ($path, include_str!(concat!("../web/", $path)), JS)
+    };
+}
+
+/// Every file the page loads besides `index.html`, by its path under `web/`.
 const FILES: &[Asset] = &[
     (
         "style.css",
         include_str!("../web/style.css"),
         "text/css; charset=utf-8",
     ),
-    ("main.js", include_str!("../web/main.js"), JS),
-    ("api.js", include_str!("../web/api.js"), JS),
-    ("design.js", include_str!("../web/design.js"), JS),
-    ("view.js", include_str!("../web/view.js"), JS),
-    ("draw.js", include_str!("../web/draw.js"), JS),
-    ("plots.js", include_str!("../web/plots.js"), JS),
-    ("space.js", include_str!("../web/space.js"), JS),
-    ("export.js", include_str!("../web/export.js"), JS),
+    js!("main.js"),
+    js!("state.js"),
+    js!("loop.js"),
+    js!("region.js"),
+    js!("render.js"),
+    js!("panel.js"),
+    js!("edit.js"),
+    js!("input.js"),
+    js!("actions.js"),
+    js!("api.js"),
+    js!("design.js"),
+    js!("format.js"),
+    js!("view.js"),
+    js!("draw.js"),
+    js!("plots.js"),
+    js!("space.js"),
+    js!("export.js"),
+    js!("modes/index.js"),
+    js!("modes/plane.js"),
+    js!("modes/segment.js"),
+    js!("modes/compound.js"),
+    js!("modes/compound4.js"),
+    js!("modes/path.js"),
+    js!("modes/quasi.js"),
+    js!("modes/space.js"),
     (
         "favicon.svg",
         include_str!("../web/favicon.svg"),
@@ -60,7 +84,7 @@ pub(crate) async fn index() -> Response {
     )
 }
 
-/// `GET /app/{file}`.
+/// `GET /app/{*file}`: a file of the list, by its path under `web/` (`modes/segment.js`).
 pub(crate) async fn file(Path(name): Path<String>) -> Response {
     match FILES.iter().find(|(n, _, _)| *n == name) {
         Some((_, content, media_type)) => page(content, media_type),
@@ -70,5 +94,38 @@ pub(crate) async fn file(Path(name): Path<String>) -> Response {
             format!("the page has no file {name:?}"),
         )
         .into_response(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::FILES;
+    use std::path::Path;
+
+    /// The files under `dir` (relative to `web/`), subfolders too.
+    fn files_under(web: &Path, dir: &Path, out: &mut Vec<String>) {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                files_under(web, &path, out);
+            } else {
+                let name = path.strip_prefix(web).unwrap().to_string_lossy();
+                out.push(name.replace('\\', "/"));
+            }
+        }
+    }
+
+    /// A file added to `web/` (a new mode) and not to [`FILES`] would be a 404 for the page.
+    #[test]
+    fn every_file_of_the_page_is_served() {
+        let web = Path::new(env!("CARGO_MANIFEST_DIR")).join("web");
+        let mut on_disk = Vec::new();
+        files_under(&web, &web, &mut on_disk);
+        for name in on_disk {
+            let listed = name == "index.html"
+                || name == "README.md"
+                || FILES.iter().any(|(n, _, _)| *n == name);
+            assert!(listed, "web/{name} is not in assets.rs FILES");
+        }
     }
 }

@@ -44,14 +44,14 @@ pub fn router() -> Router {
     router_with(Limits::default())
 }
 
-/// The application: the page (`GET /`, `GET /app/{file}`) and the API (`/api/…`).
+/// The application: the page (`GET /`, `GET /app/{*file}`) and the API (`/api/…`).
 pub fn router_with(limits: Limits) -> Router {
     let timeout = limits.timeout;
     let in_flight = limits.in_flight.max(1);
     let app = Arc::new(api::App::new(limits));
     Router::new()
         .route("/", get(assets::index))
-        .route("/app/{file}", get(assets::file))
+        .route("/app/{*file}", get(assets::file))
         .route("/api/version", get(api::version))
         .route("/api/segment", post(api::segment))
         .route("/api/compound", post(api::compound))

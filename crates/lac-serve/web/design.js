@@ -1,97 +1,12 @@
 // Designs: what the designer chose in each mode (control points and parameters), as the API's
-// input shapes; their defaults; the URL fragment and the design file that carry one exactly;
-// and the undo history.
+// input shapes; their defaults (from the modes, modes/); the URL fragment and the design file
+// that carry one exactly; and the undo history.
 //
 // A design is plain data: {points: [[x, y], ...], alpha: 0.5, ...}. Numbers are written with
 // String(x), the shortest decimal that reads back to the same double, and read with Number(),
 // so a link or a file reproduces a design bit for bit.
 
-/** The editor's modes: endpoint, number of control points (`count`, or at least `minCount`
- * for a path, whose polygon grows and shrinks), parameters with slider ranges. */
-export const MODES = {
-  segment: {
-    label: 'Segment',
-    endpoint: '/api/segment',
-    dims: 2,
-    count: 3,
-    params: [
-      { key: 'alpha', label: 'α', min: -3, max: 3, step: 0.01,
-        hint: 'slope of the logarithmic curvature graph: −1 clothoid, 0 Nielsen spiral, 1 log spiral, 2 circle involute' },
-    ],
-    defaults: { points: [[-1, 0], [-0.2, 0.8], [1, 0]], alpha: 0.5 },
-  },
-  compound: {
-    label: 'Compound r_θ',
-    endpoint: '/api/compound',
-    dims: 2,
-    count: 3,
-    params: [
-      { key: 'alpha0', label: 'α0', min: -3, max: 3, step: 0.01, hint: 'slope of the first piece' },
-      { key: 'alpha1', label: 'α1', min: -3, max: 3, step: 0.01, hint: 'slope of the second piece' },
-      { key: 'ratio', label: 'r_θ', min: 0.01, max: 0.99, step: 0.01,
-        hint: 'share of the turning made by the first piece' },
-    ],
-    defaults: { points: [[0, 0], [2, 0], [2.6, 1.2]], alpha0: -1, alpha1: 2, ratio: 0.5 },
-  },
-  compound4: {
-    label: 'Compound 4 points',
-    endpoint: '/api/compound',
-    dims: 2,
-    count: 4,
-    params: [
-      { key: 'alpha0', label: 'α0', min: -3, max: 3, step: 0.01, hint: 'slope of the first piece' },
-      { key: 'alpha1', label: 'α1', min: -3, max: 3, step: 0.01, hint: 'slope of the second piece' },
-    ],
-    defaults: { points: [[0, 0], [2, 0], [3, 1], [3.2, 2.4]], alpha0: -1, alpha1: 2 },
-  },
-  path: {
-    label: 'Path',
-    endpoint: '/api/path',
-    dims: 2,
-    count: null,
-    minCount: 3,
-    params: [
-      { key: 'alpha', label: 'α', min: -3, max: 3, step: 0.01,
-        hint: 'slope of every segment; below 0 the path passes through inflections (where the polygon turns the other way)' },
-      { key: 'g2', label: 'G2', boolean: true,
-        hint: 'joints solved for continuous curvature (off: at the legs\' midpoints, G1)' },
-      { key: 'closed', label: 'closed', boolean: true, hint: 'the last point joins the first' },
-    ],
-    defaults: {
-      points: [[0, 0], [1.5, 0], [3, 0.8], [6, 3.2], [7.5, 4], [9, 4]],
-      alpha: -0.5, g2: true, closed: false,
-    },
-  },
-  quasi: {
-    label: 'Quasi-aesthetic',
-    endpoint: '/api/quasi',
-    dims: 2,
-    count: 3,
-    params: [
-      { key: 'alpha', label: 'α', min: -3, max: 3, step: 0.01, hint: 'slope of the exact curve' },
-      { key: 'tolerance', label: 'tolerance', min: -10, max: -1, step: 0.1, log: true,
-        hint: 'largest deviation of the Bézier pieces, relative to the arc length' },
-      { key: 'cubic', label: 'cubics', boolean: true, hint: 'plain cubics: all weights 1 (no rational pieces)' },
-    ],
-    defaults: { points: [[0, 0], [3, 0], [4, 1.5]], alpha: -1, tolerance: 0.0001, cubic: false },
-  },
-  space: {
-    label: 'Space curve',
-    endpoint: '/api/space',
-    dims: 3,
-    count: 4,
-    params: [
-      { key: 'alpha', label: 'α', min: -3, max: 3, step: 0.01, hint: 'slope of the logarithmic curvature graph' },
-      { key: 'beta', label: 'β', min: -3, max: 3, step: 0.01, hint: 'slope of the logarithmic torsion graph' },
-      { key: 'omega', label: 'Ω', min: 0, max: 2, step: 0.01, hint: 'torsion parameter (0: constant torsion)' },
-      { key: 'type', label: 'type', choices: [1, 2], hint: 'torsion type of seed 003' },
-    ],
-    defaults: {
-      points: [[0, 0, 0], [3, 0, 0], [3, 3, 1.5], [0, 3, 3]],
-      alpha: 0.5, beta: 0, omega: 0.3, type: 1,
-    },
-  },
-};
+import { MODES, recognise } from './modes/index.js';
 
 /** When the drawable region is shaded: while a point is dragged, always, or never. */
 export const REGION_CHOICES = ['drag', 'always', 'off'];
@@ -114,9 +29,8 @@ export function defaultDesigns() {
 /** The API request for `design` in `mode`, with `samples`. */
 export function request(mode, design, samples) {
   const body = clone(design);
-  if (mode === 'quasi' && !body.cubic) delete body.cubic;
   body.samples = samples;
-  return body;
+  return MODES[mode].request(body);
 }
 
 /** The text of a number that reads back to the same double. */
@@ -194,15 +108,7 @@ export function fromFile(text) {
   if (!json || typeof json !== 'object' || !Array.isArray(json.points)) {
     return { error: 'the file has no "points": expected a design saved by the editor, or a lac segment / compound result' };
   }
-  const dims = json.points[0] && json.points[0].length;
-  let mode = MODES[json.mode] ? json.mode : null;
-  if (!mode) {
-    if (dims === 3) mode = 'space';
-    else if ('g2' in json || 'closed' in json || 'segments' in json || json.points.length > 4) mode = 'path';
-    else if ('alpha0' in json) mode = json.points.length === 4 ? 'compound4' : 'compound';
-    else if ('tolerance' in json) mode = 'quasi';
-    else mode = 'segment';
-  }
+  const mode = MODES[json.mode] ? json.mode : recognise(json).name;
   const m = MODES[mode];
   const design = clone(m.defaults);
   const points = json.points;
@@ -218,13 +124,7 @@ export function fromFile(text) {
     }
     design[param.key] = value;
   }
-  // A `lac path` result says its slope per segment and its continuity.
-  if (mode === 'path' && !('alpha' in json) && Array.isArray(json.segments) && json.segments.length) {
-    design.alpha = json.segments[0].alpha;
-  }
-  if (mode === 'path' && !('g2' in json) && typeof json.continuity === 'string') {
-    design.g2 = json.continuity === 'g2';
-  }
+  m.adopt(json, design);
   return { mode, design };
 }
 

@@ -68,6 +68,21 @@ export function regionImage(drawable) {
   return canvas;
 }
 
+/** Size a canvas's backing store to its CSS size and the device's pixel ratio; returns the
+ * 2-D context, scaled to CSS pixels, and the CSS size. */
+export function sizeCanvas(c) {
+  const ratio = window.devicePixelRatio || 1;
+  const w = c.clientWidth;
+  const h = c.clientHeight;
+  if (c.width !== Math.round(w * ratio) || c.height !== Math.round(h * ratio)) {
+    c.width = Math.round(w * ratio);
+    c.height = Math.round(h * ratio);
+  }
+  const ctx = c.getContext('2d');
+  ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
+  return { ctx, width: w, height: h };
+}
+
 function polyline(ctx, view, points) {
   ctx.beginPath();
   points.forEach((p, i) => {

@@ -90,12 +90,10 @@ export function download(name, text, type) {
   setTimeout(() => URL.revokeObjectURL(url), 1000);
 }
 
-/** The /api/export request for `design` in `mode`: the exact curve's fields (quasi mode
- * exports its exact segment, not its Bézier pieces, so its relative `tolerance` and `cubic`
- * go), the format, and 1e-6 model units. */
+/** The /api/export request for `design` in `mode` (a mode object, modes/): the exact
+ * curve's fields (the mode's `cad`: quasi mode exports its exact segment, not its Bézier
+ * pieces, so its relative `tolerance` and `cubic` go), the format, and 1e-6 model units. */
 export function cadRequest(mode, design, format) {
-  const body = JSON.parse(JSON.stringify(design));
-  delete body.tolerance;
-  delete body.cubic;
-  return { ...body, format, tolerance: 1e-6, name: `lac-${mode}` };
+  const body = mode.cad(JSON.parse(JSON.stringify(design)));
+  return { ...body, format, tolerance: 1e-6, name: `lac-${mode.name}` };
 }

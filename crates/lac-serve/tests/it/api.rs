@@ -443,6 +443,8 @@ async fn the_page_and_its_files_are_served_with_a_strict_policy_and_others_are_j
         ("main.js", "text/javascript"),
         ("style.css", "text/css"),
         ("space.js", "text/javascript"),
+        ("modes/index.js", "text/javascript"),
+        ("modes/segment.js", "text/javascript"),
     ] {
         let answer = send(&app(), "GET", &format!("/app/{file}"), None, vec![]).await;
         assert_eq!(answer.status, StatusCode::OK, "{file}");

@@ -1,0 +1,185 @@
+// Pointer input: on the plane canvas (drag a point, pan, zoom, hover the curve; in a path,
+// Shift+click adds a point and Alt+click removes one), and the reports of a mode's own views
+// (modes/: `init`), which drag points and hover samples there.
+
+import { state, view, canvas, $, mode, design, isStale } from './state.js';
+import { fmt } from './format.js';
+import { commit, insertPoint, removePoint, insertionIndex, roundAt, roundToView } from './edit.js';
+import { solve, busy, autoCombScale } from './loop.js';
+import { updateRegion, viewMoved } from './region.js';
+import { render, renderStage, fitView } from './render.js';
+import { syncPanel } from './panel.js';
+
+function hit(sx, sy, radius) {
+  let best = null;
+  let bestDistance = radius;
+  design().points.forEach((p, i) => {
+    const [x, y] = view.toScreen(p);
+    const d = Math.hypot(x - sx, y - sy);
+    if (d <= bestDistance) {
+      best = i;
+      bestDistance = d;
+    }
+  });
+  return best;
+}
+
+function nearestSample(sx, sy) {
+  if (isStale()) return null;
+  const rows = mode().samples(state.answer);
+  let best = null;
+  let bestDistance = 16;
+  rows.forEach((r, index) => {
+    const [x, y] = view.toScreen([r.x, r.y]);
+    const d = Math.hypot(x - sx, y - sy);
+    if (d < bestDistance) {
+      best = { sample: r, index };
+      bestDistance = d;
+    }
+  });
+  return best;
+}
+
+/** The hovered sample's numbers beside the pointer (or none). */
+function showHover(found, clientX, clientY) {
+  const box = $('hover');
+  state.hover = found;
+  if (!found) {
+    box.hidden = true;
+    return;
+  }
+  const r = found.sample;
+  const rho = r.kappa === 0 ? Infinity : 1 / Math.abs(r.kappa);
+  const lines = [`s = ${fmt(r.s)}`, `κ = ${fmt(r.kappa)}`, `ρ = ${fmt(rho)}`];
+  if (r.tau !== undefined) lines.push(`τ = ${fmt(r.tau)}`);
+  box.textContent = lines.join('\n');
+  box.hidden = false;
+  const stage = $('stage').getBoundingClientRect();
+  box.style.left = `${Math.min(clientX - stage.left + 14, stage.width - 150)}px`;
+  box.style.top = `${Math.min(clientY - stage.top + 14, stage.height - 70)}px`;
+}
+
+function endPointer(e) {
+  if (state.drag && state.drag.pointerId === e.pointerId) {
+    state.drag = null;
+    commit();
+    if (!busy()) autoCombScale();
+    updateRegion();
+    render();
+  }
+  if (state.pan && state.pan.pointerId === e.pointerId) {
+    state.pan = null;
+    canvas.classList.remove('grab');
+    if (state.show.region === 'always' && mode().regionInView) updateRegion();
+  }
+}
+
+/** Listen to the plane canvas. */
+export function listen() {
+  canvas.addEventListener('pointerdown', (e) => {
+    canvas.setPointerCapture(e.pointerId);
+    const index = hit(e.offsetX, e.offsetY, e.pointerType === 'touch' ? 24 : 12);
+    if (!mode().count) {
+      // A path: Alt+click removes a point, Shift+click adds one on the nearest leg.
+      if (index !== null && e.altKey) {
+        removePoint(index);
+        e.preventDefault();
+        return;
+      }
+      if (index === null && e.shiftKey) {
+        const [x, y] = view.toWorld([e.offsetX, e.offsetY]);
+        const p = [roundToView(x), roundToView(y)];
+        const at = insertionIndex(p);
+        insertPoint(at, p);
+        state.drag = { index: at, pointerId: e.pointerId };
+        e.preventDefault();
+        return;
+      }
+    }
+    if (index !== null) {
+      state.drag = { index, pointerId: e.pointerId };
+      state.selected = index;
+      showHover(null);
+      updateRegion();
+      render();
+    } else {
+      state.pan = { x: e.clientX, y: e.clientY, pointerId: e.pointerId };
+      canvas.classList.add('grab');
+    }
+    e.preventDefault();
+  });
+
+  canvas.addEventListener('pointermove', (e) => {
+    if (state.drag && state.drag.pointerId === e.pointerId) {
+      const [x, y] = view.toWorld([e.offsetX, e.offsetY]);
+      design().points[state.drag.index] = [roundToView(x), roundToView(y)];
+      // The request goes first; the point is drawn with its answer, or now when an earlier
+      // request is still out (then this move waits for it).
+      const waiting = busy();
+      solve(e.timeStamp);
+      if (waiting) {
+        syncPanel();
+        render();
+      }
+      return;
+    }
+    if (state.pan && state.pan.pointerId === e.pointerId) {
+      view.pan(e.clientX - state.pan.x, e.clientY - state.pan.y);
+      state.pan.x = e.clientX;
+      state.pan.y = e.clientY;
+      render();
+      return;
+    }
+    showHover(nearestSample(e.offsetX, e.offsetY), e.clientX, e.clientY);
+    render();
+  });
+
+  canvas.addEventListener('pointerup', endPointer);
+  canvas.addEventListener('pointercancel', endPointer);
+  canvas.addEventListener('pointerleave', () => {
+    if (state.hover) {
+      showHover(null);
+      render();
+    }
+  });
+  canvas.addEventListener('wheel', (e) => {
+    e.preventDefault();
+    view.zoomAt([e.offsetX, e.offsetY], Math.exp(-e.deltaY * 0.0015));
+    viewMoved();
+    updateRegion();
+    render();
+  }, { passive: false });
+  canvas.addEventListener('dblclick', () => {
+    fitView();
+    render();
+  });
+}
+
+/** What a mode's own views report: a point dragged (`point` null when the drag starts; its
+ * view's `scale` in pixels per unit), the drag's end, a sample hovered (or null). */
+export const stageInput = {
+  drag(index, point, time, scale) {
+    if (!state.drag) {
+      state.drag = { index, pointerId: null };
+      state.selected = index;
+    }
+    if (point) {
+      design().points[index] = point.map((x) => roundAt(x, scale));
+      const waiting = busy();
+      solve(time);
+      if (!waiting) return;
+      syncPanel();
+    }
+    render();
+  },
+  dragEnd() {
+    state.drag = null;
+    commit();
+    autoCombScale();
+    render();
+  },
+  hover(sample, clientX, clientY) {
+    showHover(sample ? { sample, index: -1 } : null, clientX, clientY);
+    renderStage();
+  },
+};

@@ -1,0 +1,156 @@
+// The panel: a slider and a number field for every parameter of the mode, number fields for
+// the points (and, where the polygon grows, buttons to add and remove points); the display
+// options.
+
+import { state, $, mode, design } from './state.js';
+import { commit, insertPoint, removePoint, nextPoint } from './edit.js';
+import { solve } from './loop.js';
+import { render } from './render.js';
+
+function paramRow(param) {
+  const row = document.createElement('div');
+  row.className = 'param';
+  row.title = param.hint || '';
+  const label = document.createElement('label');
+  label.textContent = param.label;
+  label.htmlFor = `param-${param.key}`;
+  row.append(label);
+  if (param.boolean) {
+    const box = document.createElement('input');
+    box.type = 'checkbox';
+    box.id = `param-${param.key}`;
+    box.dataset.param = param.key;
+    box.addEventListener('change', () => {
+      design()[param.key] = box.checked;
+      commit();
+      solve();
+    });
+    row.append(box);
+    return row;
+  }
+  if (param.choices) {
+    const select = document.createElement('select');
+    select.id = `param-${param.key}`;
+    select.dataset.param = param.key;
+    for (const c of param.choices) select.append(new Option(String(c), String(c)));
+    select.addEventListener('change', () => {
+      design()[param.key] = Number(select.value);
+      commit();
+      solve();
+    });
+    row.append(select);
+    return row;
+  }
+  const range = document.createElement('input');
+  range.type = 'range';
+  range.min = param.min;
+  range.max = param.max;
+  range.step = param.step;
+  range.dataset.slider = param.key;
+  range.setAttribute('aria-label', `${param.label} slider`);
+  const field = document.createElement('input');
+  field.type = 'number';
+  field.step = 'any';
+  field.id = `param-${param.key}`;
+  field.dataset.param = param.key;
+  range.addEventListener('input', (e) => {
+    const v = Number(range.value);
+    const value = param.log ? +(10 ** v).toPrecision(3) : v;
+    design()[param.key] = value;
+    field.value = String(value);
+    solve(e.timeStamp);
+  });
+  range.addEventListener('change', () => commit());
+  field.addEventListener('input', (e) => {
+    if (field.value.trim() === '') return;
+    const value = Number(field.value);
+    if (!Number.isFinite(value)) return;
+    design()[param.key] = value;
+    range.value = String(param.log ? Math.log10(value) : value);
+    solve(e.timeStamp);
+  });
+  field.addEventListener('change', () => commit());
+  row.append(range, field);
+  return row;
+}
+
+export function buildPanel() {
+  const m = mode();
+  const params = $('params');
+  params.replaceChildren(params.querySelector('legend'), ...m.params.map(paramRow));
+  const points = $('points');
+  const rows = design().points.map((p, i) => {
+    const row = document.createElement('div');
+    row.className = 'point';
+    row.style.setProperty('--dims', String(m.dims));
+    const name = document.createElement('span');
+    name.textContent = `P${i}`;
+    row.append(name);
+    p.forEach((_, axis) => {
+      const field = document.createElement('input');
+      field.type = 'number';
+      field.step = 'any';
+      field.dataset.point = String(i);
+      field.dataset.axis = String(axis);
+      field.setAttribute('aria-label', `P${i} ${'xyz'[axis]}`);
+      field.addEventListener('input', (e) => {
+        if (field.value.trim() === '') return;
+        const value = Number(field.value);
+        if (!Number.isFinite(value)) return;
+        design().points[i][axis] = value;
+        render();
+        solve(e.timeStamp);
+      });
+      field.addEventListener('change', () => commit());
+      row.append(field);
+    });
+    if (!m.count) {
+      const remove = document.createElement('button');
+      remove.type = 'button';
+      remove.className = 'remove';
+      remove.textContent = '×';
+      remove.title = `Remove P${i} (Alt+click it on the drawing)`;
+      remove.setAttribute('aria-label', `remove P${i}`);
+      remove.disabled = design().points.length <= m.minCount;
+      remove.addEventListener('click', () => removePoint(i));
+      row.append(remove);
+    }
+    return row;
+  });
+  if (!m.count) {
+    const add = document.createElement('button');
+    add.type = 'button';
+    add.id = 'add-point';
+    add.textContent = 'Add point';
+    add.title = 'Add a point after the last one (or Shift+click the drawing: a point on the nearest leg)';
+    add.addEventListener('click', () => insertPoint(design().points.length, nextPoint(design().points)));
+    rows.push(add);
+  }
+  points.replaceChildren(points.querySelector('legend'), ...rows);
+  for (const button of $('modes').children) button.setAttribute('aria-pressed', String(button.dataset.mode === state.mode));
+  syncPanel();
+}
+
+/** Put the design's numbers into the panel (not into the field being typed in). */
+export function syncPanel() {
+  const d = design();
+  const focused = document.activeElement;
+  for (const el of document.querySelectorAll('[data-param]')) {
+    if (el === focused) continue;
+    const value = d[el.dataset.param];
+    if (el.type === 'checkbox') el.checked = !!value;
+    else el.value = String(value);
+  }
+  for (const param of mode().params) {
+    const range = document.querySelector(`[data-slider="${param.key}"]`);
+    if (range && range !== focused) range.value = String(param.log ? Math.log10(d[param.key]) : d[param.key]);
+  }
+  for (const el of document.querySelectorAll('[data-point]')) {
+    if (el === focused) continue;
+    el.value = String(d.points[Number(el.dataset.point)][Number(el.dataset.axis)]);
+  }
+  $('show-comb').checked = state.show.comb;
+  $('show-evolute').checked = state.show.evolute;
+  $('show-polygon').checked = state.show.polygon;
+  $('show-region').value = state.show.region;
+}

@@ -17,9 +17,22 @@ PROPTEST_RNG_SEED ?= 20261123
 export PROPTEST_RNG_SEED
 LAC_BIN := $(or $(CARGO_TARGET_DIR),$(CURDIR)/target)/debug/lac
 
-.PHONY: test rust python py py-bench e2e docs fixtures bench example fuzz afl
+.PHONY: test check rust python py py-bench e2e docs fixtures bench example fuzz afl
 
 test: rust python py e2e
+
+# The fast tier (a few minutes warm): formatting, clippy, every Rust test with the seeded
+# fuzz driver cut to 2,000 inputs per entry point, two files of the Python cross-checks and
+# one browser test. `make test` runs everything.
+check: $(VENV)/.installed
+	cargo fmt --all -- --check
+	cargo clippy --locked --workspace --all-targets -- -D warnings
+	LAC_FUZZ_COUNT=2000 $(CARGO_TEST) --quiet
+	LAC_BIN=$(LAC_BIN) $(PY) -m pytest -q -x tools/reference/test_reference.py tools/reference/test_path.py
+	test -x /usr/bin/chromium || (apt-get update && apt-get install -y chromium)
+	cd crates/lac-serve/e2e && npm ci --no-audit --no-fund --silent
+	cd crates/lac-serve/e2e && LAC_BIN=$(LAC_BIN) node --test --test-concurrency=1 \
+		--test-name-pattern="^segment"
 
 rust:
 	cargo fmt --all -- --check

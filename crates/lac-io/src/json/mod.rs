@@ -49,6 +49,9 @@ pub use space::{
 };
 pub use spline::{SplineInflectionRow, SplinePieceRow, SplineReport};
 
+/// Its path before the CSV writers moved to [`crate::csv`].
+pub use crate::csv::samples_csv;
+
 /// A planar point, `[x, y]`.
 pub type Xy = [f64; 2];
 
@@ -267,19 +270,10 @@ impl From<Sample> for SampleRow {
 }
 
 impl SampleRow {
-    fn values(&self) -> [f64; 5] {
+    /// The five values in the order of the CSV columns and the JSON fields.
+    pub(crate) fn values(&self) -> [f64; 5] {
         [self.s, self.x, self.y, self.theta, self.kappa]
     }
-}
-
-/// Samples as CSV with the header `s,x,y,theta,kappa` (shortest round-trip numbers).
-pub fn samples_csv(samples: &[SampleRow]) -> String {
-    let mut out = String::from("s,x,y,theta,kappa\n");
-    for r in samples {
-        let [s, x, y, theta, kappa] = r.values();
-        out.push_str(&format!("{s:?},{x:?},{y:?},{theta:?},{kappa:?}\n"));
-    }
-    out
 }
 
 /// A number with six significant digits at most, for messages.

@@ -5,7 +5,7 @@ use kurbo::Point;
 use lac::{Alphas, Continuity, ControlPolygon, Curve, Path};
 use serde::{Deserialize, Serialize};
 
-use super::{all_finite, point, samples_csv, xy, ErrorBody, Report, SampleRow, Xy};
+use super::{all_finite, point, xy, ErrorBody, Report, SampleRow, Xy};
 
 /// A path from a control polygon: `{"points":[[x,y],…],"closed":false,"alpha":A,"g2":true}`,
 /// with `"alphas":[…]` (one per segment) instead of `"alpha"`, and for a G1 path optionally
@@ -225,11 +225,6 @@ impl PathReport {
             samples: samples.iter().map(SampleRow::from).collect(),
         }
         .checked()
-    }
-
-    /// The samples as CSV (`s,x,y,theta,kappa`).
-    pub fn to_csv(&self) -> String {
-        samples_csv(&self.samples)
     }
 
     /// What solves this path again: its polygon, closure, the segments' slopes, and a G2

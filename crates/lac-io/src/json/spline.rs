@@ -3,7 +3,7 @@
 use lac::Curve;
 use serde::{Deserialize, Serialize};
 
-use super::{all_finite, samples_csv, xy, ErrorBody, Report, SampleRow, Xy};
+use super::{all_finite, xy, ErrorBody, Report, SampleRow, Xy};
 
 /// One piece of a spline through points: the segment of a span, or one half of a span
 /// through an inflection.
@@ -96,11 +96,6 @@ impl SplineReport {
             samples: samples.iter().map(SampleRow::from).collect(),
         }
         .checked()
-    }
-
-    /// The samples as CSV (`s,x,y,theta,kappa`).
-    pub fn to_csv(&self) -> String {
-        samples_csv(&self.samples)
     }
 }
 

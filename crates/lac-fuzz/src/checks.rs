@@ -8,8 +8,8 @@ use lac::{
     Spline, Tolerance, TorsionType, Vec3, INFLECTION_LIMIT,
 };
 
-use lac_io::export::json::{ExportDocument, NurbsRow};
-use lac_io::export::{self, ExportCurve, Exported, Format, Meta};
+use lac_export::json::{ExportDocument, NurbsRow};
+use lac_export::{ExportCurve, Exported, Format, Meta};
 use lac_io::json::Solved;
 
 use crate::Input;
@@ -200,7 +200,7 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
             } else {
                 Tolerance::Absolute(*tolerance)
             };
-            let Ok(exported) = export::export(
+            let Ok(exported) = lac_export::export(
                 &built.as_export(),
                 *format,
                 tolerance,
@@ -229,7 +229,7 @@ enum Built {
 impl Built {
     fn as_export(&self) -> ExportCurve<'_> {
         match self {
-            Built::Plane(s) => ExportCurve::Plane(s),
+            Built::Plane(s) => ExportCurve::from(s),
             Built::Path(p) => ExportCurve::Path(p),
             Built::Space(s) => ExportCurve::Space(s),
         }

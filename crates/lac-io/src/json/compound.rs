@@ -87,6 +87,15 @@ impl Solved {
     }
 }
 
+impl<'a> From<&'a Solved> for lac_export::ExportCurve<'a> {
+    fn from(solved: &'a Solved) -> Self {
+        match solved {
+            Solved::Segment(s) => lac_export::ExportCurve::Segment(s),
+            Solved::Compound(c) => lac_export::ExportCurve::Compound(c),
+        }
+    }
+}
+
 impl CurveInput {
     /// Solve it.
     pub fn solve(&self) -> Result<Solved, ErrorBody> {

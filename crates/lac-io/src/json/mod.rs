@@ -165,6 +165,18 @@ impl From<lac::Error> for ErrorBody {
     }
 }
 
+/// A refused CAD export: the library's errors as [`From<lac::Error>`] gives them, the
+/// export's own (`usage`, `tolerance_not_met`) by their [`lac_export::Error::kind`] and
+/// message.
+impl From<lac_export::Error> for ErrorBody {
+    fn from(err: lac_export::Error) -> Self {
+        match err {
+            lac_export::Error::Lac(err) => ErrorBody::from(err),
+            err => ErrorBody::new(err.kind(), err.to_string()),
+        }
+    }
+}
+
 impl std::fmt::Display for ErrorBody {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "{}: {}", self.kind, self.message)
@@ -322,6 +334,41 @@ mod tests {
         assert!(err
             .to_json_line()
             .starts_with(r#"{"error":{"kind":"not_drawable","message":"#));
+    }
+
+    #[test]
+    fn export_errors_keep_their_kinds_messages_and_classes() {
+        let svg = ErrorBody::from(lac_export::Error::SvgOfSpaceCurve);
+        assert_eq!(
+            (svg.kind.as_str(), svg.class(), svg.message.as_str()),
+            (
+                "usage",
+                ErrorClass::Invalid,
+                "SVG holds planar curves only: export a space curve as step, iges, dxf or json"
+            )
+        );
+        let fine = ErrorBody::from(lac_export::Error::ToleranceBelowPrecision {
+            tolerance: 1e-14,
+            relative: 1e-14,
+            length: 4.456290862831389,
+        });
+        assert_eq!(
+            (fine.kind.as_str(), fine.class()),
+            ("tolerance_not_met", ErrorClass::Undrawable)
+        );
+        assert!(fine
+            .message
+            .starts_with("a tolerance of 1e-14 is 1.0e-14 of the arc length"));
+        for err in [
+            lac::Error::TooManyPieces {
+                tolerance: 1e-12,
+                max_pieces: 1000,
+            },
+            lac::Error::NumericalFailure { what: "x" },
+        ] {
+            let wrapped = ErrorBody::from(lac_export::Error::from(err.clone()));
+            assert_eq!(wrapped, ErrorBody::from(err));
+        }
     }
 
     #[test]

@@ -2,12 +2,12 @@
 //! systems as
 //! rational degree-3 B-splines (DXF, STEP, IGES, JSON) or plain cubics (SVG) within a
 //! tolerance, with the deviation achieved measured on what was written
-//! ([`lac_io::export`]).
+//! ([`lac_export`]).
 
 use kurbo::Point;
 use lac::Closure;
 use lac::{Spline, Tolerance};
-use lac_io::export::{export, ExportCurve, Format, Meta, DEFAULT_TOLERANCE};
+use lac_export::{export, ExportCurve, Format, Meta, DEFAULT_TOLERANCE};
 use lac_io::json::{
     to_line, CurveInput, ErrorBody, LcgInput, PathInput, PathReport, SegmentInput, Solved,
     SpaceInput, SplineReport,
@@ -116,7 +116,7 @@ pub(crate) fn run(args: &ExportArgs, limits: Limits) -> Result<(), ErrorBody> {
         Input::Plane(c) => {
             let solved: Solved = c.solve()?;
             export(
-                &ExportCurve::Plane(&solved),
+                &ExportCurve::from(&solved),
                 format,
                 tolerance,
                 args.pieces,

@@ -506,7 +506,7 @@ pub(crate) fn path(rng: &mut Rng) -> Input {
 }
 
 pub(crate) fn export(rng: &mut Rng) -> Input {
-    use lac_io::export::Format;
+    use lac_export::Format;
     let curve = match rng.below(10) {
         0..=2 => segment(rng),
         3 => compound3(rng),

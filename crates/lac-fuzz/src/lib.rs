@@ -21,7 +21,7 @@
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::time::{Duration, Instant};
 
-use lac_io::export::Format;
+use lac_export::Format;
 use serde::{Deserialize, Serialize};
 
 mod checks;
@@ -126,7 +126,7 @@ pub enum Input {
         /// 1 or 2.
         torsion: u8,
     },
-    /// `lac_io::export::export` of a solved curve: a segment, compound curve, path or space
+    /// `lac_export::export` of a solved curve: a segment, compound curve, path or space
     /// segment, in one of the file formats.
     Export {
         /// The curve, as the input that solves it (its sampling fields are not used).

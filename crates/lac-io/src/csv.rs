@@ -11,8 +11,19 @@
 use std::fmt::Write as _;
 
 use crate::json::{
-    samples_csv, CompoundReport, LcgReport, QuasiReport, SegmentReport, SpaceLcgReport, SpaceReport,
+    CompoundReport, LcgReport, PathReport, QuasiReport, SampleRow, SegmentReport, SpaceLcgReport,
+    SpaceReport, SplineReport,
 };
+
+/// Samples as CSV with the header `s,x,y,theta,kappa` (shortest round-trip numbers).
+pub fn samples_csv(samples: &[SampleRow]) -> String {
+    let mut out = String::from("s,x,y,theta,kappa\n");
+    for r in samples {
+        let [s, x, y, theta, kappa] = r.values();
+        out.push_str(&format!("{s:?},{x:?},{y:?},{theta:?},{kappa:?}\n"));
+    }
+    out
+}
 
 /// `{x:?}`, or an empty cell for `None`.
 fn cell(x: Option<f64>) -> String {
@@ -34,6 +45,20 @@ impl SegmentReport {
 }
 
 impl CompoundReport {
+    /// The samples: `s,x,y,theta,kappa`.
+    pub fn to_csv(&self) -> String {
+        samples_csv(&self.samples)
+    }
+}
+
+impl PathReport {
+    /// The samples: `s,x,y,theta,kappa`.
+    pub fn to_csv(&self) -> String {
+        samples_csv(&self.samples)
+    }
+}
+
+impl SplineReport {
     /// The samples: `s,x,y,theta,kappa`.
     pub fn to_csv(&self) -> String {
         samples_csv(&self.samples)

@@ -2,7 +2,7 @@
 //! cubic B-splines within a tolerance, written as DXF, STEP, IGES, SVG or JSON.
 
 use lac::Tolerance;
-use lac_io::export::{ExportCurve, Format, Meta};
+use lac_export::{ExportCurve, Format, Meta};
 use lac_io::json::Solved;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -75,14 +75,14 @@ pub(crate) fn export<'py>(
     let meta = Meta::now(name);
     let written = py.detach(|| {
         let curve = match &owned {
-            Owned::Plane(s) => ExportCurve::Plane(s),
+            Owned::Plane(s) => ExportCurve::from(s),
             Owned::Path(p) => ExportCurve::Path(p),
             Owned::Spline(s) => ExportCurve::Spline(s),
             Owned::Space(s) => ExportCurve::Space(s),
         };
-        lac_io::export::export(&curve, format, tolerance, pieces, &meta)
+        lac_export::export(&curve, format, tolerance, pieces, &meta)
     });
-    let written = written.map_err(|e| from_body(py, e))?;
+    let written = written.map_err(|e| from_body(py, e.into()))?;
     let report = serde_json::to_value(&written.report)
         .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
     let dict = PyDict::new(py);

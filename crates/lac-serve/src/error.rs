@@ -39,6 +39,12 @@ impl From<lac::Error> for ApiError {
     }
 }
 
+impl From<lac_export::Error> for ApiError {
+    fn from(err: lac_export::Error) -> Self {
+        ApiError::from(ErrorBody::from(err))
+    }
+}
+
 impl IntoResponse for ApiError {
     fn into_response(self) -> Response {
         json_response(self.status, self.body.to_json_line())

@@ -1,10 +1,10 @@
 //! `/api/export`: the editor's curve as a CAD file (DXF, STEP, IGES, SVG, JSON), as `lac
-//! export` writes it ([`lac_io::export`]), answered as the file itself.
+//! export` writes it ([`lac_export`]), answered as the file itself.
 
 use axum::http::{header, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
 use lac::{Curve, SpaceCurve, Tolerance};
-use lac_io::export::{export as write_export, ExportCurve, Format, Meta, DEFAULT_TOLERANCE};
+use lac_export::{export as write_export, ExportCurve, Format, Meta, DEFAULT_TOLERANCE};
 use lac_io::json::{to_line, ErrorBody, PathInput, SpaceInput};
 
 use super::request::{self, field_shape, optional, required};
@@ -115,7 +115,7 @@ pub(crate) fn export(app: &App, text: &str) -> Result<File, ApiError> {
         let solved = request::curve(&map)?.solve()?;
         within_limit(app, tolerance, solved.curve().arc_length())?;
         write_export(
-            &ExportCurve::Plane(&solved),
+            &ExportCurve::from(&solved),
             format,
             tolerance,
             pieces,

@@ -700,20 +700,20 @@ async fn export_answers_the_cad_file_with_its_type_name_and_report() {
 }
 
 #[tokio::test]
-async fn export_writes_what_lac_io_writes() {
-    // DXF carries no timestamp: the answer is lac_io's document byte for byte.
+async fn export_writes_what_lac_export_writes() {
+    // DXF carries no timestamp: the answer is lac_export's document byte for byte.
     let body = r#"{"points":[[0,0],[3,0],[4.2,1.9]],"alpha":0.5,"format":"dxf","tolerance":1e-7}"#;
     let answer = post(&app(), "/api/export", body).await;
     assert_eq!(answer.status, StatusCode::OK, "{}", answer.text);
     let input: SegmentInput =
         serde_json::from_str(r#"{"points":[[0,0],[3,0],[4.2,1.9]],"alpha":0.5}"#).unwrap();
-    let solved = lac_io::json::Solved::Segment(input.solve().unwrap());
-    let expected = lac_io::export::export(
-        &lac_io::export::ExportCurve::Plane(&solved),
-        lac_io::export::Format::Dxf,
+    let segment = input.solve().unwrap();
+    let expected = lac_export::export(
+        &lac_export::ExportCurve::Segment(&segment),
+        lac_export::Format::Dxf,
         lac::Tolerance::Absolute(1e-7),
         false,
-        &lac_io::export::Meta::now("x"),
+        &lac_export::Meta::now("x"),
     )
     .unwrap();
     assert_eq!(answer.text, expected.document);

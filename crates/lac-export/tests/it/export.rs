@@ -1,4 +1,4 @@
-//! CAD export (`lac_io::export`): the claims each format makes, checked on the text written.
+//! CAD export (`lac_export`): the claims each format makes, checked on the text written.
 //!
 //! * the B-spline is the chain of pieces: an independent de Boor evaluation of the knots,
 //!   weights and control points agrees with the pieces, and the curvature on both sides of
@@ -11,13 +11,13 @@
 //!   group code and a value.
 
 use kurbo::Point;
-use lac::{Closure, Curve};
-use lac::{CompoundCurve, Segment, SpaceSegment, SpaceShape, Tolerance, TorsionType, Vec3};
-use lac_io::export::certify::{deviation, PlaneExact};
-use lac_io::export::json::ExportDocument;
-use lac_io::export::nurbs::{Nurbs, Span};
-use lac_io::export::{export, ExportCurve, Exported, Format, Meta};
-use lac_io::json::Solved;
+use lac::{
+    Closure, CompoundCurve, Curve, Segment, SpaceSegment, SpaceShape, Tolerance, TorsionType, Vec3,
+};
+use lac_export::certify::{deviation, PlaneExact};
+use lac_export::json::ExportDocument;
+use lac_export::nurbs::{Nurbs, Span};
+use lac_export::{export, ExportCurve, Exported, Format, Meta};
 
 fn meta() -> Meta {
     Meta {
@@ -27,22 +27,22 @@ fn meta() -> Meta {
     }
 }
 
-fn segment() -> Solved {
+fn segment() -> Segment {
     let p = [
         Point::new(0.0, 0.0),
         Point::new(3.0, 0.0),
         Point::new(4.2, 1.9),
     ];
-    Solved::Segment(Segment::from_control_points(p, 0.5).unwrap())
+    Segment::from_control_points(p, 0.5).unwrap()
 }
 
-fn compound() -> Solved {
+fn compound() -> CompoundCurve {
     let p = [
         Point::new(0.0, 0.0),
         Point::new(2.0, 0.0),
         Point::new(2.6, 1.2),
     ];
-    Solved::Compound(CompoundCurve::from_three_points(p, -1.0, 2.0, 0.5).unwrap())
+    CompoundCurve::from_three_points(p, -1.0, 2.0, 0.5).unwrap()
 }
 
 fn space() -> SpaceSegment {
@@ -124,8 +124,13 @@ fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {
 
 #[test]
 fn the_json_b_spline_is_the_chain_of_pieces_joined_g2_within_the_tolerance() {
-    for (solved, tol) in [(segment(), 1e-9), (compound(), 1e-7)] {
-        let e = run(&ExportCurve::Plane(&solved), Format::Json, tol, false);
+    let (seg, comp) = (segment(), compound());
+    let planar: [(ExportCurve, &dyn Curve, f64); 2] = [
+        (ExportCurve::Segment(&seg), &seg, 1e-9),
+        (ExportCurve::Compound(&comp), &comp, 1e-7),
+    ];
+    for (curve, exact, tol) in planar {
+        let e = run(&curve, Format::Json, tol, false);
         assert!(e.report.max_deviation <= tol && e.report.monotone_proven == Some(true));
         let doc: ExportDocument = serde_json::from_str(&e.document).unwrap();
         assert_eq!(doc.report, e.report);
@@ -151,22 +156,22 @@ fn the_json_b_spline_is_the_chain_of_pieces_joined_g2_within_the_tolerance() {
             }
         }
         // The measure agrees when repeated on what was read back.
-        let again = deviation(&PlaneExact(solved.curve()), &n, 64).unwrap();
+        let again = deviation(&PlaneExact(exact), &n, 64).unwrap();
         assert_eq!(again, e.report.max_deviation);
     }
 }
 
 #[test]
 fn a_b_spline_moved_by_delta_is_measured_between_half_delta_and_delta_away() {
-    let solved = segment();
-    let e = run(&ExportCurve::Plane(&solved), Format::Json, 1e-9, false);
+    let seg = segment();
+    let e = run(&ExportCurve::Segment(&seg), Format::Json, 1e-9, false);
     let doc: ExportDocument = serde_json::from_str(&e.document).unwrap();
     let mut n = nurbs_of(&doc, 0);
     let delta = 1e-5;
     for p in &mut n.control_points {
         p[1] += delta;
     }
-    let d = deviation(&PlaneExact(solved.curve()), &n, 64).unwrap();
+    let d = deviation(&PlaneExact(&seg), &n, 64).unwrap();
     // The tangent turns from 0 to about 1 rad: a shift along y has a normal component of
     // at least cos(1.01) ≈ 0.53 of it.
     assert!(d > 0.5 * delta && d <= delta * (1.0 + 1e-6), "{d:e}");
@@ -176,8 +181,8 @@ fn a_b_spline_moved_by_delta_is_measured_between_half_delta_and_delta_away() {
 fn every_format_meets_the_tolerance_for_every_kind_of_curve() {
     let (seg, comp, sp) = (segment(), compound(), space());
     let curves = [
-        ExportCurve::Plane(&seg),
-        ExportCurve::Plane(&comp),
+        ExportCurve::Segment(&seg),
+        ExportCurve::Compound(&comp),
         ExportCurve::Space(&sp),
     ];
     for curve in &curves {
@@ -190,7 +195,9 @@ fn every_format_meets_the_tolerance_for_every_kind_of_curve() {
         ] {
             if format == Format::Svg && matches!(curve, ExportCurve::Space(_)) {
                 let refused = export(curve, format, Tolerance::Absolute(1e-6), false, &meta());
-                assert_eq!(refused.unwrap_err().kind, "usage");
+                let refused = refused.unwrap_err();
+                assert_eq!(refused, lac_export::Error::SvgOfSpaceCurve);
+                assert_eq!(refused.kind(), "usage");
                 continue;
             }
             for pieces in [false, true] {
@@ -267,7 +274,7 @@ fn step_points_read_back_bit_for_bit_and_every_reference_is_defined() {
 fn iges_records_are_80_columns_numbered_and_counted() {
     let seg = segment();
     for pieces in [false, true] {
-        let e = run(&ExportCurve::Plane(&seg), Format::Iges, 1e-9, pieces);
+        let e = run(&ExportCurve::Segment(&seg), Format::Iges, 1e-9, pieces);
         let mut count = std::collections::BTreeMap::new();
         let mut order = String::new();
         let mut directory = Vec::new();
@@ -313,7 +320,7 @@ fn iges_records_are_80_columns_numbered_and_counted() {
 fn dxf_is_group_code_and_value_pairs_with_one_spline_per_curve() {
     let comp = compound();
     for pieces in [false, true] {
-        let e = run(&ExportCurve::Plane(&comp), Format::Dxf, 1e-8, pieces);
+        let e = run(&ExportCurve::Compound(&comp), Format::Dxf, 1e-8, pieces);
         let lines: Vec<&str> = e.document.lines().collect();
         assert_eq!(lines.len() % 2, 0);
         let pairs: Vec<(i32, &str)> = lines
@@ -356,7 +363,7 @@ fn exported_g2(path: &lac::Path, tol: f64, what: &str) -> Exported {
         false,
         &meta(),
     )
-    .unwrap_or_else(|e| panic!("{what} tol {tol}: {}", e.message));
+    .unwrap_or_else(|e| panic!("{what} tol {tol}: {e}"));
     let report = &done.report;
     assert!(report.max_deviation <= tolerance, "{what}: {report:?}");
     assert_eq!(report.continuity, "G2");
@@ -539,7 +546,7 @@ fn splines_through_inflections_export_within_the_tolerance_with_monotone_pieces(
                 false,
                 &meta(),
             )
-            .unwrap_or_else(|e| panic!("{points:?} alpha {alpha} tol {tol}: {}", e.message));
+            .unwrap_or_else(|e| panic!("{points:?} alpha {alpha} tol {tol}: {e}"));
             let report = &done.report;
             assert!(
                 report.max_deviation <= tolerance,

@@ -17,9 +17,14 @@
 //! the path) for a G1 path. A closed path is written as a clamped curve whose ends meet. A
 //! spline through points is fitted the same way, piece by piece (a span through an
 //! inflection is two pieces meeting at zero curvature).
+//!
+//! A refused export is an [`Error`]: its [`Error::kind`] and message are what the front ends
+//! (`lac export`, the editor's server, the Python bindings) show, through `lac-io`'s JSON
+//! error body.
 
 pub mod certify;
 pub mod dxf;
+mod error;
 pub mod iges;
 pub mod json;
 mod number;
@@ -32,16 +37,16 @@ use std::time::{SystemTime, UNIX_EPOCH};
 use serde::{Deserialize, Serialize};
 
 use lac::{
-    Continuity, Curve, Error, Path, QuasiCurve, SpaceSegment, Spline, Tolerance,
+    CompoundCurve, Continuity, Curve, Path, QuasiCurve, Segment, SpaceSegment, Spline, Tolerance,
     MIN_RELATIVE_TOLERANCE,
 };
 use lac::{SegmentChain, SpaceCurve, ToBezier};
 
-use crate::json::{ErrorBody, Solved};
 use certify::{
     deviation, path_items, spline_items, Exact, PathExact, PathItem, PlaneExact, SpaceExact,
     SplineItem,
 };
+pub use error::{Error, Result};
 use json::{ExportDocument, NurbsRow};
 pub use nurbs::Nurbs;
 use nurbs::Span;
@@ -119,9 +124,12 @@ pub fn timestamp(time: SystemTime) -> String {
 }
 
 /// The curve to export.
+#[derive(Clone, Copy)]
 pub enum ExportCurve<'a> {
-    /// A planar segment or compound curve.
-    Plane(&'a Solved),
+    /// A planar segment.
+    Segment(&'a Segment),
+    /// A planar compound-rhythm curve.
+    Compound(&'a CompoundCurve),
     /// A multi-segment planar path.
     Path(&'a Path),
     /// A G2 spline through points (its spans through inflections included).
@@ -188,15 +196,10 @@ pub fn export(
     tolerance: Tolerance,
     single_spans: bool,
     meta: &Meta,
-) -> Result<Exported, ErrorBody> {
+) -> Result<Exported> {
     let (length, kind) = match curve {
-        ExportCurve::Plane(solved) => (
-            solved.curve().arc_length(),
-            match solved {
-                Solved::Segment(_) => "segment",
-                Solved::Compound(_) => "compound",
-            },
-        ),
+        ExportCurve::Segment(s) => (s.arc_length(), "segment"),
+        ExportCurve::Compound(c) => (c.arc_length(), "compound"),
         ExportCurve::Path(path) => (path.arc_length(), "path"),
         ExportCurve::Spline(spline) => (spline.arc_length(), "spline"),
         ExportCurve::Space(seg) => (seg.arc_length(), "space"),
@@ -207,10 +210,7 @@ pub fn export(
         _ => "G2",
     };
     if format == Format::Svg && matches!(curve, ExportCurve::Space(_)) {
-        return Err(ErrorBody::new(
-            "usage",
-            "SVG holds planar curves only: export a space curve as step, iges, dxf or json",
-        ));
+        return Err(Error::SvgOfSpaceCurve);
     }
     let tol = checked_tolerance(tolerance, length)? * length;
     let plain = format == Format::Svg;
@@ -226,7 +226,8 @@ pub fn export(
                 let items = items.iter().map(SplineItem::as_path_item).collect();
                 measure(&PathExact(items), &fitted.nurbs)?
             }
-            ExportCurve::Plane(solved) => measure(&PlaneExact(solved.curve()), &fitted.nurbs)?,
+            ExportCurve::Segment(s) => measure(&PlaneExact(*s), &fitted.nurbs)?,
+            ExportCurve::Compound(c) => measure(&PlaneExact(*c), &fitted.nurbs)?,
         };
         if measured <= tol {
             let curves = if single_spans {
@@ -255,7 +256,7 @@ pub fn export(
         reached = reached.min(measured);
         target *= (0.8 * tol / measured).min(0.5);
     }
-    Err(Error::ToleranceNotMet {
+    Err(lac::Error::ToleranceNotMet {
         tolerance: tol / length,
         reached: reached / length,
     }
@@ -265,36 +266,34 @@ pub fn export(
 /// The tolerance relative to the arc length. A positive tolerance below
 /// [`MIN_RELATIVE_TOLERANCE`] of the arc length cannot be met (double precision cannot
 /// measure the deviation that finely): `tolerance_not_met`, not an invalid request.
-fn checked_tolerance(tolerance: Tolerance, length: f64) -> Result<f64, ErrorBody> {
+fn checked_tolerance(tolerance: Tolerance, length: f64) -> Result<f64> {
     let (Tolerance::Absolute(t) | Tolerance::Relative(t)) = tolerance;
     let relative = match tolerance {
         Tolerance::Absolute(t) => t / length,
         Tolerance::Relative(t) => t,
     };
     if t.is_finite() && relative > 0.0 && relative < MIN_RELATIVE_TOLERANCE {
-        return Err(ErrorBody::new(
-            "tolerance_not_met",
-            format!(
-                "a tolerance of {t:e} is {relative:.1e} of the arc length {length}: below \
-                 {MIN_RELATIVE_TOLERANCE:e} of it no deviation can be certified in double \
-                 precision; ask for at least {:e}",
-                MIN_RELATIVE_TOLERANCE * length
-            ),
-        ));
+        return Err(Error::ToleranceBelowPrecision {
+            tolerance: t,
+            relative,
+            length,
+        });
     }
     Ok(tolerance.relative_to(length)?)
 }
 
-fn measure(exact: &dyn Exact, nurbs: &Nurbs) -> Result<f64, ErrorBody> {
+fn measure(exact: &dyn Exact, nurbs: &Nurbs) -> Result<f64> {
     let d = deviation(exact, nurbs, SAMPLES_PER_PIECE)?;
     if d.is_finite() {
         Ok(d)
     } else {
-        Err(Error::NumericalFailure {
-            what: "the deviation of an export",
-        }
-        .into())
+        Err(bad("the deviation of an export"))
     }
+}
+
+/// A numerical failure in computing `what` (a defect).
+fn bad(what: &'static str) -> Error {
+    lac::Error::NumericalFailure { what }.into()
 }
 
 /// The length of the polyline through 513 points of `curve` at equal parameter steps: its
@@ -309,14 +308,9 @@ fn polyline_length(curve: &lac::RationalCubic) -> f64 {
 }
 
 /// The B-spline of the pieces fitted to `curve` within `target` (model units).
-fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBody> {
-    let bad = || -> ErrorBody {
-        Error::NumericalFailure {
-            what: "the B-spline of an export",
-        }
-        .into()
-    };
-    let fit = |c: &dyn SegmentChain, target: f64| -> Result<QuasiCurve, ErrorBody> {
+fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted> {
+    let bad = || bad("the B-spline of an export");
+    let fit = |c: &dyn SegmentChain, target: f64| -> Result<QuasiCurve> {
         Ok(if plain {
             c.to_cubics(Tolerance::Absolute(target))?
         } else {
@@ -327,7 +321,7 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
     // A piece of a chain (a path's segment, a spline's half) shorter than the tolerance is
     // fitted within its own length: the curve's tolerance, not the piece's, was asked for.
     let piece_of = |c: &dyn SegmentChain| fit(c, target.min(c.arc_length()));
-    let planar = |chains: &[(QuasiCurve, f64)]| -> Result<Fitted, ErrorBody> {
+    let planar = |chains: &[(QuasiCurve, f64)]| -> Result<Fitted> {
         let pieces = || chains.iter().flat_map(|(q, _)| &q.pieces);
         let spans: Vec<Span> = pieces()
             .map(|p| Span::from_rational_cubic(&p.curve))
@@ -360,10 +354,8 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
         })
     };
     match curve {
-        ExportCurve::Plane(solved) => {
-            let c = solved.curve();
-            planar(&[(quasi_of(c)?, c.arc_length())])
-        }
+        ExportCurve::Segment(s) => planar(&[(quasi_of(*s)?, s.arc_length())]),
+        ExportCurve::Compound(c) => planar(&[(quasi_of(*c)?, c.arc_length())]),
         ExportCurve::Path(path) => {
             // Piece by piece: each segment's chain keeps its end points, tangents and
             // curvatures, so the path's joints stay knots with the path's own continuity;
@@ -374,7 +366,7 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
                     PathItem::Segment(seg) => Ok((piece_of(*seg)?, seg.arc_length())),
                     PathItem::Line(a, b) => Ok((straight(*a, *b)?, item.length())),
                 })
-                .collect::<Result<Vec<_>, ErrorBody>>()?;
+                .collect::<Result<Vec<_>>>()?;
             planar(&chains)
         }
         ExportCurve::Spline(spline) => {
@@ -386,7 +378,7 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
                     SplineItem::Segment(seg) => Ok((piece_of(seg)?, seg.arc_length())),
                     SplineItem::Line(a, b) => Ok((straight(*a, *b)?, (*b - *a).hypot())),
                 })
-                .collect::<Result<Vec<_>, ErrorBody>>()?;
+                .collect::<Result<Vec<_>>>()?;
             planar(&chains)
         }
         ExportCurve::Space(seg) => {
@@ -413,7 +405,7 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted, ErrorBod
 
 /// A straight piece from `a` to `b` as a one-piece chain: the cubic with its inner control
 /// points at the thirds (weights 1), of constant (zero) curvature.
-fn straight(a: kurbo::Point, b: kurbo::Point) -> Result<QuasiCurve, ErrorBody> {
+fn straight(a: kurbo::Point, b: kurbo::Point) -> Result<QuasiCurve> {
     let at = |t: f64| a + t * (b - a);
     let curve = lac::RationalCubic::new([a, at(1.0 / 3.0), at(2.0 / 3.0), b], [1.0; 4])?;
     Ok(QuasiCurve {
@@ -460,9 +452,21 @@ fn write(
                 curves: curves.iter().map(NurbsRow::from).collect(),
                 report: report.clone(),
             };
-            crate::json::to_line(&document) + "\n"
+            to_line(&document) + "\n"
         }
     }
+}
+
+/// The document as one line of JSON, as the front ends write their reports: serialising it
+/// cannot fail (plain numbers, strings and arrays), and would write the JSON error line.
+fn to_line(document: &ExportDocument) -> String {
+    serde_json::to_string(document).unwrap_or_else(|e| {
+        serde_json::json!({"error": {
+            "kind": "internal",
+            "message": format!("a report did not serialise: {e}"),
+        }})
+        .to_string()
+    })
 }
 
 #[cfg(test)]

@@ -8,7 +8,7 @@
 //! the deviation of each measured the same way (`certify::deviation`, two-sided, 64 samples
 //! per piece). Timed: `export` to STEP (fit, dense measurement, writing) and kurbo's fit.
 //!
-//!     cargo bench -p lac-io --bench export -- --warm-up-time 1 --measurement-time 3
+//!     cargo bench -p lac-export --bench export -- --warm-up-time 1 --measurement-time 3
 
 use std::hint::black_box;
 
@@ -18,10 +18,9 @@ use kurbo::{
     Point,
 };
 use lac::{Segment, Tolerance};
-use lac_io::export::certify::{deviation, PlaneExact};
-use lac_io::export::nurbs::{Nurbs, Span};
-use lac_io::export::{export, ExportCurve, Format, Meta};
-use lac_io::json::Solved;
+use lac_export::certify::{deviation, PlaneExact};
+use lac_export::nurbs::{Nurbs, Span};
+use lac_export::{export, ExportCurve, Format, Meta};
 
 const ALPHAS: [f64; 5] = [-1.0, 0.0, 0.5, 1.0, 2.0];
 const TOLERANCES: [f64; 7] = [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9];
@@ -82,17 +81,16 @@ fn table() {
     eprintln!("|---|---|---|---|---|");
     for alpha in ALPHAS {
         let seg = segment(alpha);
-        let solved = Solved::Segment(seg.clone());
         for tol in TOLERANCES {
             let cell = |format| match export(
-                &ExportCurve::Plane(&solved),
+                &ExportCurve::Segment(&seg),
                 format,
                 Tolerance::Absolute(tol),
                 false,
                 &meta(),
             ) {
                 Ok(e) => format!("{} ({:.1e})", e.report.pieces, e.report.max_deviation),
-                Err(e) => format!("refused: {}", e.kind),
+                Err(e) => format!("refused: {}", e.kind()),
             };
             let path = kurbo::fit_to_bezpath(&Fit(&seg), tol);
             let nurbs = kurbo_nurbs(&path);
@@ -112,13 +110,12 @@ fn bench_export(c: &mut Criterion) {
     let mut group = c.benchmark_group("export");
     for alpha in [-1.0, 0.5, 2.0] {
         let seg = segment(alpha);
-        let solved = Solved::Segment(seg.clone());
         for tol in [1e-3, 1e-6, 1e-9] {
             let id = format!("alpha={alpha}/tol={tol:.0e}");
             group.bench_with_input(BenchmarkId::new("lac_step", &id), &tol, |b, &tol| {
                 b.iter(|| {
                     export(
-                        &ExportCurve::Plane(black_box(&solved)),
+                        &ExportCurve::Segment(black_box(&seg)),
                         Format::Step,
                         Tolerance::Absolute(tol),
                         false,

@@ -15,8 +15,9 @@
 
 use super::nurbs::{Jet, Nurbs};
 use kurbo::Point;
-use lac::{Curve, Path, Result, Segment, SpaceSegment};
-use lac::{SegmentChain, SpaceCurve};
+use std::borrow::Cow;
+
+use lac::{Curve, Result, Segment, SpaceCurve, SpaceSegment};
 
 /// Newton iterations per projection.
 const ITERATIONS: usize = 8;
@@ -71,131 +72,34 @@ fn ascending(s: &[f64], len: f64) -> (Vec<usize>, Vec<f64>) {
     (order, sorted)
 }
 
-/// One piece of a path in the order of travel: a segment, or the straight piece on an
-/// inflection leg from one point to another.
-#[derive(Clone, Copy, Debug)]
-pub enum PathItem<'a> {
+/// One piece of a planar curve fitted piece by piece, in the order of travel: a segment
+/// (borrowed, or made for the export, as a spline's shortened half), or a straight piece
+/// from one point to another.
+#[derive(Clone, Debug)]
+pub enum Piece<'a> {
     /// A log-aesthetic segment.
-    Segment(&'a Segment),
+    Segment(Cow<'a, Segment>),
     /// A straight piece.
     Line(Point, Point),
 }
 
-impl PathItem<'_> {
+impl Piece<'_> {
     /// Its arc length.
     pub fn length(&self) -> f64 {
         match self {
-            PathItem::Segment(seg) => seg.arc_length(),
-            PathItem::Line(a, b) => (b.x - a.x).hypot(b.y - a.y),
+            Piece::Segment(seg) => seg.arc_length(),
+            Piece::Line(a, b) => (b.x - a.x).hypot(b.y - a.y),
         }
     }
 }
 
-/// The pieces of `path` in the order of travel: each straight piece follows the segment
-/// whose end it starts from (the wrap-around one, of a closed path, comes last).
-pub fn path_items(path: &Path) -> Vec<PathItem<'_>> {
-    let mut lines: Vec<(Point, Point)> = path
-        .straight_pieces()
-        .iter()
-        .map(|l| (l.from, l.to))
-        .collect();
-    let mut out = Vec::new();
-    for seg in path.segments() {
-        out.push(PathItem::Segment(seg));
-        let end = seg.end_point();
-        let nearest = lines.iter().enumerate().min_by(|(_, a), (_, b)| {
-            let (da, db) = ((a.0 - end).hypot(), (b.0 - end).hypot());
-            da.total_cmp(&db)
-        });
-        if let Some((i, &(from, to))) = nearest {
-            if (from.x - end.x).hypot(from.y - end.y) <= 1e-9 * path.arc_length() {
-                out.push(PathItem::Line(from, to));
-                lines.remove(i);
-            }
-        }
-    }
-    out
-}
+/// A curve of pieces (a path's segments and straight pieces, a spline's pieces) in the order
+/// of travel.
+pub struct PiecesExact<'a, 'b>(pub &'a [Piece<'b>]);
 
-/// The share of a spline half's length, next to its inflection, that the export takes as
-/// straight: where |κ| is below 1e-12 of the half's other end (κ ∝ u^(1/|α|) in the arc
-/// length u from the inflection, so a share 1e-12^|α|; nothing below [`MIN_FLAT_SHARE`]). The curve there departs from its tangent by less than 1e-12 × the
-/// share² of the half's length, far below any tolerance, while a quasi chain would need
-/// pieces down to 1e-48 of its turning (α = −0.25) to follow its flattening.
-fn flat_share(alpha: f64) -> f64 {
-    let share = 1e-12f64.powf(-alpha);
-    if alpha < 0.0 && share >= MIN_FLAT_SHARE {
-        share
-    } else {
-        0.0
-    }
-}
-
-/// The shortest flat stretch taken as straight (α ≥ −0.5): shorter ones, where the quasi
-/// chains follow the halves to their ends, would leave a straight piece of a few 1e-9 of
-/// the spline, too short for a knot span.
-const MIN_FLAT_SHARE: f64 = 1e-6;
-
-/// A spline's pieces in order for export: the halves of a span through an inflection
-/// shortened by [`flat_share`] of their length at the inflection (solved again on their
-/// control triangles with the inflection-side leg shortened by as much: points so near a
-/// flat end are beyond the resolution of the tangent angle that places them on the
-/// segment), with the straight piece between them.
-pub fn spline_items(spline: &lac::Spline) -> Result<Vec<SplineItem>> {
-    let pieces = spline.pieces();
-    let triangles = spline.control_triangles();
-    let spans = spline.spans_of_pieces();
-    let n = pieces.len();
-    let mut out = Vec::new();
-    for (k, seg) in pieces.iter().enumerate() {
-        let cut = flat_share(seg.alpha()) * seg.arc_length();
-        let ends_flat = k + 1 < n && spans[k + 1] == spans[k] && cut > 0.0;
-        let starts_flat = k > 0 && spans[k - 1] == spans[k] && cut > 0.0;
-        let [a, p, b] = triangles[k];
-        let piece = if ends_flat {
-            Segment::from_control_points([a, p, b - (b - p).normalize() * cut], seg.alpha())?
-        } else if starts_flat {
-            Segment::from_control_points([a + (p - a).normalize() * cut, p, b], seg.alpha())?
-        } else {
-            seg.clone()
-        };
-        if starts_flat {
-            let from = match out.last() {
-                Some(SplineItem::Segment(s)) => s.end_point(),
-                _ => seg.start_point(),
-            };
-            out.push(SplineItem::Line(from, piece.start_point()));
-        }
-        out.push(SplineItem::Segment(piece));
-    }
-    Ok(out)
-}
-
-/// One piece of a spline as exported: a segment (owned: a half is shortened) or the
-/// straight piece at an inflection.
-pub enum SplineItem {
-    /// A log-aesthetic segment.
-    Segment(Segment),
-    /// A straight piece.
-    Line(Point, Point),
-}
-
-impl SplineItem {
-    /// As a path's item.
-    pub fn as_path_item(&self) -> PathItem<'_> {
-        match self {
-            SplineItem::Segment(s) => PathItem::Segment(s),
-            SplineItem::Line(a, b) => PathItem::Line(*a, *b),
-        }
-    }
-}
-
-/// A path: its segments and straight pieces in the order of travel.
-pub struct PathExact<'a>(pub Vec<PathItem<'a>>);
-
-impl Exact for PathExact<'_> {
+impl Exact for PiecesExact<'_, '_> {
     fn length(&self) -> f64 {
-        self.0.iter().map(PathItem::length).sum()
+        self.0.iter().map(Piece::length).sum()
     }
 
     fn jets(&self, s: &[f64]) -> Result<Vec<Jet>> {
@@ -216,7 +120,7 @@ impl Exact for PathExact<'_> {
                 .map(|&j| (sorted[j] - start).clamp(0.0, item.length()))
                 .collect();
             match item {
-                PathItem::Segment(seg) if !local.is_empty() => {
+                Piece::Segment(seg) if !local.is_empty() => {
                     for (q, &j) in seg.samples_at_arc_lengths(&local)?.iter().zip(&here) {
                         let (sin, cos) = q.theta.sin_cos();
                         out[order[j]] = Jet {
@@ -226,7 +130,7 @@ impl Exact for PathExact<'_> {
                         };
                     }
                 }
-                PathItem::Line(a, b) => {
+                Piece::Line(a, b) => {
                     let len = item.length();
                     let (ux, uy) = ((b.x - a.x) / len, (b.y - a.y) / len);
                     for (&t, &j) in local.iter().zip(&here) {
@@ -237,7 +141,7 @@ impl Exact for PathExact<'_> {
                         };
                     }
                 }
-                PathItem::Segment(_) => {}
+                Piece::Segment(_) => {}
             }
             start = end;
         }

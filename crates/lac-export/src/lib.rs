@@ -2,10 +2,11 @@
 //! degree-3 B-splines within a tolerance, with the achieved deviation measured densely, in
 //! DXF, STEP, IGES, SVG (plain cubics) or JSON.
 //!
-//! Planar curves are replaced by the quasi-aesthetic rational cubics of
-//! [`lac::Curve::to_rational_cubics`] (G2 joins, each piece's curvature proven monotone; SVG
-//! takes the plain cubics of [`lac::Curve::to_cubics`]), space segments by the C1 cubic
-//! Hermite pieces of [`SpaceSegment::to_cubics`] (no monotonicity proof). The pieces become
+//! Every curve kind says once, in `kinds.rs`, how it is exported ([`Exportable`]). Planar
+//! curves are replaced by the quasi-aesthetic rational cubics of
+//! [`lac::ToBezier::to_rational_cubics`] (G2 joins, each piece's curvature proven monotone;
+//! SVG takes the plain cubics of [`lac::ToBezier::to_cubics`]), space segments by the C1
+//! cubic Hermite pieces of [`lac::SpaceSegment::to_cubics`] (no monotonicity proof). The pieces become
 //! one clamped B-spline ([`Nurbs`]), or one single-span curve per piece. The deviation
 //! reported is [`certify::deviation`] of the B-spline as written; when it exceeds the
 //! tolerance (the fits measure their own deviation more coarsely) the fit is repeated with
@@ -27,6 +28,7 @@ pub mod dxf;
 mod error;
 pub mod iges;
 pub mod json;
+pub mod kinds;
 mod number;
 pub mod nurbs;
 pub mod step;
@@ -36,18 +38,13 @@ use std::time::{SystemTime, UNIX_EPOCH};
 
 use serde::{Deserialize, Serialize};
 
-use lac::{
-    CompoundCurve, Continuity, Curve, Path, QuasiCurve, Segment, SpaceSegment, Spline, Tolerance,
-    MIN_RELATIVE_TOLERANCE,
-};
-use lac::{SegmentChain, SpaceCurve, ToBezier};
+use lac::{Curve, QuasiCurve, Tolerance, MIN_RELATIVE_TOLERANCE};
+use lac::{SegmentChain, ToBezier};
 
-use certify::{
-    deviation, path_items, spline_items, Exact, PathExact, PathItem, PlaneExact, SpaceExact,
-    SplineItem,
-};
+use certify::{deviation, Exact, Piece, PiecesExact, PlaneExact, SpaceExact};
 pub use error::{Error, Result};
 use json::{ExportDocument, NurbsRow};
+pub use kinds::{Exportable, Parts};
 pub use nurbs::Nurbs;
 use nurbs::Span;
 
@@ -123,21 +120,6 @@ pub fn timestamp(time: SystemTime) -> String {
     )
 }
 
-/// The curve to export.
-#[derive(Clone, Copy)]
-pub enum ExportCurve<'a> {
-    /// A planar segment.
-    Segment(&'a Segment),
-    /// A planar compound-rhythm curve.
-    Compound(&'a CompoundCurve),
-    /// A multi-segment planar path.
-    Path(&'a Path),
-    /// A G2 spline through points (its spans through inflections included).
-    Spline(&'a Spline),
-    /// A space segment.
-    Space(&'a SpaceSegment),
-}
-
 /// How an export went: `lac export`'s report.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ExportReport {
@@ -191,25 +173,15 @@ struct Fitted {
 /// Export `curve` as `format` within `tolerance`, one curve or (`single_spans`) one per
 /// piece.
 pub fn export(
-    curve: &ExportCurve,
+    curve: &dyn Exportable,
     format: Format,
     tolerance: Tolerance,
     single_spans: bool,
     meta: &Meta,
 ) -> Result<Exported> {
-    let (length, kind) = match curve {
-        ExportCurve::Segment(s) => (s.arc_length(), "segment"),
-        ExportCurve::Compound(c) => (c.arc_length(), "compound"),
-        ExportCurve::Path(path) => (path.arc_length(), "path"),
-        ExportCurve::Spline(spline) => (spline.arc_length(), "spline"),
-        ExportCurve::Space(seg) => (seg.arc_length(), "space"),
-    };
-    let continuity = match curve {
-        ExportCurve::Space(_) => "C1",
-        ExportCurve::Path(p) if p.continuity() == Continuity::G1 => "G1",
-        _ => "G2",
-    };
-    if format == Format::Svg && matches!(curve, ExportCurve::Space(_)) {
+    let (length, kind, continuity) = (curve.length(), curve.kind(), curve.continuity());
+    let parts = curve.parts()?;
+    if format == Format::Svg && matches!(parts, Parts::Space(_)) {
         return Err(Error::SvgOfSpaceCurve);
     }
     let tol = checked_tolerance(tolerance, length)? * length;
@@ -217,17 +189,11 @@ pub fn export(
     let mut target = tol;
     let mut reached = f64::INFINITY;
     for _ in 0..ATTEMPTS {
-        let fitted = fit(curve, target, plain)?;
-        let measured = match curve {
-            ExportCurve::Space(s) => measure(&SpaceExact(s), &fitted.nurbs)?,
-            ExportCurve::Path(p) => measure(&PathExact(path_items(p)), &fitted.nurbs)?,
-            ExportCurve::Spline(s) => {
-                let items = spline_items(s)?;
-                let items = items.iter().map(SplineItem::as_path_item).collect();
-                measure(&PathExact(items), &fitted.nurbs)?
-            }
-            ExportCurve::Segment(s) => measure(&PlaneExact(*s), &fitted.nurbs)?,
-            ExportCurve::Compound(c) => measure(&PlaneExact(*c), &fitted.nurbs)?,
+        let fitted = fit(&parts, target, plain)?;
+        let measured = match &parts {
+            Parts::Whole(chain) => measure(&PlaneExact(*chain), &fitted.nurbs)?,
+            Parts::Pieces(pieces) => measure(&PiecesExact(pieces), &fitted.nurbs)?,
+            Parts::Space(s) => measure(&SpaceExact(s), &fitted.nurbs)?,
         };
         if measured <= tol {
             let curves = if single_spans {
@@ -308,7 +274,7 @@ fn polyline_length(curve: &lac::RationalCubic) -> f64 {
 }
 
 /// The B-spline of the pieces fitted to `curve` within `target` (model units).
-fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted> {
+fn fit(parts: &Parts, target: f64, plain: bool) -> Result<Fitted> {
     let bad = || bad("the B-spline of an export");
     let fit = |c: &dyn SegmentChain, target: f64| -> Result<QuasiCurve> {
         Ok(if plain {
@@ -353,35 +319,21 @@ fn fit(curve: &ExportCurve, target: f64, plain: bool) -> Result<Fitted> {
             monotone_proven: Some(pieces().all(|p| p.monotonicity.proven)),
         })
     };
-    match curve {
-        ExportCurve::Segment(s) => planar(&[(quasi_of(*s)?, s.arc_length())]),
-        ExportCurve::Compound(c) => planar(&[(quasi_of(*c)?, c.arc_length())]),
-        ExportCurve::Path(path) => {
-            // Piece by piece: each segment's chain keeps its end points, tangents and
-            // curvatures, so the path's joints stay knots with the path's own continuity;
-            // a straight piece (an inflection leg) is one cubic span with collinear points.
-            let chains = path_items(path)
+    match parts {
+        Parts::Whole(chain) => planar(&[(quasi_of(*chain)?, chain.arc_length())]),
+        Parts::Pieces(pieces) => {
+            let chains = pieces
                 .iter()
-                .map(|item| match item {
-                    PathItem::Segment(seg) => Ok((piece_of(*seg)?, seg.arc_length())),
-                    PathItem::Line(a, b) => Ok((straight(*a, *b)?, item.length())),
+                .map(|piece| match piece {
+                    Piece::Segment(seg) => {
+                        Ok((piece_of(seg.as_ref())?, Curve::arc_length(seg.as_ref())))
+                    }
+                    Piece::Line(a, b) => Ok((straight(*a, *b)?, piece.length())),
                 })
                 .collect::<Result<Vec<_>>>()?;
             planar(&chains)
         }
-        ExportCurve::Spline(spline) => {
-            // Piece by piece, like a path: every point, and the two halves of a span
-            // through an inflection (with the straight piece where they are flat), is a knot.
-            let chains = spline_items(spline)?
-                .iter()
-                .map(|item| match item {
-                    SplineItem::Segment(seg) => Ok((piece_of(seg)?, seg.arc_length())),
-                    SplineItem::Line(a, b) => Ok((straight(*a, *b)?, (*b - *a).hypot())),
-                })
-                .collect::<Result<Vec<_>>>()?;
-            planar(&chains)
-        }
-        ExportCurve::Space(seg) => {
+        Parts::Space(seg) => {
             let cubics = seg.to_cubics(Tolerance::Absolute(target))?;
             let spans: Vec<Span> = cubics
                 .pieces

@@ -121,7 +121,7 @@ fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
 
 impl Nurbs {
     /// The B-spline of the chain of `spans` with span i over the parameter interval
-    /// [knots[i], knots[i + 1]] (`breaks`: n + 1 increasing values).
+    /// `[knots[i], knots[i + 1]]` (`breaks`: n + 1 increasing values).
     ///
     /// Errors: no spans, a count of breaks that does not match, breaks not increasing and
     /// finite, consecutive spans that do not share their join point, or weights that are not

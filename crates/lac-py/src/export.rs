@@ -2,8 +2,8 @@
 //! cubic B-splines within a tolerance, written as DXF, STEP, IGES, SVG or JSON.
 
 use lac::Tolerance;
-use lac_export::{ExportCurve, Format, Meta};
-use lac_io::json::Solved;
+use lac_export::{Format, Meta};
+use lac_io::json::AnyCurve;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -11,14 +11,6 @@ use crate::curve::{PyCompoundCurve, PySegment};
 use crate::errors::{from_body, invalid};
 use crate::path::{PyPath, PySpline};
 use crate::space::PySpaceSegment;
-
-/// What `export` fits and writes: a copy of the curve, so that the GIL can be released.
-enum Owned {
-    Plane(Solved),
-    Path(lac::Path),
-    Spline(lac::Spline),
-    Space(lac::SpaceSegment),
-}
 
 /// Write `curve` (a `Segment`, `CompoundCurve`, `Path`, `Spline` or `SpaceSegment`) as a CAD
 /// file:
@@ -56,16 +48,17 @@ pub(crate) fn export<'py>(
     } else {
         Tolerance::Absolute(tolerance)
     };
+    // A copy of the curve, so that the GIL can be released.
     let owned = if let Ok(s) = curve.cast::<PySegment>() {
-        Owned::Plane(Solved::Segment((*s.get().inner).clone()))
+        AnyCurve::Segment((*s.get().inner).clone())
     } else if let Ok(c) = curve.cast::<PyCompoundCurve>() {
-        Owned::Plane(Solved::Compound((*c.get().inner).clone()))
+        AnyCurve::Compound((*c.get().inner).clone())
     } else if let Ok(p) = curve.cast::<PyPath>() {
-        Owned::Path(p.get().0.clone())
+        AnyCurve::Path(p.get().0.clone())
     } else if let Ok(s) = curve.cast::<PySpline>() {
-        Owned::Spline(s.get().0.clone())
+        AnyCurve::Spline(s.get().0.clone())
     } else if let Ok(s) = curve.cast::<PySpaceSegment>() {
-        Owned::Space(s.get().0.clone())
+        AnyCurve::Space(s.get().0.clone())
     } else {
         return Err(invalid(
             py,
@@ -73,15 +66,8 @@ pub(crate) fn export<'py>(
         ));
     };
     let meta = Meta::now(name);
-    let written = py.detach(|| {
-        let curve = match &owned {
-            Owned::Plane(s) => ExportCurve::from(s),
-            Owned::Path(p) => ExportCurve::Path(p),
-            Owned::Spline(s) => ExportCurve::Spline(s),
-            Owned::Space(s) => ExportCurve::Space(s),
-        };
-        lac_export::export(&curve, format, tolerance, pieces, &meta)
-    });
+    let written =
+        py.detach(|| lac_export::export(owned.exportable(), format, tolerance, pieces, &meta));
     let written = written.map_err(|e| from_body(py, e.into()))?;
     let report = serde_json::to_value(&written.report)
         .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;

@@ -29,7 +29,7 @@ pub(super) fn check(
         Tolerance::Absolute(tolerance)
     };
     let Ok(exported) = lac_export::export(
-        &built.as_export(),
+        built.as_export(),
         format,
         tolerance,
         single_spans,

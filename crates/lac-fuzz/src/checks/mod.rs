@@ -13,7 +13,7 @@ use lac::{
     TorsionType, Vec3,
 };
 use lac::{Closure, SpaceCurve};
-use lac_export::ExportCurve;
+use lac_export::Exportable;
 use lac_io::json::Solved;
 
 use crate::Input;
@@ -93,11 +93,11 @@ enum Built {
 }
 
 impl Built {
-    fn as_export(&self) -> ExportCurve<'_> {
+    fn as_export(&self) -> &dyn Exportable {
         match self {
-            Built::Plane(s) => ExportCurve::from(s),
-            Built::Path(p) => ExportCurve::Path(p),
-            Built::Space(s) => ExportCurve::Space(s),
+            Built::Plane(s) => s.exportable(),
+            Built::Path(p) => p,
+            Built::Space(s) => s,
         }
     }
 

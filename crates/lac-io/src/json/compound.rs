@@ -5,7 +5,9 @@
 use lac::{CompoundCurve, Curve, LcgLine, Segment, SegmentChain};
 use serde::{Deserialize, Serialize};
 
+use super::kind::{fields, Kind};
 use super::{all_finite, point, xy, ErrorBody, Report, SampleRow, SegmentInput, Xy};
+use serde_json::{Map, Value};
 
 /// A compound-rhythm curve (seeds 004 and 002): three points with `ratio`, or four points
 /// without: `{"points":[…],"alpha0":A,"alpha1":B,"ratio":R}`.
@@ -87,11 +89,12 @@ impl Solved {
     }
 }
 
-impl<'a> From<&'a Solved> for lac_export::ExportCurve<'a> {
-    fn from(solved: &'a Solved) -> Self {
-        match solved {
-            Solved::Segment(s) => lac_export::ExportCurve::Segment(s),
-            Solved::Compound(c) => lac_export::ExportCurve::Compound(c),
+impl Solved {
+    /// The curve, for CAD export.
+    pub fn exportable(&self) -> &dyn lac_export::Exportable {
+        match self {
+            Solved::Segment(s) => s,
+            Solved::Compound(c) => c,
         }
     }
 }
@@ -216,6 +219,22 @@ impl Report for CompoundReport {
                 .all(|l| all_finite([l.alpha, l.intercept, l.log_rho[0], l.log_rho[1]]))
             && all_finite(self.points.iter().flatten().copied())
             && self.samples.iter().all(|s| all_finite(s.values()))
+    }
+}
+
+/// A compound-rhythm curve: a document with `"alpha0"` or `"alpha1"`.
+pub struct CompoundKind;
+
+impl Kind for CompoundKind {
+    const NAME: &'static str = "compound";
+    type Curve = CompoundCurve;
+
+    fn claims(document: &Map<String, Value>) -> bool {
+        document.contains_key("alpha0") || document.contains_key("alpha1")
+    }
+
+    fn solve(document: Map<String, Value>) -> Result<CompoundCurve, ErrorBody> {
+        fields::<CompoundInput>(document, "a compound curve", CompoundInput::SHAPE)?.solve()
     }
 }
 

@@ -23,6 +23,7 @@ use serde::{Deserialize, Serialize};
 
 mod compound;
 mod fast;
+mod kind;
 mod lcg;
 mod monotone;
 mod path;
@@ -33,21 +34,22 @@ mod space;
 mod spline;
 mod verdict;
 
-pub use compound::{CompoundInput, CompoundReport, CurveInput, LcgRow, Solved};
+pub use compound::{CompoundInput, CompoundKind, CompoundReport, CurveInput, LcgRow, Solved};
+pub use kind::{fields, AnyCurve, Kind, ANY_SHAPE, KIND_NAMES};
 pub use lcg::{FitRow, LcgInput, LcgReport, PieceFitRow, PlotRow};
 pub use monotone::{
     verdict_name, MonotoneDocument, MonotoneInput, MonotonePiecesReport, MonotoneReport,
 };
-pub use path::{PathInput, PathJointRow, PathReport, PathSegmentRow, PathStraightRow};
+pub use path::{PathInput, PathJointRow, PathKind, PathReport, PathSegmentRow, PathStraightRow};
 pub use quasi::{PieceInput, PiecesInput, QuasiInput, QuasiPieceRow, QuasiReport};
 pub use region::{PointRegionInput, PointRegionReport, RegionInput, RegionReport};
-pub use segment::{SegmentInput, SegmentReport};
+pub use segment::{SegmentInput, SegmentKind, SegmentReport};
 pub use space::{
     planar_control_points, GraphFitRow, GraphRow, LineFitRow, PlanarRow, SpaceFormRow,
-    SpaceGraphsReport, SpaceInput, SpaceLcgReport, SpaceReport, SpaceSampleRow, TransformRow,
-    PLANAR_NOTE,
+    SpaceGraphsReport, SpaceInput, SpaceKind, SpaceLcgReport, SpaceReport, SpaceSampleRow,
+    TransformRow, PLANAR_NOTE,
 };
-pub use spline::{SplineInflectionRow, SplinePieceRow, SplineReport};
+pub use spline::{SplineInflectionRow, SplineInput, SplineKind, SplinePieceRow, SplineReport};
 
 /// Its path before the CSV writers moved to [`crate::csv`].
 pub use crate::csv::samples_csv;

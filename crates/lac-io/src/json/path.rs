@@ -6,7 +6,9 @@ use lac::Closure;
 use lac::{Alphas, Continuity, ControlPolygon, Curve, Path};
 use serde::{Deserialize, Serialize};
 
+use super::kind::{fields, Kind};
 use super::{all_finite, point, xy, ErrorBody, Report, SampleRow, Xy};
+use serde_json::{Map, Value};
 
 /// A path from a control polygon: `{"points":[[x,y],…],"closed":false,"alpha":A,"g2":true}`,
 /// with `"alphas":[…]` (one per segment) instead of `"alpha"`, and for a G1 path optionally
@@ -285,5 +287,32 @@ impl Report for PathReport {
                     && all_finite(p.points.iter().flatten().copied())
             })
             && self.samples.iter().all(|s| all_finite(s.values()))
+    }
+}
+
+/// A path from a control polygon: `lac path`'s result (told by its `"segments"` and
+/// `"joints"`, solved again from its input) or its input (told by `"alphas"`, `"closed"`,
+/// `"g2"` or `"fractions"`).
+pub struct PathKind;
+
+impl Kind for PathKind {
+    const NAME: &'static str = "path";
+    type Curve = Path;
+
+    fn claims(document: &Map<String, Value>) -> bool {
+        let has = |key: &str| document.contains_key(key);
+        (has("segments") && has("joints"))
+            || ["alphas", "closed", "g2", "fractions"]
+                .iter()
+                .any(|key| has(key))
+    }
+
+    fn solve(document: Map<String, Value>) -> Result<Path, ErrorBody> {
+        let input = if document.contains_key("segments") && document.contains_key("joints") {
+            fields::<PathReport>(document, "a lac path result", PathInput::SHAPE)?.input()
+        } else {
+            fields::<PathInput>(document, "a path", PathInput::SHAPE)?
+        };
+        input.solve()
     }
 }

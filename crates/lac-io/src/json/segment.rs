@@ -5,7 +5,9 @@
 use lac::{Curve, Segment};
 use serde::{Deserialize, Serialize};
 
+use super::kind::{fields, Kind};
 use super::{all_finite, point, xy, ErrorBody, Report, SampleRow, Xy};
+use serde_json::{Map, Value};
 
 /// A segment from three control points and α (seed 000): `{"points":[[x,y]×3],"alpha":A}`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -94,6 +96,23 @@ impl Report for SegmentReport {
             self.turning_angle,
         ]) && all_finite(self.points.iter().flatten().copied())
             && self.samples.iter().all(|s| all_finite(s.values()))
+    }
+}
+
+/// A segment from three control points and α: a document with `"alpha"` (and none of the
+/// keys that a kind asked before claims).
+pub struct SegmentKind;
+
+impl Kind for SegmentKind {
+    const NAME: &'static str = "segment";
+    type Curve = Segment;
+
+    fn claims(document: &Map<String, Value>) -> bool {
+        document.contains_key("alpha")
+    }
+
+    fn solve(document: Map<String, Value>) -> Result<Segment, ErrorBody> {
+        fields::<SegmentInput>(document, "a segment", SegmentInput::SHAPE)?.solve()
     }
 }
 

@@ -6,7 +6,9 @@ use lac::SpaceCurve;
 use lac::{Frame, GraphPoint, LcgFit, SpaceSegment, SpaceShape, TorsionType, Vec3};
 use serde::{Deserialize, Serialize};
 
+use super::kind::{fields, Kind};
 use super::{all_finite, ErrorBody, Report, Xyz};
+use serde_json::{Map, Value};
 
 /// The `"note"` of a planar (coplanar-points) space result.
 pub const PLANAR_NOTE: &str = "the four control points are coplanar, so the planar \
@@ -435,6 +437,22 @@ impl SpaceLcgReport {
 impl Report for SpaceLcgReport {
     fn is_finite(&self) -> bool {
         self.curvature.is_finite() && self.torsion.is_finite()
+    }
+}
+
+/// A space segment: a document with `"beta"`.
+pub struct SpaceKind;
+
+impl Kind for SpaceKind {
+    const NAME: &'static str = "space";
+    type Curve = SpaceSegment;
+
+    fn claims(document: &Map<String, Value>) -> bool {
+        document.contains_key("beta")
+    }
+
+    fn solve(document: Map<String, Value>) -> Result<SpaceSegment, ErrorBody> {
+        fields::<SpaceInput>(document, "a space curve", SpaceInput::SHAPE)?.solve()
     }
 }
 

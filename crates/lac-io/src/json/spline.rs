@@ -1,10 +1,44 @@
-//! G2 splines through points: [`SplineReport`], what `lac spline` prints.
+//! G2 splines through points: [`SplineInput`], what makes one, and [`SplineReport`], what
+//! `lac spline` prints.
 
-use lac::Curve;
-use lac::SegmentChain;
+use kurbo::Point;
+use lac::{Closure, Curve, SegmentChain, Spline};
 use serde::{Deserialize, Serialize};
+use serde_json::{Map, Value};
 
-use super::{all_finite, xy, ErrorBody, Report, SampleRow, Xy};
+use super::kind::{fields, Kind};
+use super::{all_finite, point, xy, ErrorBody, Report, SampleRow, Xy};
+
+/// A spline's points, slope, closure and end tangents, as `lac spline` takes them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SplineInput {
+    /// The points it passes through.
+    pub points: Vec<Point>,
+    /// The slope of every segment.
+    pub alpha: f64,
+    /// Whether it is closed.
+    pub closed: bool,
+    /// An open spline's end tangent directions, radians (default: those of the circles
+    /// through its first and last three points).
+    pub ends: Option<[f64; 2]>,
+}
+
+impl SplineInput {
+    /// Solve it.
+    pub fn solve(&self) -> Result<Spline, ErrorBody> {
+        let closure = if self.closed {
+            Closure::Closed
+        } else {
+            Closure::Open
+        };
+        Ok(Spline::from_points(
+            &self.points,
+            self.alpha,
+            closure,
+            self.ends,
+        )?)
+    }
+}
 
 /// One piece of a spline through points: the segment of a span, or one half of a span
 /// through an inflection.
@@ -97,6 +131,42 @@ impl SplineReport {
             samples: samples.iter().map(SampleRow::from).collect(),
         }
         .checked()
+    }
+}
+
+impl SplineReport {
+    /// The spline it reports, as an input: its points, slope and closure, and an open one's
+    /// end tangents.
+    pub fn input(&self) -> SplineInput {
+        let ends = match (self.closed, self.angles.first(), self.angles.last()) {
+            (false, Some(&a), Some(&b)) => Some([a, b]),
+            _ => None,
+        };
+        SplineInput {
+            points: self.points.iter().map(|&p| point(p)).collect(),
+            alpha: self.alpha,
+            closed: self.closed,
+            ends,
+        }
+    }
+}
+
+/// A spline through points: `lac spline`'s result, told by its `"pieces"` and `"angles"`,
+/// solved again through its points with its end tangents.
+pub struct SplineKind;
+
+impl Kind for SplineKind {
+    const NAME: &'static str = "spline";
+    type Curve = Spline;
+
+    fn claims(document: &Map<String, Value>) -> bool {
+        document.contains_key("pieces") && document.contains_key("angles")
+    }
+
+    fn solve(document: Map<String, Value>) -> Result<Spline, ErrorBody> {
+        let report: SplineReport =
+            fields(document, "a lac spline result", "what lac spline prints")?;
+        report.input().solve()
     }
 }
 

@@ -3,16 +3,16 @@
 
 use axum::http::{header, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
-use lac::{Curve, SpaceCurve, Tolerance};
-use lac_export::{export as write_export, ExportCurve, Format, Meta, DEFAULT_TOLERANCE};
-use lac_io::json::{to_line, ErrorBody, PathInput, SpaceInput};
+use lac::Tolerance;
+use lac_export::{export as write_export, Format, Meta, DEFAULT_TOLERANCE};
+use lac_io::json::{to_line, AnyCurve, ErrorBody};
 
-use super::request::{self, field_shape, optional, required};
+use super::request::{self, optional, required};
 use super::App;
 use crate::error::ApiError;
 
 /// The request's shape, for error messages.
-const SHAPE: &str = r#"{…a segment, compound, path or space curve as /api/segment, /api/compound or /api/space take it…, "format":"dxf"|"step"|"iges"|"svg"|"json", "tolerance":T (model units, default 1e-6) or "relative_tolerance":R, "pieces":false, "name":"lac-curve"}"#;
+const SHAPE: &str = r#"{…a segment, compound, path or space curve as /api/segment, /api/compound, /api/path or /api/space take it, or a lac spline result…, "format":"dxf"|"step"|"iges"|"svg"|"json", "tolerance":T (model units, default 1e-6) or "relative_tolerance":R, "pieces":false, "name":"lac-curve"}"#;
 
 /// The options of the request, removed from the curve's fields before they are read (the
 /// page's `samples` is ignored).
@@ -91,37 +91,10 @@ pub(crate) fn export(app: &App, text: &str) -> Result<File, ApiError> {
         map.remove(key);
     }
     let meta = Meta::now(name.clone());
-    let has = |key: &str| map.contains_key(key);
-    let exported = if has("beta") {
-        let input: SpaceInput = field_shape(&map, SpaceInput::SHAPE)?;
-        let segment = input.solve()?;
-        within_limit(app, tolerance, segment.arc_length())?;
-        write_export(
-            &ExportCurve::Space(&segment),
-            format,
-            tolerance,
-            pieces,
-            &meta,
-        )?
-    } else if ["alphas", "closed", "g2", "fractions"]
-        .iter()
-        .any(|k| has(k))
-    {
-        let input: PathInput = field_shape(&map, PathInput::SHAPE)?;
-        let path = input.solve()?;
-        within_limit(app, tolerance, path.arc_length())?;
-        write_export(&ExportCurve::Path(&path), format, tolerance, pieces, &meta)?
-    } else {
-        let solved = request::curve(&map)?.solve()?;
-        within_limit(app, tolerance, solved.curve().arc_length())?;
-        write_export(
-            &ExportCurve::from(&solved),
-            format,
-            tolerance,
-            pieces,
-            &meta,
-        )?
-    };
+    let curve = AnyCurve::from_fields(map)?;
+    let exportable = curve.exportable();
+    within_limit(app, tolerance, exportable.length())?;
+    let exported = write_export(exportable, format, tolerance, pieces, &meta)?;
     Ok(File {
         report: to_line(&exported.report),
         document: exported.document,

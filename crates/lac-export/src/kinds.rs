@@ -1,0 +1,215 @@
+//! The curves CAD export takes, each described once ([`Exportable`]): what the report calls
+//! it, the continuity at its knots, and the parts it is fitted by. A new kind of curve is
+//! one `impl Exportable` here.
+//!
+//! A segment or a compound curve is one chain of segments, fitted whole (the quasi chain of
+//! seed 001 keeps its G2 joint). A path and a spline are fitted piece by piece, so that
+//! every joint is a knot with the curve's own continuity; a space segment by cubic Hermite
+//! pieces.
+
+use std::borrow::Cow;
+
+use kurbo::Point;
+use lac::{
+    CompoundCurve, Continuity, Curve, Path, Segment, SegmentChain, SpaceCurve, SpaceSegment, Spline,
+};
+
+use crate::certify::Piece;
+use crate::Result;
+
+/// What CAD export needs of a curve.
+pub trait Exportable {
+    /// Its name in the export's report: `"segment"`, `"compound"`, `"path"`, `"spline"`,
+    /// `"space"`.
+    fn kind(&self) -> &'static str;
+
+    /// Its arc length (the tolerance may be relative to it).
+    fn length(&self) -> f64;
+
+    /// The continuity the B-spline has at the knots between parts: `"G2"`, `"G1"` (a G1
+    /// path) or `"C1"` (space curves).
+    fn continuity(&self) -> &'static str {
+        "G2"
+    }
+
+    /// The parts it is fitted by.
+    fn parts(&self) -> Result<Parts<'_>>;
+}
+
+/// How a curve is fitted.
+pub enum Parts<'a> {
+    /// One chain of segments, fitted whole by quasi-aesthetic cubics joined G2.
+    Whole(&'a dyn SegmentChain),
+    /// Planar pieces in the order of travel, each fitted on its own (within the smaller of
+    /// the tolerance and its length), every boundary a knot.
+    Pieces(Vec<Piece<'a>>),
+    /// A space segment, by cubic Hermite pieces joined C1.
+    Space(&'a SpaceSegment),
+}
+
+impl Exportable for Segment {
+    fn kind(&self) -> &'static str {
+        "segment"
+    }
+
+    fn length(&self) -> f64 {
+        Curve::arc_length(self)
+    }
+
+    fn parts(&self) -> Result<Parts<'_>> {
+        Ok(Parts::Whole(self))
+    }
+}
+
+impl Exportable for CompoundCurve {
+    fn kind(&self) -> &'static str {
+        "compound"
+    }
+
+    fn length(&self) -> f64 {
+        Curve::arc_length(self)
+    }
+
+    fn parts(&self) -> Result<Parts<'_>> {
+        Ok(Parts::Whole(self))
+    }
+}
+
+/// Segment by segment: each segment's chain keeps its end points, tangents and curvatures,
+/// so the path's joints stay knots with the path's own continuity; a straight piece (an
+/// inflection leg) is one cubic span with collinear points.
+impl Exportable for Path {
+    fn kind(&self) -> &'static str {
+        "path"
+    }
+
+    fn length(&self) -> f64 {
+        Curve::arc_length(self)
+    }
+
+    fn continuity(&self) -> &'static str {
+        match Path::continuity(self) {
+            Continuity::G1 => "G1",
+            Continuity::G2 => "G2",
+        }
+    }
+
+    fn parts(&self) -> Result<Parts<'_>> {
+        Ok(Parts::Pieces(path_pieces(self)))
+    }
+}
+
+/// Piece by piece, like a path: every point, and the two halves of a span through an
+/// inflection (with the straight piece where they are flat), is a knot.
+impl Exportable for Spline {
+    fn kind(&self) -> &'static str {
+        "spline"
+    }
+
+    fn length(&self) -> f64 {
+        Curve::arc_length(self)
+    }
+
+    fn parts(&self) -> Result<Parts<'_>> {
+        Ok(Parts::Pieces(spline_pieces(self)?))
+    }
+}
+
+impl Exportable for SpaceSegment {
+    fn kind(&self) -> &'static str {
+        "space"
+    }
+
+    fn length(&self) -> f64 {
+        SpaceCurve::arc_length(self)
+    }
+
+    fn continuity(&self) -> &'static str {
+        "C1"
+    }
+
+    fn parts(&self) -> Result<Parts<'_>> {
+        Ok(Parts::Space(self))
+    }
+}
+
+/// The pieces of `path` in the order of travel: each straight piece follows the segment
+/// whose end it starts from (the wrap-around one, of a closed path, comes last).
+pub fn path_pieces(path: &Path) -> Vec<Piece<'_>> {
+    let mut lines: Vec<(Point, Point)> = path
+        .straight_pieces()
+        .iter()
+        .map(|l| (l.from, l.to))
+        .collect();
+    let mut out = Vec::new();
+    for seg in path.segments() {
+        out.push(Piece::Segment(Cow::Borrowed(seg)));
+        let end = seg.end_point();
+        let nearest = lines.iter().enumerate().min_by(|(_, a), (_, b)| {
+            let (da, db) = ((a.0 - end).hypot(), (b.0 - end).hypot());
+            da.total_cmp(&db)
+        });
+        if let Some((i, &(from, to))) = nearest {
+            if (from.x - end.x).hypot(from.y - end.y) <= 1e-9 * Curve::arc_length(path) {
+                out.push(Piece::Line(from, to));
+                lines.remove(i);
+            }
+        }
+    }
+    out
+}
+
+/// The share of a spline half's length, next to its inflection, that the export takes as
+/// straight: where |κ| is below 1e-12 of the half's other end (κ ∝ u^(1/|α|) in the arc
+/// length u from the inflection, so a share 1e-12^|α|; nothing below `MIN_FLAT_SHARE`).
+/// The curve there departs from its tangent by less than 1e-12 × the share² of the half's
+/// length, far below any tolerance, while a quasi chain would need pieces down to 1e-48 of
+/// its turning (α = −0.25) to follow its flattening.
+fn flat_share(alpha: f64) -> f64 {
+    let share = 1e-12f64.powf(-alpha);
+    if alpha < 0.0 && share >= MIN_FLAT_SHARE {
+        share
+    } else {
+        0.0
+    }
+}
+
+/// The shortest flat stretch taken as straight (α ≥ −0.5): shorter ones, where the quasi
+/// chains follow the halves to their ends, would leave a straight piece of a few 1e-9 of
+/// the spline, too short for a knot span.
+const MIN_FLAT_SHARE: f64 = 1e-6;
+
+/// A spline's pieces in order for export: the halves of a span through an inflection
+/// shortened by `flat_share` of their length at the inflection (solved again on their
+/// control triangles with the inflection-side leg shortened by as much: points so near a
+/// flat end are beyond the resolution of the tangent angle that places them on the
+/// segment), with the straight piece between them.
+pub fn spline_pieces(spline: &Spline) -> Result<Vec<Piece<'_>>> {
+    let pieces = spline.pieces();
+    let triangles = spline.control_triangles();
+    let spans = spline.spans_of_pieces();
+    let n = pieces.len();
+    let mut out: Vec<Piece> = Vec::new();
+    for (k, seg) in pieces.iter().enumerate() {
+        let cut = flat_share(seg.alpha()) * Curve::arc_length(seg);
+        let ends_flat = k + 1 < n && spans[k + 1] == spans[k] && cut > 0.0;
+        let starts_flat = k > 0 && spans[k - 1] == spans[k] && cut > 0.0;
+        let [a, p, b] = triangles[k];
+        let piece = if ends_flat {
+            Segment::from_control_points([a, p, b - (b - p).normalize() * cut], seg.alpha())?
+        } else if starts_flat {
+            Segment::from_control_points([a + (p - a).normalize() * cut, p, b], seg.alpha())?
+        } else {
+            seg.clone()
+        };
+        if starts_flat {
+            let from = match out.last() {
+                Some(Piece::Segment(s)) => s.end_point(),
+                _ => seg.start_point(),
+            };
+            out.push(Piece::Line(from, piece.start_point()));
+        }
+        out.push(Piece::Segment(Cow::Owned(piece)));
+    }
+    Ok(out)
+}

@@ -87,6 +87,7 @@ pub use curve::analysis::{
 pub use curve::bezier_chain::{BezierChain, BezierChainDerivative};
 pub use curve::chain::{Chain, SegmentChain};
 pub use curve::compound::{CompoundCurve, CompoundDerivative, MIN_PIECE_SHARE};
+pub use curve::verdict::{NotMonotone, Place, PLOT_ZERO};
 pub use curve::Curve;
 pub use family::bezier::{RationalCubic, RationalCubicDerivative};
 pub use family::lcg::LcgLine;
@@ -94,6 +95,7 @@ pub use family::monotone::{Monotonicity, MonotonicityReport};
 pub use family::sample::{Sample, MAX_ADAPTIVE_SAMPLES};
 pub use family::standard_form::{Classification, InfiniteRadiusEnd, StandardForm, ZeroRadiusEnd};
 pub use foundation::error::{Error, ErrorKind, G2Failure, NotDrawable, Result};
+pub use foundation::numeric::short_number;
 pub use foundation::tolerance::{Tolerance, MIN_RELATIVE_TOLERANCE};
 pub use foundation::turn::Turn;
 pub use foundation::vec3::Vec3;

@@ -4,10 +4,9 @@
 //! plot's curvature is monotone is decided in `verdict.rs`.
 
 use lac::SegmentChain;
-use lac::{CurvaturePoint, Curve, LcgFit, RationalCubic};
+use lac::{CurvaturePoint, Curve, LcgFit, NotMonotone, RationalCubic};
 use serde::{Deserialize, Serialize};
 
-use super::verdict::{chain_not_monotone, inflection, plot_not_monotone};
 use super::{all_finite, parse, CurveInput, ErrorBody, PiecesInput, Report, SpaceInput};
 
 /// One point of a curvature plot and, where it has one, of the logarithmic curvature graph.
@@ -95,7 +94,7 @@ impl LcgReport {
     /// proof).
     pub fn new(plot: &[CurvaturePoint]) -> Self {
         let report = LcgReport::fitted(plot);
-        match plot_not_monotone(plot) {
+        match NotMonotone::of_plot(plot) {
             Some(why) => report.not_monotone(why),
             None => report,
         }
@@ -169,7 +168,8 @@ impl LcgReport {
             .map(RationalCubic::curvature_monotonicity)
             .collect::<lac::Result<Vec<_>>>()?;
         let report = LcgReport::fitted(&plot);
-        let why = chain_not_monotone(pieces, &verdicts).or_else(|| inflection(&plot));
+        let why = NotMonotone::of_chain(pieces, &verdicts)
+            .or_else(|| NotMonotone::inflection_of_plot(&plot));
         match why {
             Some(why) => report.not_monotone(why),
             None => report,
@@ -192,7 +192,7 @@ impl LcgReport {
     }
 
     /// The report without its line, saying `why` the curvature is not monotone.
-    fn not_monotone(self, why: String) -> Self {
+    fn not_monotone(self, why: NotMonotone) -> Self {
         LcgReport {
             fit: None,
             monotone: Some(false),

@@ -32,7 +32,6 @@ mod region;
 mod segment;
 mod space;
 mod spline;
-mod verdict;
 
 pub use compound::{CompoundInput, CompoundKind, CompoundReport, CurveInput, LcgRow, Solved};
 pub use kind::{fields, AnyCurve, Kind, ANY_SHAPE, KIND_NAMES};
@@ -291,25 +290,7 @@ impl SampleRow {
 }
 
 /// A number with six significant digits at most, for messages.
-pub fn short(x: f64) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return format!("{x}");
-    }
-    let magnitude = x.abs().log10().floor();
-    if !(-4.0..6.0).contains(&magnitude) {
-        let text = format!("{x:.5e}");
-        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
-        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
-        return format!("{mantissa}e{exponent}");
-    }
-    let decimals = (5.0 - magnitude) as usize;
-    let text = format!("{x:.decimals$}");
-    if text.contains('.') {
-        text.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        text
-    }
-}
+pub use lac::short_number as short;
 
 #[cfg(test)]
 mod tests {

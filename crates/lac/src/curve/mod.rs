@@ -14,12 +14,15 @@
 //! * `chain.rs`: chains of segments;
 //! * `compound.rs`: the compound-rhythm curve of two segments;
 //! * `bezier_chain.rs`: rational cubic pieces as one curve;
-//! * `analysis.rs`: the curvature plot of Bézier pieces and the logarithmic curvature graph.
+//! * `analysis.rs`: the curvature plot of Bézier pieces and the logarithmic curvature graph;
+//! * `verdict.rs`: whether a curvature plot or a chain of Bézier pieces is monotone, and why
+//!   not.
 
 pub(crate) mod analysis;
 pub(crate) mod bezier_chain;
 pub(crate) mod chain;
 pub(crate) mod compound;
+pub(crate) mod verdict;
 
 use kurbo::{Point, Vec2};
 

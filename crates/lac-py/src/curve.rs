@@ -118,7 +118,7 @@ impl PyCurve {
     }
 
     /// Signed curvature at arc length `s` (positive for a left turn).
-    fn signed_curvature_at_s(&self, py: Python<'_>, s: f64) -> PyResult<f64> {
+    fn curvature_at_s(&self, py: Python<'_>, s: f64) -> PyResult<f64> {
         self.inner.signed_curvature_at_s(s).or_raise(py)
     }
 
@@ -319,7 +319,7 @@ impl PySegment {
     }
 
     /// Signed curvature at tangent angle `theta`.
-    fn signed_curvature_at_theta(&self, py: Python<'_>, theta: f64) -> PyResult<f64> {
+    fn curvature_at_theta(&self, py: Python<'_>, theta: f64) -> PyResult<f64> {
         self.inner.signed_curvature_at_theta(theta).or_raise(py)
     }
 

@@ -31,6 +31,7 @@ use std::net::{IpAddr, SocketAddr};
 use std::sync::Arc;
 
 use axum::error_handling::HandleErrorLayer;
+use axum::extract::{Request, State};
 use axum::routing::{get, post};
 use axum::serve::ListenerExt;
 use axum::Router;
@@ -49,19 +50,20 @@ pub fn router_with(limits: Limits) -> Router {
     let timeout = limits.timeout;
     let in_flight = limits.in_flight.max(1);
     let app = Arc::new(api::App::new(limits));
-    Router::new()
+    let mut router = Router::new()
         .route("/", get(assets::index))
         .route("/app/{*file}", get(assets::file))
         .route("/api/version", get(api::version))
-        .route("/api/segment", post(api::segment))
-        .route("/api/compound", post(api::compound))
-        .route("/api/path", post(api::path))
-        .route("/api/quasi", post(api::quasi))
-        .route("/api/lcg", post(api::lcg))
-        .route("/api/region", post(api::region))
-        .route("/api/region/point", post(api::point_region))
-        .route("/api/space", post(api::space))
-        .route("/api/export", post(api::export))
+        .route("/api/export", post(api::export));
+    for &(path, endpoint) in api::ENDPOINTS {
+        router = router.route(
+            path,
+            post(move |State(app): State<Arc<api::App>>, request: Request| {
+                api::answer(app, request, endpoint)
+            }),
+        );
+    }
+    router
         .fallback(error::not_found)
         .method_not_allowed_fallback(error::method_not_allowed)
         .with_state(app)

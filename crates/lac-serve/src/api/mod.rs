@@ -44,11 +44,24 @@ impl App {
 }
 
 /// An endpoint: the request's text to the answer's JSON.
-type Endpoint = fn(&App, &str) -> Result<String, ApiError>;
+pub(crate) type Endpoint = fn(&App, &str) -> Result<String, ApiError>;
+
+/// The JSON endpoints, each `POST` at its path: a new one (a new curve kind's) is one line
+/// here and its function in its own file.
+pub(crate) const ENDPOINTS: &[(&str, Endpoint)] = &[
+    ("/api/segment", curve::segment),
+    ("/api/compound", curve::compound),
+    ("/api/path", curve::path),
+    ("/api/quasi", quasi::quasi),
+    ("/api/lcg", curve::lcg),
+    ("/api/region", region::region),
+    ("/api/region/point", region::point_region),
+    ("/api/space", space::space),
+];
 
 /// Read the body, wait for a compute slot, run `endpoint` on the blocking pool (holding the
 /// slot until it returns, even if the client has gone), and answer its JSON.
-async fn answer(app: Arc<App>, request: Request, endpoint: Endpoint) -> Response {
+pub(crate) async fn answer(app: Arc<App>, request: Request, endpoint: Endpoint) -> Response {
     answer_with(app, request, endpoint, |json| {
         json_response(StatusCode::OK, json)
     })
@@ -96,46 +109,6 @@ fn internal(message: &str) -> Response {
         "internal",
         format!("{message}; please report this input"),
     ))
-}
-
-/// `POST /api/segment`.
-pub(crate) async fn segment(State(app): State<Arc<App>>, request: Request) -> Response {
-    answer(app, request, curve::segment).await
-}
-
-/// `POST /api/compound`.
-pub(crate) async fn compound(State(app): State<Arc<App>>, request: Request) -> Response {
-    answer(app, request, curve::compound).await
-}
-
-/// `POST /api/path`.
-pub(crate) async fn path(State(app): State<Arc<App>>, request: Request) -> Response {
-    answer(app, request, curve::path).await
-}
-
-/// `POST /api/quasi`.
-pub(crate) async fn quasi(State(app): State<Arc<App>>, request: Request) -> Response {
-    answer(app, request, quasi::quasi).await
-}
-
-/// `POST /api/lcg`.
-pub(crate) async fn lcg(State(app): State<Arc<App>>, request: Request) -> Response {
-    answer(app, request, curve::lcg).await
-}
-
-/// `POST /api/region`.
-pub(crate) async fn region(State(app): State<Arc<App>>, request: Request) -> Response {
-    answer(app, request, region::region).await
-}
-
-/// `POST /api/region/point`.
-pub(crate) async fn point_region(State(app): State<Arc<App>>, request: Request) -> Response {
-    answer(app, request, region::point_region).await
-}
-
-/// `POST /api/space`.
-pub(crate) async fn space(State(app): State<Arc<App>>, request: Request) -> Response {
-    answer(app, request, space::space).await
 }
 
 /// `POST /api/export`: the curve as a CAD file.

@@ -1,5 +1,5 @@
 //! The curve kinds, each described once ([`Kind`], in the kind's own file) and listed once
-//! (the [`kinds!`] line below), so that the front ends iterate them instead of knowing
+//! (`kinds!` in `json/mod.rs`), so that the front ends iterate them instead of knowing
 //! them: reading a document of any kind (`lac export FILE`, the editor's `/api/export`),
 //! solving it, and handing it to CAD export ([`AnyCurve`]).
 //!
@@ -9,12 +9,7 @@ use lac_export::Exportable;
 use serde::de::DeserializeOwned;
 use serde_json::{Map, Value};
 
-use super::compound::CompoundKind;
-use super::path::PathKind;
-use super::segment::SegmentKind;
-use super::space::SpaceKind;
-use super::spline::SplineKind;
-use super::{parse, ErrorBody};
+use super::{parse, AnyCurve, ErrorBody};
 
 /// A kind of curve, as the JSON documents describe it.
 pub trait Kind {
@@ -25,7 +20,7 @@ pub trait Kind {
     type Curve: Exportable;
 
     /// Whether `document` (a JSON object: an input, or a report read back) is one of this
-    /// kind's, told by its keys. The kinds are asked in the order of [`kinds!`], so a kind
+    /// kind's, told by its keys. The kinds are asked in the order of their list, so a kind
     /// may claim what a later one would too.
     fn claims(document: &Map<String, Value>) -> bool;
 
@@ -53,55 +48,48 @@ macro_rules! kinds {
         pub enum AnyCurve {
             $(
                 #[doc = concat!("A curve of the kind [`", stringify!($kind), "`].")]
-                $variant(<$kind as Kind>::Curve),
+                $variant(<$kind as $crate::json::Kind>::Curve),
             )*
         }
 
         /// The kinds' names, in the order they are asked.
-        pub const KIND_NAMES: &[&str] = &[$(<$kind as Kind>::NAME),*];
+        pub const KIND_NAMES: &[&str] = &[$(<$kind as $crate::json::Kind>::NAME),*];
 
         impl AnyCurve {
             /// The curve of a JSON object, by the first kind that claims it.
-            pub fn from_fields(document: Map<String, Value>) -> Result<AnyCurve, ErrorBody> {
+            pub fn from_fields(document: serde_json::Map<String, serde_json::Value>) -> Result<AnyCurve, $crate::json::ErrorBody> {
                 $(
-                    if <$kind as Kind>::claims(&document) {
-                        return <$kind as Kind>::solve(document).map(AnyCurve::$variant);
+                    if <$kind as $crate::json::Kind>::claims(&document) {
+                        return <$kind as $crate::json::Kind>::solve(document).map(AnyCurve::$variant);
                     }
                 )*
                 if document.contains_key("pieces") {
-                    return Err(ErrorBody::invalid_input(
+                    return Err($crate::json::ErrorBody::invalid_input(
                         "lac export needs the exact curve (a lac segment, compound, path, \
                          spline or space result), not Bézier pieces",
                     ));
                 }
-                Err(ErrorBody::invalid_input(format!(
-                    "no curve in the document: expected {ANY_SHAPE}"
+                Err($crate::json::ErrorBody::invalid_input(format!(
+                    "no curve in the document: expected {}",
+                    $crate::json::ANY_SHAPE
                 )))
             }
 
             /// Its kind's name.
             pub fn name(&self) -> &'static str {
                 match self {
-                    $(AnyCurve::$variant(_) => <$kind as Kind>::NAME,)*
+                    $(AnyCurve::$variant(_) => <$kind as $crate::json::Kind>::NAME,)*
                 }
             }
 
             /// The curve, for CAD export.
-            pub fn exportable(&self) -> &dyn Exportable {
+            pub fn exportable(&self) -> &dyn lac_export::Exportable {
                 match self {
                     $(AnyCurve::$variant(curve) => curve,)*
                 }
             }
         }
     };
-}
-
-kinds! {
-    Spline: SplineKind,
-    Path: PathKind,
-    Space: SpaceKind,
-    Compound: CompoundKind,
-    Segment: SegmentKind,
 }
 
 /// The documents [`AnyCurve::read`] takes, for error messages.

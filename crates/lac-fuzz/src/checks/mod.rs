@@ -422,3 +422,15 @@ fn distance_to_segment(x: Point, p: Point, q: Point) -> f64 {
     let along = ((x - p).dot(u)).clamp(0.0, len);
     dist(x, p + along * u)
 }
+
+/// The largest |κ| at an end of any of `pieces`.
+fn largest_end_curvature(pieces: &[Segment]) -> f64 {
+    pieces
+        .iter()
+        .map(|p| {
+            p.signed_curvature_start()
+                .abs()
+                .max(p.signed_curvature_end().abs())
+        })
+        .fold(0.0, f64::max)
+}

@@ -6,7 +6,7 @@
 use kurbo::Point;
 use lac::{Curve, Path};
 
-use super::{bounds, build, finite, meet, on_triangles, rounding, Built};
+use super::{bounds, build, finite, largest_end_curvature, meet, on_triangles, rounding, Built};
 use crate::Input;
 
 /// The checks of a `path` input.
@@ -52,14 +52,7 @@ fn check_path(path: &Path, closed: bool, g2: bool) -> Result<(), String> {
         return Ok(());
     }
     let pairs = pieces.len() - usize::from(!closed);
-    let kmax = pieces
-        .iter()
-        .map(|p| {
-            p.signed_curvature_start()
-                .abs()
-                .max(p.signed_curvature_end().abs())
-        })
-        .fold(0.0, f64::max);
+    let kmax = largest_end_curvature(pieces);
     for i in 0..pairs {
         let (a, b) = (&pieces[i], &pieces[(i + 1) % pieces.len()]);
         meet(a, b, i, tol, size)?;

@@ -8,7 +8,7 @@ use kurbo::Point;
 use lac::{Closure, SegmentChain};
 use lac::{Curve, Spline, INFLECTION_LIMIT};
 
-use super::{bounds, dist, finite, meet, on_triangles, pt, rounding};
+use super::{bounds, dist, finite, largest_end_curvature, meet, on_triangles, pt, rounding};
 
 /// The checks of a `spline` input.
 pub(super) fn check(
@@ -52,14 +52,7 @@ fn check_spline(spline: &Spline) -> Result<(), String> {
     let size = spline.arc_length();
     let tol = bounds::POSITION * size + rounding(&all);
     let n = pieces.len();
-    let kmax = pieces
-        .iter()
-        .map(|p| {
-            p.signed_curvature_start()
-                .abs()
-                .max(p.signed_curvature_end().abs())
-        })
-        .fold(0.0, f64::max);
+    let kmax = largest_end_curvature(pieces);
     for k in 0..n {
         let i = spans[k];
         let first = k == 0 || spans[k - 1] != i;

@@ -6,7 +6,7 @@ use std::ops::Range;
 use kurbo::{ParamCurve, ParamCurveArclen, ParamCurveCurvature, ParamCurveDeriv, Point, Vec2};
 
 use crate::curve::chain::{locate, SegmentChain};
-use crate::curve::Curve;
+use crate::curve::{check_total_length, Curve};
 use crate::family::chord_angle::ChordAngle;
 use crate::family::lcg::LcgLine;
 use crate::foundation::error::{finite, Error, NotDrawable, Result};
@@ -262,7 +262,9 @@ impl CompoundCurve {
             }
         }
         crate::segment::visible::check_visible_ends(&pieces)?;
-        Ok(CompoundCurve { pieces })
+        let curve = CompoundCurve { pieces };
+        check_total_length(&curve)?;
+        Ok(curve)
     }
 
     /// The slopes [α0, α1].

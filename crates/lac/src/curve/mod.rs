@@ -271,6 +271,16 @@ pub(crate) fn check_adaptive(length: f64, turning: f64, accuracy: f64) -> Result
     Ok(())
 }
 
+/// A constructor's last look at a curve of several pieces: each piece's length is finite
+/// (the segments check their own), their sum may not be, for points near 1e308.
+pub(crate) fn check_total_length(curve: &(impl Curve + ?Sized)) -> Result<()> {
+    if curve.arc_length().is_finite() {
+        Ok(())
+    } else {
+        Err(Error::Unrepresentable { what: "arc length" })
+    }
+}
+
 /// The plot, or an error when a dκ/ds is beyond double range (it scales as 1/length²: for a
 /// curve of size 1e-155 it overflows).
 pub(crate) fn checked_plot(plot: Vec<CurvaturePoint>) -> Result<Vec<CurvaturePoint>> {

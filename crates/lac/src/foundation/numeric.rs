@@ -268,9 +268,20 @@ impl Complex {
 
     /// Division by Smith's method, which never forms |d|² and so neither overflows nor
     /// underflows for divisors up to the largest finite magnitudes (standard-form chords
-    /// reach 1e260 when the curvature ratio does).
+    /// reach 1e260 when the curvature ratio does). A dividend near the largest magnitudes
+    /// (caller coordinates of 1e308) can overflow the sums of the method while the quotient
+    /// is finite: then both parts are halved first and the quotient doubled back.
     #[inline]
     pub(crate) fn div(self, d: Complex) -> Self {
+        let q = self.smith_div(d);
+        if q.re.is_finite() && q.im.is_finite() || !(self.re.is_finite() && self.im.is_finite()) {
+            return q;
+        }
+        let half = Complex::new(0.5 * self.re, 0.5 * self.im).smith_div(d);
+        Complex::new(2.0 * half.re, 2.0 * half.im)
+    }
+
+    fn smith_div(self, d: Complex) -> Self {
         if d.re.abs() >= d.im.abs() {
             let r = d.im / d.re;
             let den = d.re + d.im * r;

@@ -4,6 +4,7 @@
 use super::{banded, Continuity, ControlPolygon, Path};
 
 use crate::foundation::error::{Error, G2Failure, Result};
+use crate::foundation::numeric::length;
 use crate::segment::{end_curvatures_of, Segment, SegmentSolution};
 
 /// The solver stops once every joint's |ln(κ⁻/κ⁺)| is below this (about the rounding of
@@ -350,17 +351,17 @@ fn slopes(alphas: &[f64], infl: &Inflections, state: &State, k: usize) -> Option
 /// sides.
 fn balanced_start(polygon: &ControlPolygon) -> Vec<f64> {
     let n = polygon.points().len();
-    let length = |i: usize| {
+    let leg_length = |i: usize| {
         let (a, b) = polygon.leg(i);
-        (b - a).hypot()
+        length(b - a)
     };
     let joints = polygon.joint_legs();
     let is_joint = |i: usize| polygon.is_closed() || (i > 0 && i + 2 < n);
     let usable = |i: usize| {
         if is_joint(i) {
-            0.5 * length(i)
+            0.5 * leg_length(i)
         } else {
-            length(i)
+            leg_length(i)
         }
     };
     joints

@@ -56,9 +56,10 @@ mod spline;
 
 use kurbo::Point;
 
-use crate::curve::{check_arc_length, check_ascending, Curve};
+use crate::curve::{check_arc_length, check_ascending, check_total_length, Curve};
 use crate::family::sample::Sample;
 use crate::foundation::error::{finite, Error, Result};
+use crate::foundation::numeric::length;
 use crate::segment::Segment;
 
 use crate::foundation::error::G2Failure;
@@ -139,7 +140,7 @@ pub struct StraightPiece {
 impl StraightPiece {
     /// Its length (0 when the segments meet).
     pub fn length(&self) -> f64 {
-        (self.to - self.from).hypot()
+        length(self.to - self.from)
     }
 }
 
@@ -335,7 +336,7 @@ impl Path {
                 point: polygon.at(leg, fractions[leg]),
                 curvature_before: kb,
                 curvature_after: ka,
-                gap: (a.last_point() - b.first_point()).hypot(),
+                gap: length(a.last_point() - b.first_point()),
                 tangent_jump,
                 curvature_jump: if big > 0.0 {
                     (kb - ka).abs() / big
@@ -363,6 +364,7 @@ impl Path {
             straight,
             continuity,
         };
+        check_total_length(&path)?;
         path.place_joints();
         Ok(path)
     }
@@ -662,9 +664,7 @@ fn straight_piece(
         to,
         curvature_before: a.end_curvatures().1,
         curvature_after: b.end_curvatures().0,
-        gap: (a.last_point() - from)
-            .hypot()
-            .max((b.first_point() - to).hypot()),
+        gap: length(a.last_point() - from).max(length(b.first_point() - to)),
         tangent_jump: wrap(end_theta - dir).max(wrap(start_theta - dir)),
     })
 }

@@ -4,6 +4,7 @@
 use kurbo::Point;
 
 use crate::foundation::error::{finite, Error, Result};
+use crate::foundation::numeric::length;
 use crate::foundation::turn::Turn;
 use crate::segment::check_alpha;
 
@@ -180,7 +181,7 @@ impl ControlPolygon {
     /// Length of leg `i`.
     pub(super) fn leg_length(&self, i: usize) -> f64 {
         let (a, b) = self.leg(i);
-        (b - a).hypot()
+        length(b - a)
     }
 
     /// The joint legs where the turning direction changes (the curvature must pass through

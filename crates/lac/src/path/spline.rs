@@ -20,9 +20,10 @@ use kurbo::{Point, Vec2};
 use super::s_span::{SSpan, Unit, HAIR};
 use super::{banded, Closure, G2_JUMP_LIMIT, G2_TOLERANCE, INFLECTION_LIMIT, MAX_POLYGON_POINTS};
 use crate::curve::chain::SegmentChain;
-use crate::curve::Curve;
+use crate::curve::{check_total_length, Curve};
 use crate::foundation::error::G2Failure;
 use crate::foundation::error::{finite, Error, Result};
+use crate::foundation::numeric::length;
 use crate::segment::{check_alpha, end_curvatures_of, Segment};
 
 /// The signed end curvatures of every span.
@@ -166,6 +167,7 @@ impl Spline {
             inflections: Vec::new(),
         };
         s.solve(alpha, ends)?;
+        check_total_length(&s)?;
         Ok(s)
     }
 
@@ -190,7 +192,7 @@ impl Spline {
         let n = self.points.len();
         let (a, b) = (self.points[i], self.points[(i + 1) % n]);
         let (ta, tb) = self.tangents(phi, i);
-        let c = (b - a).hypot();
+        let c = length(b - a);
         let s_span = || self.s_span_at(unit, phi, i);
         // One segment turns one way: its tangents leave and reach the chord from opposite
         // sides, and turn by less than π.
@@ -203,7 +205,16 @@ impl Spline {
                     Some(s) => Ok((Shape::S(s), s.end_curvatures())),
                     None => Err(Error::SplineSpan {
                         span: i,
-                        source: Box::new(e),
+                        // Points near 1e308 can put the tangents' meeting point beyond double
+                        // range: say so, not that an input was infinite.
+                        source: Box::new(if t[1].x.is_finite() && t[1].y.is_finite() {
+                            e
+                        } else {
+                            Error::Unrepresentable {
+                                what: "control triangle of a span (where its end \
+                                       tangents meet)",
+                            }
+                        }),
                     }),
                 },
             };
@@ -228,7 +239,7 @@ impl Spline {
     fn s_span_at(&self, unit: Option<&Unit>, phi: &[f64], i: usize) -> Option<SSpan> {
         let n = self.points.len();
         let (ta, tb) = self.tangents(phi, i);
-        let c = (self.points[(i + 1) % n] - self.points[i]).hypot();
+        let c = length(self.points[(i + 1) % n] - self.points[i]);
         unit.and_then(|u| u.s_span(ta, tb, c))
     }
 
@@ -256,7 +267,7 @@ impl Spline {
         let p = &self.points;
         self.unknowns()
             .iter()
-            .map(|&j| 0.5 * ((p[j] - p[(j + n - 1) % n]).hypot() + (p[(j + 1) % n] - p[j]).hypot()))
+            .map(|&j| 0.5 * (length(p[j] - p[(j + n - 1) % n]) + length(p[(j + 1) % n] - p[j])))
             .collect()
     }
 
@@ -493,7 +504,7 @@ impl Spline {
         let size = self
             .points
             .iter()
-            .map(|q| (*q - self.points[0]).hypot())
+            .map(|q| length(*q - self.points[0]))
             .fold(0.0, f64::max);
         // The curvature scale: the largest |κ| at a point.
         let scale = segments
@@ -520,7 +531,7 @@ impl Spline {
         for k in 0..pairs {
             let next = (k + 1) % segments.len();
             let (a, b) = (&segments[k], &segments[next]);
-            let gap = (a.end_point() - b.start_point()).hypot();
+            let gap = length(a.end_point() - b.start_point());
             let dt = wrap(
                 a.theta_of(&a.station_at_turning(a.turning_angle())?)
                     - b.theta_of(&b.station_at_turning(0.0)?),

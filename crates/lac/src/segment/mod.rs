@@ -483,20 +483,19 @@ impl Segment {
                 self.form.lambda,
                 self.chord.re,
                 self.chord.im,
-                self.rot.re,
-                self.rot.im,
                 self.theta_first,
             ]);
         let (k0, k1) = self.end_curvatures();
-        let ok = numbers.into_iter().all(f64::is_finite)
-            && self.scale > 0.0
-            && self.scale.is_finite()
-            && self.length() > 0.0
-            && self.length().is_finite();
-        if !ok {
+        if !numbers.into_iter().all(f64::is_finite) {
             return Err(Error::NumericalFailure {
                 what: "the solved segment (a number overflowed or is not finite)",
             });
+        }
+        // The standard-form piece is fine; its similarity to the caller's points (and so
+        // its length) can still leave double range for points near 1e308.
+        let placed = [self.rot.re, self.rot.im, self.scale, self.length()];
+        if !(placed.iter().all(|x| x.is_finite()) && self.scale > 0.0 && self.length() > 0.0) {
+            return Err(Error::Unrepresentable { what: "arc length" });
         }
         // Curvature is 1/length: for curves near 1e308 (or 1e-308) in size it leaves the
         // range of double precision.

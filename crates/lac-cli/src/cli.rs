@@ -1,4 +1,9 @@
-//! The command-line grammar (clap derive). Help texts here are what `lac --help` shows.
+//! The command-line grammar (clap derive): the subcommands with their help and usage, and
+//! what runs each ([`Command::run`]); the flag groups that several subcommands flatten
+//! ([`CurveOutput`], and [`ExportArgs`], which lists the curve kinds' groups of `lac
+//! export`). Each subcommand's own flags are in its module (`segment::SegmentArgs`, …), each
+//! curve kind's flags of `lac export` too (`path::PathExport`, …). Help texts are what `lac
+//! --help` shows.
 //!
 //! The same flag means the same thing in every subcommand: `--points` (control points
 //! "x,y" or "x,y,z" separated by spaces or semicolons), `--alpha` (a segment's slope),
@@ -6,10 +11,28 @@
 //! in arc length), `--tolerance` (relative to the arc length; in model units in `export`),
 //! `--format`, `-o/--output`
 //! (a file, "-" for standard output) and `--batch` (JSON lines in, JSON lines out).
+//!
+//! A new subcommand is a variant of [`Command`] and its arm in [`Command::run`]; a new curve
+//! kind's flags of `lac export` are a field of [`ExportArgs`] and an entry of
+//! [`ExportArgs::sources`].
 
 use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
+use lac_io::json::ErrorBody;
+
+use crate::compound::{self, CompoundArgs, CompoundFlags};
+use crate::export::{self, ExportSource, ExportTo};
+use crate::lcg::{self, LcgArgs};
+use crate::limits::Limits;
+use crate::monotone::{self, MonotoneArgs};
+use crate::path::{self, PathArgs, PathExport};
+use crate::quasi::{self, QuasiArgs};
+use crate::region::{self, RegionArgs};
+use crate::segment::{self, SegmentArgs, SegmentExport};
+use crate::serve::{self, ServeArgs};
+use crate::space::{self, SpaceArgs, SpaceExport};
+use crate::spline::{self, SplineArgs, SplineExport};
 
 /// Log-aesthetic curves: segments from three control points, compound-rhythm curves of two
 /// pieces, drawable regions, their cubic Bézier replacements, curvature analysis, and space
@@ -212,177 +235,26 @@ pub(crate) enum Command {
     Serve(ServeArgs),
 }
 
-/// Arguments of `lac spline`.
-#[derive(Args, Debug)]
-pub(crate) struct SplineArgs {
-    /// The points to pass through "x0,y0 x1,y1 …" (at least three), separated by spaces
-    /// and/or semicolons
-    #[arg(long, value_name = "POINTS", allow_hyphen_values = true)]
-    pub(crate) through: String,
-
-    /// The slope of every segment
-    #[arg(long, value_name = "A", allow_hyphen_values = true)]
-    pub(crate) alpha: f64,
-
-    /// A closed spline (the last point joins the first)
-    #[arg(long)]
-    pub(crate) closed: bool,
-
-    /// Open splines: the tangent direction at the first point, radians
-    #[arg(
-        long,
-        value_name = "R",
-        allow_hyphen_values = true,
-        requires = "end_angle",
-        conflicts_with = "closed"
-    )]
-    pub(crate) start_angle: Option<f64>,
-
-    /// Open splines: the tangent direction at the last point, radians
-    #[arg(
-        long,
-        value_name = "R",
-        allow_hyphen_values = true,
-        requires = "start_angle"
-    )]
-    pub(crate) end_angle: Option<f64>,
-
-    /// What to print and where.
-    #[command(flatten)]
-    pub(crate) output: CurveOutput,
+impl Command {
+    /// Run the subcommand; `limits`: the work limits (`--allow-large`).
+    pub(crate) fn run(&self, limits: Limits) -> Result<(), ErrorBody> {
+        match self {
+            Command::Segment(args) => segment::run(args, limits),
+            Command::Compound(args) => compound::run(args, limits),
+            Command::Region(args) => region::run(args, limits),
+            Command::Quasi(args) => quasi::run(args, limits),
+            Command::Monotone(args) => monotone::run(args, limits),
+            Command::Lcg(args) => lcg::run(args, limits),
+            Command::Space(args) => space::run(args, limits),
+            Command::Path(args) => path::run(args, limits),
+            Command::Export(args) => export::run(args, limits),
+            Command::Spline(args) => spline::run(args, limits),
+            Command::Serve(args) => serve::run(args),
+        }
+    }
 }
 
-/// Arguments of `lac segment`.
-#[derive(Debug, Args)]
-pub(crate) struct SegmentArgs {
-    /// The control points "x0,y0 x1,y1 x2,y2", separated by spaces and/or semicolons
-    #[arg(
-        long,
-        value_name = "POINTS",
-        allow_hyphen_values = true,
-        required_unless_present = "batch"
-    )]
-    pub(crate) points: Option<String>,
-
-    /// Slope of the logarithmic curvature graph (-1 clothoid, 0 Nielsen spiral, 1 logarithmic
-    /// spiral, 2 circle involute)
-    #[arg(
-        long,
-        value_name = "A",
-        allow_hyphen_values = true,
-        required_unless_present = "batch"
-    )]
-    pub(crate) alpha: Option<f64>,
-
-    /// Read one JSON object {"points":[[x,y],[x,y],[x,y]],"alpha":A} per line ("-": standard
-    /// input) and write one JSON line per input line, in order: the result, or {"error":…}
-    /// whose message starts with the line number. Lines are solved in parallel and written as
-    /// soon as they and the lines before them are done; a line may have at most 1 MiB. Exit
-    /// code 0 when every line was solved, else that of the first failed line (2 invalid, 3 no
-    /// curve, 70 internal), with a one-line summary on standard error
-    #[arg(long, value_name = "FILE|-", conflicts_with_all = ["points", "alpha"])]
-    pub(crate) batch: Option<PathBuf>,
-
-    /// What to print and where.
-    #[command(flatten)]
-    pub(crate) output: CurveOutput,
-}
-
-/// Arguments of `lac path`.
-#[derive(Debug, Args)]
-pub(crate) struct PathArgs {
-    /// The control polygon "x0,y0 x1,y1 …" (at least three points), separated by spaces
-    /// and/or semicolons
-    #[arg(long, value_name = "POINTS", allow_hyphen_values = true)]
-    pub(crate) polygon: String,
-
-    /// The slope of every segment
-    #[arg(
-        long,
-        value_name = "A",
-        allow_hyphen_values = true,
-        conflicts_with = "alphas"
-    )]
-    pub(crate) alpha: Option<f64>,
-
-    /// One slope per segment "a1,a2,…" (per interior vertex; per vertex when closed)
-    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
-    pub(crate) alphas: Option<String>,
-
-    /// Close the polygon (the last point joins the first): a closed path
-    #[arg(long)]
-    pub(crate) closed: bool,
-
-    /// Solve the joints for continuous curvature (G2)
-    #[arg(long, conflicts_with = "fractions")]
-    pub(crate) g2: bool,
-
-    /// G1: the fraction of each joint leg (every leg but the first and last; every leg when
-    /// closed) at which its joint lies, "t1,t2,…" in (0, 1); default the midpoints
-    #[arg(long, value_name = "LIST")]
-    pub(crate) fractions: Option<String>,
-
-    /// What to print and where.
-    #[command(flatten)]
-    pub(crate) output: CurveOutput,
-}
-
-/// Arguments of `lac compound`.
-#[derive(Debug, Args)]
-pub(crate) struct CompoundArgs {
-    /// Three points "x0,y0 x1,y1 x2,y2" (the ends and the intersection of the end tangents;
-    /// give --ratio) or four control points "x0,y0 x1,y1 x2,y2 x3,y3" (the joint's tangent is
-    /// parallel to the middle leg), separated by spaces and/or semicolons
-    #[arg(
-        long,
-        value_name = "POINTS",
-        allow_hyphen_values = true,
-        required_unless_present = "batch"
-    )]
-    pub(crate) points: Option<String>,
-
-    /// Slope of the logarithmic curvature graph of the piece from the first point to the joint
-    #[arg(
-        long,
-        value_name = "A",
-        allow_hyphen_values = true,
-        required_unless_present = "batch"
-    )]
-    pub(crate) alpha0: Option<f64>,
-
-    /// Slope of the piece from the joint to the last point (alpha0 < alpha1: a "valley" in the
-    /// curvature graph; alpha0 > alpha1: a "mountain")
-    #[arg(
-        long,
-        value_name = "B",
-        allow_hyphen_values = true,
-        required_unless_present = "batch"
-    )]
-    pub(crate) alpha1: Option<f64>,
-
-    /// Three points only: the share of the total turning made by the alpha0 piece, strictly
-    /// between 0 and 1
-    #[arg(long, value_name = "R", allow_hyphen_values = true)]
-    pub(crate) ratio: Option<f64>,
-
-    /// Read one JSON object per line ("-": standard input), {"points":[[x,y],[x,y],[x,y]],
-    /// "alpha0":A,"alpha1":B,"ratio":R} or {"points":[[x,y],[x,y],[x,y],[x,y]],"alpha0":A,
-    /// "alpha1":B}, and write one JSON line per input line, in order: the result, or
-    /// {"error":…} whose message starts with the line number (see lac segment --help for the
-    /// line limit and the exit code)
-    #[arg(
-        long,
-        value_name = "FILE|-",
-        conflicts_with_all = ["points", "alpha0", "alpha1", "ratio"]
-    )]
-    pub(crate) batch: Option<PathBuf>,
-
-    /// What to print and where.
-    #[command(flatten)]
-    pub(crate) output: CurveOutput,
-}
-
-/// The output options shared by `lac segment` and `lac compound`.
+/// The output options shared by `lac segment`, `lac compound`, `lac path` and `lac spline`.
 #[derive(Debug, Args)]
 pub(crate) struct CurveOutput {
     /// Number of samples, equally spaced in arc length from the first to the last point (the
@@ -412,7 +284,7 @@ pub(crate) struct CurveOutput {
     pub(crate) evolute: bool,
 }
 
-/// Output formats of `lac segment` and `lac compound`.
+/// Output formats of `lac segment`, `lac compound`, `lac path` and `lac spline`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub(crate) enum CurveFormat {
     /// One line: the slope(s), lambda, arc_length, curvature_start/end (compound curves also
@@ -424,337 +296,11 @@ pub(crate) enum CurveFormat {
     Svg,
 }
 
-/// Arguments of `lac space`.
-#[derive(Debug, Args)]
-pub(crate) struct SpaceArgs {
-    /// The four control points "x0,y0,z0 x1,y1,z1 x2,y2,z2 x3,y3,z3", separated by spaces
-    /// and/or semicolons: the curve starts at the first point, tangent to the first leg, and
-    /// ends at the last point, tangent to the last leg
-    #[arg(
-        long,
-        value_name = "POINTS",
-        allow_hyphen_values = true,
-        required_unless_present = "batch"
-    )]
-    pub(crate) points: Option<String>,
-
-    /// Slope of the logarithmic curvature graph
-    #[arg(
-        long,
-        value_name = "A",
-        allow_hyphen_values = true,
-        required_unless_present = "batch"
-    )]
-    pub(crate) alpha: Option<f64>,
-
-    /// Slope of the logarithmic torsion graph
-    #[arg(
-        long,
-        value_name = "B",
-        allow_hyphen_values = true,
-        required_unless_present = "batch"
-    )]
-    pub(crate) beta: Option<f64>,
-
-    /// Torsion parameter, >= 0: how fast the radius of torsion changes along the standard
-    /// form (0: constant torsion; with Λ = 0 a helix)
-    #[arg(
-        long,
-        value_name = "W",
-        allow_hyphen_values = true,
-        default_value_t = 0.0
-    )]
-    pub(crate) omega: f64,
-
-    /// Torsion type: 1, the radius of torsion grows along the standard form; 2, it shrinks
-    #[arg(long = "type", value_name = "1|2", default_value_t = 1)]
-    pub(crate) torsion_type: u8,
-
-    /// Read one JSON object {"points":[[x,y,z]×4],"alpha":A,"beta":B,"omega":W,"type":1}
-    /// per line (omega 0 and type 1 when absent; "-": standard input) and write one JSON line
-    /// per input line, in order: the result, or {"error":…} whose message starts with the
-    /// line number (see lac segment --help for the line limit and the exit code)
-    #[arg(
-        long,
-        value_name = "FILE|-",
-        conflicts_with_all = ["points", "alpha", "beta", "omega", "torsion_type"]
-    )]
-    pub(crate) batch: Option<PathBuf>,
-
-    /// Number of samples, equally spaced in arc length from the first to the last point (the
-    /// vertices of OBJ and PLY); at most 1,000,000 (10,000,000 with --allow-large)
-    #[arg(
-        long,
-        value_name = "N",
-        default_value_t = 65,
-        value_parser = clap::value_parser!(u32).range(2..)
-    )]
-    pub(crate) samples: u32,
-
-    /// JSON and CSV: add each sample's Frenet frame, unit vectors "t" (tangent), "n"
-    /// (principal normal) and "b" (binormal)
-    #[arg(long)]
-    pub(crate) frames: bool,
-
-    /// Output format
-    #[arg(long, value_enum, default_value_t = SpaceFormat::Json)]
-    pub(crate) format: SpaceFormat,
-
-    /// Write to FILE instead of standard output ("-": standard output)
-    #[arg(short = 'o', long = "output", value_name = "FILE")]
-    pub(crate) file: Option<PathBuf>,
-}
-
-/// Output formats of `lac space`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub(crate) enum SpaceFormat {
-    /// One line: standard_form, transform, arc_length, planar, samples [{s,x,y,z,kappa,tau}],
-    /// and the input (points, alpha, beta, omega, type)
-    Json,
-    /// A header s,x,y,z,kappa,tau (with --frames also tx,ty,tz,nx,ny,nz,bx,by,bz) and one row
-    /// per sample
-    Csv,
-    /// Top (xy), front (xz) and side (yz) views at one scale, and a perspective view with
-    /// the curve's shadow
-    Svg,
-    /// Wavefront OBJ: a vertex "v x y z" per sample and one polyline "l 1 2 … N"
-    Obj,
-    /// ASCII PLY: vertices (x, y, z, kappa, tau) and an edge between consecutive samples
-    Ply,
-}
-
-/// Arguments of `lac region`.
-#[derive(Debug, Args)]
-pub(crate) struct RegionArgs {
-    /// Map segments: the slope of their logarithmic curvature graph
-    #[arg(long, value_name = "A", allow_hyphen_values = true)]
-    pub(crate) alpha: Option<f64>,
-
-    /// Map compound-rhythm curves: the slope of the piece from the first point (give --alpha1
-    /// and --ratio too)
-    #[arg(long, value_name = "A", allow_hyphen_values = true)]
-    pub(crate) alpha0: Option<f64>,
-
-    /// Compound curves: the slope of the piece that ends at the last point
-    #[arg(long, value_name = "B", allow_hyphen_values = true)]
-    pub(crate) alpha1: Option<f64>,
-
-    /// Compound curves: the share of the turning made by the alpha0 piece, strictly between
-    /// 0 and 1
-    #[arg(long, value_name = "R", allow_hyphen_values = true)]
-    pub(crate) ratio: Option<f64>,
-
-    /// Width and height of the map in pixels, 1 to 2048 (8192 with --allow-large; 2048 takes
-    /// about 10 s for segments and 30 s for compound curves on two cores, 8192 sixteen times
-    /// that); the map covers [-1,1]² with the first point at (-1,0) and the last at (1,0)
-    #[arg(
-        long,
-        value_name = "PIXELS",
-        default_value_t = 512,
-        value_parser = clap::value_parser!(u32).range(1..)
-    )]
-    pub(crate) size: u32,
-
-    /// Write to FILE instead of standard output ("-": standard output; a PNG is not written
-    /// to a terminal)
-    #[arg(short = 'o', long = "output", value_name = "FILE")]
-    pub(crate) file: Option<PathBuf>,
-
-    /// Output format
-    #[arg(long, value_enum, default_value_t = RegionFormat::Png)]
-    pub(crate) format: RegionFormat,
-}
-
-/// Output formats of `lac region`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub(crate) enum RegionFormat {
-    /// 8-bit grayscale: white where drawable, black where not; row 0 is y = +1
-    Png,
-    /// {"alpha","size","extent","first","last","drawable_fraction","drawable":[[bool…]…]},
-    /// with "alpha1" and "ratio" after "alpha" (then alpha0) for compound curves
-    Json,
-}
-
-/// Arguments of `lac quasi`.
-#[derive(Debug, Args)]
-pub(crate) struct QuasiArgs {
-    /// The control points, separated by spaces and/or semicolons: three with --alpha (a
-    /// segment), three with --alpha0, --alpha1 and --ratio, or four with --alpha0 and --alpha1
-    /// (a compound curve, as in lac compound)
-    #[arg(
-        long,
-        value_name = "POINTS",
-        allow_hyphen_values = true,
-        required_unless_present = "batch"
-    )]
-    pub(crate) points: Option<String>,
-
-    /// A segment: the slope of its logarithmic curvature graph
-    #[arg(long, value_name = "A", allow_hyphen_values = true)]
-    pub(crate) alpha: Option<f64>,
-
-    /// A compound curve: the slope of the piece from the first point to the joint
-    #[arg(long, value_name = "A", allow_hyphen_values = true)]
-    pub(crate) alpha0: Option<f64>,
-
-    /// A compound curve: the slope of the piece from the joint to the last point
-    #[arg(long, value_name = "B", allow_hyphen_values = true)]
-    pub(crate) alpha1: Option<f64>,
-
-    /// A compound curve from three points: the share of the turning made by the alpha0
-    /// piece, strictly between 0 and 1
-    #[arg(long, value_name = "R", allow_hyphen_values = true)]
-    pub(crate) ratio: Option<f64>,
-
-    /// Use as many pieces as needed for a maximum deviation of T times the arc length (1e-12
-    /// to 1), each with curvature proven monotone, joined with continuous curvature. Without
-    /// it: the single rational cubic of seed 001
-    #[arg(long, value_name = "T", allow_hyphen_values = true)]
-    pub(crate) tolerance: Option<f64>,
-
-    /// Plain cubic Bézier pieces (all weights 1) instead of rational ones, for consumers that
-    /// only take cubics (needs --tolerance)
-    #[arg(long, requires = "tolerance")]
-    pub(crate) cubic: bool,
-
-    /// Read one JSON object per line ("-": standard input): a lac segment or lac compound
-    /// input ({"points":…,"alpha":A} or {"points":…,"alpha0":A,"alpha1":B,"ratio":R}) with
-    /// "tolerance":T and "cubic":true as --tolerance and --cubic; write one JSON line per
-    /// input line, in order: the result, or {"error":…} whose message starts with the line
-    /// number (see lac segment --help for the line limit and the exit code)
-    #[arg(
-        long,
-        value_name = "FILE|-",
-        conflicts_with_all = ["points", "alpha", "alpha0", "alpha1", "ratio", "tolerance", "cubic"]
-    )]
-    pub(crate) batch: Option<PathBuf>,
-
-    /// Output format
-    #[arg(long, value_enum, default_value_t = QuasiFormat::Json)]
-    pub(crate) format: QuasiFormat,
-
-    /// Write to FILE instead of standard output ("-": standard output)
-    #[arg(short = 'o', long = "output", value_name = "FILE")]
-    pub(crate) file: Option<PathBuf>,
-}
-
-/// Output formats of `lac quasi`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub(crate) enum QuasiFormat {
-    /// One line: pieces [{points, weights, monotone, proven, turning, max_deviation}], rms,
-    /// max (relative to the arc length), arc_length, tolerance, kind ("rational" or "cubic")
-    Json,
-    /// A header piece,x0,y0,x1,y1,x2,y2,x3,y3,w0,w1,w2,w3,monotone,proven,t,turning0,turning1,
-    /// max_deviation and one row per piece (t empty unless not monotone)
-    Csv,
-    /// The Bézier pieces over the log-aesthetic curve, their control polygons and joints, and
-    /// the curvature combs of both
-    Svg,
-}
-
-/// Arguments of `lac monotone`.
-#[derive(Debug, Args)]
-pub(crate) struct MonotoneArgs {
-    /// A JSON document to decide ("-": standard input; nothing: standard input when it is not
-    /// a terminal): one piece {"points":[[x,y]×4],"weights":[w0,w1,w2,w3]} (weights
-    /// optional), or lac quasi output {"pieces":[…]} for a verdict on every piece; at most 64
-    /// MiB (1 GiB with --allow-large)
-    #[arg(value_name = "FILE", conflicts_with_all = ["points", "weights", "batch"])]
-    pub(crate) input: Option<PathBuf>,
-
-    /// The four control points "x0,y0 x1,y1 x2,y2 x3,y3", separated by spaces and/or
-    /// semicolons
-    #[arg(long, value_name = "POINTS", allow_hyphen_values = true)]
-    pub(crate) points: Option<String>,
-
-    /// The four weights "w0,w1,w2,w3", all positive (default 1,1,1,1: a plain cubic)
-    #[arg(long, value_name = "WEIGHTS", requires = "points")]
-    pub(crate) weights: Option<String>,
-
-    /// Read one JSON document per line ("-": standard input), a piece or {"pieces":[…]} as
-    /// for FILE, and write one JSON line per input line, in order: the verdict(s), or
-    /// {"error":…} whose message starts with the line number (see lac segment --help for the
-    /// line limit and the exit code)
-    #[arg(long, value_name = "FILE|-", conflicts_with_all = ["points", "weights"])]
-    pub(crate) batch: Option<PathBuf>,
-
-    /// Write to FILE instead of standard output ("-": standard output)
-    #[arg(short = 'o', long = "output", value_name = "FILE")]
-    pub(crate) file: Option<PathBuf>,
-}
-
-/// Arguments of `lac lcg`.
-#[derive(Debug, Args)]
-pub(crate) struct LcgArgs {
-    /// The JSON to analyse ("-" or nothing: standard input): {"pieces":[{"points":[[x,y],…],
-    /// "weights":[…]},…]} with four points a piece and optional weights (the output of lac
-    /// quasi), one result of lac segment or lac compound, or one result of lac space; at most
-    /// 64 MiB (1 GiB with --allow-large)
-    #[arg(value_name = "FILE")]
-    pub(crate) input: Option<PathBuf>,
-
-    /// Curvature points: for Bézier pieces, per piece, equally spaced in t (default 64); for a
-    /// log-aesthetic curve (and each of its pieces) or a space curve, in all, equally spaced in
-    /// arc length (default 257); at most 1,000,000 points in all (10,000,000 with
-    /// --allow-large)
-    #[arg(
-        long,
-        value_name = "N",
-        value_parser = clap::value_parser!(u32).range(2..)
-    )]
-    pub(crate) samples: Option<u32>,
-
-    /// Output format
-    #[arg(long, value_enum, default_value_t = LcgFormat::Json)]
-    pub(crate) format: LcgFormat,
-
-    /// Write to FILE instead of standard output ("-": standard output; a PNG is not written
-    /// to a terminal)
-    #[arg(short = 'o', long = "output", value_name = "FILE")]
-    pub(crate) file: Option<PathBuf>,
-}
-
-/// Output formats of `lac lcg`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub(crate) enum LcgFormat {
-    /// One line: points [{s, kappa, dkappa_ds, log_rho, log_lcg}] and fit {alpha, intercept,
-    /// rms_residual, max_residual, log_rho} (null when there is no line), with "pieces"
-    /// [{s, fit}] for a compound curve and "monotone": false and "note" when the curvature is
-    /// not monotone; for a space curve {"curvature":{points [{s, x, y}], fit {slope, intercept,
-    /// rms_residual, max_residual, x}}, "torsion":{…}} (the slopes are alpha and beta)
-    Json,
-    /// A header s,kappa,dkappa_ds,log_rho,log_lcg (a space curve: s,log_rho,log_lcg,log_mu,
-    /// log_ltg) and one row per point, empty where there is no graph point; first a comment
-    /// line "# …" with the note when there is one
-    Csv,
-    /// Two panels: the curvature plot and the logarithmic curvature graph with its line(s);
-    /// for a space curve the curvature and torsion graphs with their lines
-    Svg,
-    /// The same picture as svg, rendered
-    Png,
-}
-
-/// Arguments of `lac serve`.
-#[derive(Debug, Args)]
-pub(crate) struct ServeArgs {
-    /// The port to listen on (0: any free port; the URL printed says which)
-    #[arg(long, value_name = "P", default_value_t = 8787)]
-    pub(crate) port: u16,
-
-    /// Open the editor in the default web browser
-    #[arg(long)]
-    pub(crate) open: bool,
-
-    /// The address to listen on; anything but a loopback address needs --allow-remote
-    #[arg(long, value_name = "ADDR", default_value = "127.0.0.1")]
-    pub(crate) host: std::net::IpAddr,
-
-    /// Allow a non-loopback --host: anyone who can reach the port can use the editor's API
-    #[arg(long)]
-    pub(crate) allow_remote: bool,
-}
-
-/// Arguments of `lac export`.
+/// Arguments of `lac export`: a curve given by the flags of its kind, or a FILE with one.
+///
+/// Each curve kind has its group here, with only optional flags whose names no other group
+/// uses, and implements [`ExportSource`] for it in its module; the flags that several kinds
+/// take are [`CurveFlags`]. The help lists the groups in the order of the fields.
 #[derive(Debug, Args)]
 pub(crate) struct ExportArgs {
     /// One result of lac segment, lac compound, lac path, lac spline or lac space to export
@@ -763,6 +309,71 @@ pub(crate) struct ExportArgs {
     #[arg(value_name = "FILE", conflicts_with = "points")]
     pub(crate) input: Option<PathBuf>,
 
+    /// The flags that several kinds take.
+    #[command(flatten)]
+    pub(crate) curve: CurveFlags,
+
+    /// A path's.
+    #[command(flatten)]
+    pub(crate) path: PathExport,
+
+    /// A spline's.
+    #[command(flatten)]
+    pub(crate) spline: SplineExport,
+
+    /// A compound curve's.
+    #[command(flatten)]
+    pub(crate) compound: CompoundFlags,
+
+    /// A space segment's.
+    #[command(flatten)]
+    pub(crate) space: SpaceExport,
+
+    /// The file to write and how.
+    #[command(flatten)]
+    pub(crate) to: ExportTo,
+}
+
+impl ExportArgs {
+    /// What to give when there is nothing to read.
+    pub(crate) const HINT: &'static str =
+        "give --points with --alpha (and --alpha0/--alpha1/--ratio or --beta), --polygon with \
+         --alpha or --alphas, --through with --alpha, or a FILE with a lac segment, compound, \
+         path, spline or space result, or pipe one in";
+
+    /// The usage error of `--closed` with no kind that closes.
+    pub(crate) const CLOSED: &'static str =
+        "--closed closes a path's polygon (--polygon) or a spline (--through)";
+
+    /// The usage error of `--points` with flags that make no curve.
+    pub(crate) const POINTS: &'static str =
+        "give --alpha for a segment, --alpha0 and --alpha1 (and --ratio for three points) for \
+         a compound curve, or --alpha and --beta for a space segment";
+
+    /// The usage error of slopes without `--points`, `--polygon` or `--through`.
+    pub(crate) const NO_CURVE: &'static str =
+        "the curve's parameters need --points (or --polygon for a path)";
+
+    /// The curve kinds, in the order `lac export` asks them what the flags (or a document)
+    /// describe. No two kinds answer to the same flags (a path to --polygon, a spline to
+    /// --through, a space segment to --points with --beta, a segment or compound curve to
+    /// --points with its slopes and no other kind's flags), so the order matters only for
+    /// documents: the spline before the path, since a spline's result has a "closed" as a
+    /// path's input does.
+    pub(crate) fn sources(&self) -> [&dyn ExportSource; 5] {
+        [
+            &SegmentExport,
+            &self.compound,
+            &self.spline,
+            &self.path,
+            &self.space,
+        ]
+    }
+}
+
+/// The flags of `lac export` that several curve kinds take.
+#[derive(Debug, Args)]
+pub(crate) struct CurveFlags {
     /// The control points: three "x,y" with --alpha (a segment), three with --alpha0,
     /// --alpha1 and --ratio or four with --alpha0 and --alpha1 (a compound curve), or four
     /// "x,y,z" with --alpha and --beta (a space segment)
@@ -774,132 +385,19 @@ pub(crate) struct ExportArgs {
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub(crate) alpha: Option<f64>,
 
-    /// A path: the control polygon "x0,y0 x1,y1 …" (at least three points), with --alpha
-    /// or --alphas, and --closed, --g2 or --fractions as lac path takes them
-    #[arg(
-        long,
-        value_name = "POINTS",
-        allow_hyphen_values = true,
-        conflicts_with_all = ["points", "input"]
-    )]
-    pub(crate) polygon: Option<String>,
-
-    /// A spline: the points it passes through "x0,y0 x1,y1 …" (at least three), with
-    /// --alpha, and --closed or --start-angle/--end-angle as lac spline takes them
-    #[arg(
-        long,
-        value_name = "POINTS",
-        allow_hyphen_values = true,
-        conflicts_with_all = ["points", "input", "polygon"]
-    )]
-    pub(crate) through: Option<String>,
-
-    /// A path: one slope per segment "a1,a2,…"
-    #[arg(
-        long,
-        value_name = "LIST",
-        allow_hyphen_values = true,
-        requires = "polygon",
-        conflicts_with = "alpha"
-    )]
-    pub(crate) alphas: Option<String>,
-
     /// A path or spline: close the polygon (the spline through the points)
     #[arg(long)]
     pub(crate) closed: bool,
-
-    /// A spline: the tangent direction at the first point, radians
-    #[arg(
-        long,
-        value_name = "R",
-        allow_hyphen_values = true,
-        requires_all = ["through", "end_angle"],
-        conflicts_with = "closed"
-    )]
-    pub(crate) start_angle: Option<f64>,
-
-    /// A spline: the tangent direction at the last point, radians
-    #[arg(
-        long,
-        value_name = "R",
-        allow_hyphen_values = true,
-        requires_all = ["through", "start_angle"]
-    )]
-    pub(crate) end_angle: Option<f64>,
-
-    /// A path: solve the joints for continuous curvature (G2)
-    #[arg(long, requires = "polygon", conflicts_with = "fractions")]
-    pub(crate) g2: bool,
-
-    /// A path (G1): the fraction of each joint leg at which its joint lies "t1,t2,…"
-    #[arg(long, value_name = "LIST", requires = "polygon")]
-    pub(crate) fractions: Option<String>,
-
-    /// A compound curve: the slope of the piece from the first point to the joint
-    #[arg(long, value_name = "A", allow_hyphen_values = true)]
-    pub(crate) alpha0: Option<f64>,
-
-    /// A compound curve: the slope of the piece from the joint to the last point
-    #[arg(long, value_name = "B", allow_hyphen_values = true)]
-    pub(crate) alpha1: Option<f64>,
-
-    /// A compound curve from three points: the share of the turning of the alpha0 piece
-    #[arg(long, value_name = "R", allow_hyphen_values = true)]
-    pub(crate) ratio: Option<f64>,
-
-    /// A space segment: the slope of the logarithmic torsion graph
-    #[arg(long, value_name = "B", allow_hyphen_values = true)]
-    pub(crate) beta: Option<f64>,
-
-    /// A space segment: the torsion parameter (default 0)
-    #[arg(long, value_name = "W", allow_hyphen_values = true)]
-    pub(crate) omega: Option<f64>,
-
-    /// A space segment: the torsion type, 1 or 2 (default 1)
-    #[arg(long = "type", value_name = "1|2")]
-    pub(crate) torsion_type: Option<u8>,
-
-    /// File format (default: from the extension of -o: .dxf, .step/.stp, .iges/.igs, .svg,
-    /// .json)
-    #[arg(long, value_enum)]
-    pub(crate) format: Option<ExportFormat>,
-
-    /// Largest deviation allowed from the exact curve, in model units (default 1e-6)
-    #[arg(long, value_name = "T", allow_hyphen_values = true)]
-    pub(crate) tolerance: Option<f64>,
-
-    /// Largest deviation allowed, as a fraction of the arc length (1e-12 to 1), instead of
-    /// --tolerance
-    #[arg(
-        long,
-        value_name = "R",
-        allow_hyphen_values = true,
-        conflicts_with = "tolerance"
-    )]
-    pub(crate) relative_tolerance: Option<f64>,
-
-    /// Write each Bézier piece as a B-spline of its own (one knot span), for readers that
-    /// refuse interior knots of multiplicity above 1
-    #[arg(long)]
-    pub(crate) pieces: bool,
-
-    /// Write to FILE ("-": standard output)
-    #[arg(short = 'o', long = "output", value_name = "FILE")]
-    pub(crate) file: Option<PathBuf>,
 }
 
-/// Formats of `lac export`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub(crate) enum ExportFormat {
-    /// DXF R2000 (AC1015): SPLINE entities with weights
-    Dxf,
-    /// STEP AP214: bounded rational B-spline curves in a wireframe shape
-    Step,
-    /// IGES 5.3: rational B-spline curves, entity 126
-    Iges,
-    /// SVG: plain cubic Béziers in model units (planar curves)
-    Svg,
-    /// JSON: {"curves":[{"degree","dimension","control_points","weights","knots"}], and the
-    /// report's fields}
-    Json,
+#[cfg(test)]
+mod tests {
+    use clap::CommandFactory;
+
+    /// clap's own checks of the whole grammar: no flag defined twice in one subcommand (by
+    /// its flattened groups), every conflict and requirement names a flag of its subcommand.
+    #[test]
+    fn the_grammar_passes_claps_checks() {
+        super::Cli::command().debug_assert();
+    }
 }

@@ -6,7 +6,10 @@ use std::cell::Cell;
 use std::io::{self, Write};
 use std::path::Path;
 
+use clap::CommandFactory;
 use lac_io::json::{ErrorBody, ErrorClass};
+
+use crate::cli::Cli;
 
 /// A command-line usage error (exit code 2).
 pub(crate) fn usage(message: impl Into<String>) -> ErrorBody {
@@ -37,10 +40,16 @@ pub(crate) fn exit_code(err: &ErrorBody) -> u8 {
 /// A clap error as a one-line usage failure: its text up to the usage block, on one line.
 pub(crate) fn from_clap(err: &clap::Error) -> ErrorBody {
     if err.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
-        return usage(
-            "no subcommand given: use 'lac segment', 'lac compound', 'lac region', 'lac quasi', \
-             'lac monotone', 'lac lcg', 'lac space' or 'lac serve'; see 'lac --help'",
-        );
+        // Every subcommand of the grammar, in its order.
+        let names: Vec<String> = Cli::command()
+            .get_subcommands()
+            .map(|c| format!("'lac {}'", c.get_name()))
+            .collect();
+        let list = match names.split_last() {
+            Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
+            _ => names.concat(),
+        };
+        return usage(format!("no subcommand given: use {list}; see 'lac --help'"));
     }
     let text = err.render().to_string();
     let mut message = String::new();

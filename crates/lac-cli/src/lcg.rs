@@ -7,10 +7,12 @@
 //! segment`, `lac compound` or `lac space`, which is solved again from its points and
 //! parameters.
 
+use std::path::PathBuf;
+
+use clap::{Args, ValueEnum};
 use lac::Curve;
 use lac_io::json::{to_line, ErrorBody, LcgInput, LcgReport, Report, SpaceLcgReport};
 
-use crate::cli::{LcgArgs, LcgFormat};
 use crate::input::read_document;
 use crate::limits::Limits;
 use crate::output::{refuse_binary_on_terminal, write_document};
@@ -32,6 +34,57 @@ enum Analysis {
     Plane(LcgReport, Vec<f64>, String),
     /// A space curve: its two graphs and a title.
     Space(SpaceLcgReport, String),
+}
+
+/// Arguments of `lac lcg`.
+#[derive(Debug, Args)]
+pub(crate) struct LcgArgs {
+    /// The JSON to analyse ("-" or nothing: standard input): {"pieces":[{"points":[[x,y],…],
+    /// "weights":[…]},…]} with four points a piece and optional weights (the output of lac
+    /// quasi), one result of lac segment or lac compound, or one result of lac space; at most
+    /// 64 MiB (1 GiB with --allow-large)
+    #[arg(value_name = "FILE")]
+    pub(crate) input: Option<PathBuf>,
+
+    /// Curvature points: for Bézier pieces, per piece, equally spaced in t (default 64); for a
+    /// log-aesthetic curve (and each of its pieces) or a space curve, in all, equally spaced in
+    /// arc length (default 257); at most 1,000,000 points in all (10,000,000 with
+    /// --allow-large)
+    #[arg(
+        long,
+        value_name = "N",
+        value_parser = clap::value_parser!(u32).range(2..)
+    )]
+    pub(crate) samples: Option<u32>,
+
+    /// Output format
+    #[arg(long, value_enum, default_value_t = LcgFormat::Json)]
+    pub(crate) format: LcgFormat,
+
+    /// Write to FILE instead of standard output ("-": standard output; a PNG is not written
+    /// to a terminal)
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub(crate) file: Option<PathBuf>,
+}
+
+/// Output formats of `lac lcg`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum LcgFormat {
+    /// One line: points [{s, kappa, dkappa_ds, log_rho, log_lcg}] and fit {alpha, intercept,
+    /// rms_residual, max_residual, log_rho} (null when there is no line), with "pieces"
+    /// [{s, fit}] for a compound curve and "monotone": false and "note" when the curvature is
+    /// not monotone; for a space curve {"curvature":{points [{s, x, y}], fit {slope, intercept,
+    /// rms_residual, max_residual, x}}, "torsion":{…}} (the slopes are alpha and beta)
+    Json,
+    /// A header s,kappa,dkappa_ds,log_rho,log_lcg (a space curve: s,log_rho,log_lcg,log_mu,
+    /// log_ltg) and one row per point, empty where there is no graph point; first a comment
+    /// line "# …" with the note when there is one
+    Csv,
+    /// Two panels: the curvature plot and the logarithmic curvature graph with its line(s);
+    /// for a space curve the curvature and torsion graphs with their lines
+    Svg,
+    /// The same picture as svg, rendered
+    Png,
 }
 
 /// Run `lac lcg`.

@@ -47,7 +47,7 @@ use clap::error::ErrorKind;
 use clap::Parser;
 use lac_io::json::ErrorBody;
 
-use cli::{Cli, Command};
+use cli::Cli;
 use limits::Limits;
 
 fn main() -> ExitCode {
@@ -66,20 +66,7 @@ fn main() -> ExitCode {
         }
         Err(err) => return fail(&errors::from_clap(&err)),
     };
-    let limits = Limits::new(cli.allow_large);
-    let result = match &cli.command {
-        Command::Segment(args) => segment::run(args, limits),
-        Command::Compound(args) => compound::run(args, limits),
-        Command::Region(args) => region::run(args, limits),
-        Command::Quasi(args) => quasi::run(args, limits),
-        Command::Monotone(args) => monotone::run(args, limits),
-        Command::Lcg(args) => lcg::run(args, limits),
-        Command::Space(args) => space::run(args, limits),
-        Command::Path(args) => path::run(args, limits),
-        Command::Export(args) => export::run(args, limits),
-        Command::Spline(args) => spline::run(args, limits),
-        Command::Serve(args) => serve::run(args),
-    };
+    let result = cli.command.run(Limits::new(cli.allow_large));
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(err) => fail(&err),

@@ -3,8 +3,28 @@
 use std::net::SocketAddr;
 use std::process::{Command, Stdio};
 
-use crate::cli::ServeArgs;
+use clap::Args;
 use lac_io::json::ErrorBody;
+
+/// Arguments of `lac serve`.
+#[derive(Debug, Args)]
+pub(crate) struct ServeArgs {
+    /// The port to listen on (0: any free port; the URL printed says which)
+    #[arg(long, value_name = "P", default_value_t = 8787)]
+    pub(crate) port: u16,
+
+    /// Open the editor in the default web browser
+    #[arg(long)]
+    pub(crate) open: bool,
+
+    /// The address to listen on; anything but a loopback address needs --allow-remote
+    #[arg(long, value_name = "ADDR", default_value = "127.0.0.1")]
+    pub(crate) host: std::net::IpAddr,
+
+    /// Allow a non-loopback --host: anyone who can reach the port can use the editor's API
+    #[arg(long)]
+    pub(crate) allow_remote: bool,
+}
 
 /// Run `lac serve`: bind, print the URL (and open it with `--open`), serve until
 /// interrupted.

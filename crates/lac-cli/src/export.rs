@@ -136,7 +136,7 @@ impl Target {
     /// Export `curve`.
     pub(crate) fn write(&self, curve: &AnyCurve) -> Result<Exported, ErrorBody> {
         Ok(export(
-            curve.exportable(),
+            &curve.export_curve()?,
             self.format,
             self.tolerance,
             self.pieces,

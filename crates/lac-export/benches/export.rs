@@ -20,7 +20,7 @@ use kurbo::{
 use lac::{Segment, Tolerance};
 use lac_export::certify::{deviation, PlaneExact};
 use lac_export::nurbs::{Nurbs, Span};
-use lac_export::{export, Format, Meta};
+use lac_export::{export, ExportCurve, Format, Meta};
 
 const ALPHAS: [f64; 5] = [-1.0, 0.0, 0.5, 1.0, 2.0];
 const TOLERANCES: [f64; 7] = [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9];
@@ -82,11 +82,12 @@ fn table() {
     for alpha in ALPHAS {
         let seg = segment(alpha);
         for tol in TOLERANCES {
-            let cell = |format| match export(&seg, format, Tolerance::Absolute(tol), false, &meta())
-            {
-                Ok(e) => format!("{} ({:.1e})", e.report.pieces, e.report.max_deviation),
-                Err(e) => format!("refused: {}", e.kind()),
-            };
+            let curve = ExportCurve::whole("segment", &seg);
+            let cell =
+                |format| match export(&curve, format, Tolerance::Absolute(tol), false, &meta()) {
+                    Ok(e) => format!("{} ({:.1e})", e.report.pieces, e.report.max_deviation),
+                    Err(e) => format!("refused: {}", e.kind()),
+                };
             let path = kurbo::fit_to_bezpath(&Fit(&seg), tol);
             let nurbs = kurbo_nurbs(&path);
             let d = deviation(&PlaneExact(&seg), &nurbs, 64).expect("measurable");
@@ -110,7 +111,7 @@ fn bench_export(c: &mut Criterion) {
             group.bench_with_input(BenchmarkId::new("lac_step", &id), &tol, |b, &tol| {
                 b.iter(|| {
                     export(
-                        black_box(&seg),
+                        &ExportCurve::whole("segment", black_box(&seg)),
                         Format::Step,
                         Tolerance::Absolute(tol),
                         false,

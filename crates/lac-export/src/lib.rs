@@ -2,7 +2,7 @@
 //! degree-3 B-splines within a tolerance, with the achieved deviation measured densely, in
 //! DXF, STEP, IGES, SVG (plain cubics) or JSON.
 //!
-//! Every curve kind says once, in `kinds.rs`, how it is exported ([`Exportable`]). Planar
+//! A curve comes as the parts it is fitted by ([`ExportCurve`], `parts.rs`). Planar
 //! curves are replaced by the quasi-aesthetic rational cubics of
 //! [`lac::ToBezier::to_rational_cubics`] (G2 joins, each piece's curvature proven monotone;
 //! SVG takes the plain cubics of [`lac::ToBezier::to_cubics`]), space segments by the C1
@@ -28,9 +28,9 @@ pub mod dxf;
 mod error;
 pub mod iges;
 pub mod json;
-pub mod kinds;
 mod number;
 pub mod nurbs;
+pub mod parts;
 pub mod step;
 pub mod svg;
 
@@ -44,9 +44,9 @@ use lac::{SegmentChain, ToBezier};
 use certify::{deviation, Exact, Piece, PiecesExact, PlaneExact, SpaceExact};
 pub use error::{Error, Result};
 use json::{ExportDocument, NurbsRow};
-pub use kinds::{Exportable, Parts};
 pub use nurbs::Nurbs;
 use nurbs::Span;
+pub use parts::{path_pieces, spline_pieces, ExportCurve, Parts};
 
 /// The default tolerance: 1e-6 model units (millimetres in DXF, STEP and IGES).
 pub const DEFAULT_TOLERANCE: f64 = 1e-6;
@@ -173,14 +173,14 @@ struct Fitted {
 /// Export `curve` as `format` within `tolerance`, one curve or (`single_spans`) one per
 /// piece.
 pub fn export(
-    curve: &dyn Exportable,
+    curve: &ExportCurve,
     format: Format,
     tolerance: Tolerance,
     single_spans: bool,
     meta: &Meta,
 ) -> Result<Exported> {
-    let (length, kind, continuity) = (curve.length(), curve.kind(), curve.continuity());
-    let parts = curve.parts()?;
+    let (length, kind, continuity) = (curve.length, curve.kind, curve.continuity);
+    let parts = &curve.parts;
     if format == Format::Svg && matches!(parts, Parts::Space(_)) {
         return Err(Error::SvgOfSpaceCurve);
     }
@@ -189,8 +189,8 @@ pub fn export(
     let mut target = tol;
     let mut reached = f64::INFINITY;
     for _ in 0..ATTEMPTS {
-        let fitted = fit(&parts, target, plain)?;
-        let measured = match &parts {
+        let fitted = fit(parts, target, plain)?;
+        let measured = match parts {
             Parts::Whole(chain) => measure(&PlaneExact(*chain), &fitted.nurbs)?,
             Parts::Pieces(pieces) => measure(&PiecesExact(pieces), &fitted.nurbs)?,
             Parts::Space(s) => measure(&SpaceExact(s), &fitted.nurbs)?,

@@ -3,7 +3,7 @@
 
 use lac::Tolerance;
 use lac_export::{Format, Meta};
-use lac_io::json::AnyCurve;
+use lac_io::json::{AnyCurve, ErrorBody};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -66,9 +66,13 @@ pub(crate) fn export<'py>(
         ));
     };
     let meta = Meta::now(name);
-    let written =
-        py.detach(|| lac_export::export(owned.exportable(), format, tolerance, pieces, &meta));
-    let written = written.map_err(|e| from_body(py, e.into()))?;
+    let written = py.detach(|| {
+        let curve = owned.export_curve()?;
+        Ok(lac_export::export(
+            &curve, format, tolerance, pieces, &meta,
+        )?)
+    });
+    let written = written.map_err(|e: ErrorBody| from_body(py, e))?;
     let report = serde_json::to_value(&written.report)
         .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
     let dict = PyDict::new(py);

@@ -17,7 +17,7 @@ use lac::{
 use lac_export::certify::{deviation, PlaneExact};
 use lac_export::json::ExportDocument;
 use lac_export::nurbs::{Nurbs, Span};
-use lac_export::{export, Exportable, Exported, Format, Meta};
+use lac_export::{export, path_pieces, spline_pieces, ExportCurve, Exported, Format, Meta};
 
 fn meta() -> Meta {
     Meta {
@@ -61,7 +61,7 @@ fn space() -> SpaceSegment {
     SpaceSegment::from_control_points(p.map(Vec3::from_array), shape).unwrap()
 }
 
-fn run(curve: &dyn Exportable, format: Format, tol: f64, pieces: bool) -> Exported {
+fn run(curve: &ExportCurve, format: Format, tol: f64, pieces: bool) -> Exported {
     export(curve, format, Tolerance::Absolute(tol), pieces, &meta()).unwrap()
 }
 
@@ -125,12 +125,12 @@ fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {
 #[test]
 fn the_json_b_spline_is_the_chain_of_pieces_joined_g2_within_the_tolerance() {
     let (seg, comp) = (segment(), compound());
-    let planar: [(&dyn Exportable, &dyn Curve, f64); 2] = [
-        (&seg as &dyn Exportable, &seg, 1e-9),
-        (&comp as &dyn Exportable, &comp, 1e-7),
+    let planar: [(ExportCurve, &dyn Curve, f64); 2] = [
+        (ExportCurve::whole("segment", &seg), &seg, 1e-9),
+        (ExportCurve::whole("compound", &comp), &comp, 1e-7),
     ];
     for (curve, exact, tol) in planar {
-        let e = run(curve, Format::Json, tol, false);
+        let e = run(&curve, Format::Json, tol, false);
         assert!(e.report.max_deviation <= tol && e.report.monotone_proven == Some(true));
         let doc: ExportDocument = serde_json::from_str(&e.document).unwrap();
         assert_eq!(doc.report, e.report);
@@ -164,7 +164,12 @@ fn the_json_b_spline_is_the_chain_of_pieces_joined_g2_within_the_tolerance() {
 #[test]
 fn a_b_spline_moved_by_delta_is_measured_between_half_delta_and_delta_away() {
     let seg = segment();
-    let e = run(&seg, Format::Json, 1e-9, false);
+    let e = run(
+        &ExportCurve::whole("segment", &seg),
+        Format::Json,
+        1e-9,
+        false,
+    );
     let doc: ExportDocument = serde_json::from_str(&e.document).unwrap();
     let mut n = nurbs_of(&doc, 0);
     let delta = 1e-5;
@@ -181,11 +186,11 @@ fn a_b_spline_moved_by_delta_is_measured_between_half_delta_and_delta_away() {
 fn every_format_meets_the_tolerance_for_every_kind_of_curve() {
     let (seg, comp, sp) = (segment(), compound(), space());
     let curves = [
-        &seg as &dyn Exportable,
-        &comp as &dyn Exportable,
-        &sp as &dyn Exportable,
+        ExportCurve::whole("segment", &seg),
+        ExportCurve::whole("compound", &comp),
+        ExportCurve::space("space", &sp),
     ];
-    for &curve in &curves {
+    for curve in &curves {
         for format in [
             Format::Dxf,
             Format::Step,
@@ -193,7 +198,7 @@ fn every_format_meets_the_tolerance_for_every_kind_of_curve() {
             Format::Svg,
             Format::Json,
         ] {
-            if format == Format::Svg && curve.kind() == "space" {
+            if format == Format::Svg && curve.kind == "space" {
                 let refused = export(curve, format, Tolerance::Absolute(1e-6), false, &meta());
                 let refused = refused.unwrap_err();
                 assert_eq!(refused, lac_export::Error::SvgOfSpaceCurve);
@@ -212,9 +217,11 @@ fn every_format_meets_the_tolerance_for_every_kind_of_curve() {
 #[test]
 fn step_points_read_back_bit_for_bit_and_every_reference_is_defined() {
     let sp = space();
-    let json: ExportDocument =
-        serde_json::from_str(&run(&sp, Format::Json, 1e-7, false).document).unwrap();
-    let step = run(&sp, Format::Step, 1e-7, false).document;
+    let json: ExportDocument = serde_json::from_str(
+        &run(&ExportCurve::space("space", &sp), Format::Json, 1e-7, false).document,
+    )
+    .unwrap();
+    let step = run(&ExportCurve::space("space", &sp), Format::Step, 1e-7, false).document;
     assert!(step.starts_with("ISO-10303-21;\n") && step.ends_with("END-ISO-10303-21;\n"));
     let complex = "(BOUNDED_CURVE() B_SPLINE_CURVE(3,";
     assert_eq!(step.matches(complex).count(), 1);
@@ -273,7 +280,12 @@ fn step_points_read_back_bit_for_bit_and_every_reference_is_defined() {
 fn iges_records_are_80_columns_numbered_and_counted() {
     let seg = segment();
     for pieces in [false, true] {
-        let e = run(&seg, Format::Iges, 1e-9, pieces);
+        let e = run(
+            &ExportCurve::whole("segment", &seg),
+            Format::Iges,
+            1e-9,
+            pieces,
+        );
         let mut count = std::collections::BTreeMap::new();
         let mut order = String::new();
         let mut directory = Vec::new();
@@ -319,7 +331,12 @@ fn iges_records_are_80_columns_numbered_and_counted() {
 fn dxf_is_group_code_and_value_pairs_with_one_spline_per_curve() {
     let comp = compound();
     for pieces in [false, true] {
-        let e = run(&comp, Format::Dxf, 1e-8, pieces);
+        let e = run(
+            &ExportCurve::whole("compound", &comp),
+            Format::Dxf,
+            1e-8,
+            pieces,
+        );
         let lines: Vec<&str> = e.document.lines().collect();
         assert_eq!(lines.len() % 2, 0);
         let pairs: Vec<(i32, &str)> = lines
@@ -355,8 +372,13 @@ impl Rng {
 /// G2, every piece proven monotone (`what` names the path in a failure).
 fn exported_g2(path: &lac::Path, tol: f64, what: &str) -> Exported {
     let tolerance = tol * path.arc_length();
+    let continuity = match path.continuity() {
+        lac::Continuity::G1 => "G1",
+        lac::Continuity::G2 => "G2",
+    };
+    let curve = ExportCurve::pieces("path", path.arc_length(), continuity, path_pieces(path));
     let done = export(
-        path,
+        &curve,
         Format::Json,
         Tolerance::Absolute(tolerance),
         false,
@@ -538,8 +560,14 @@ fn splines_through_inflections_export_within_the_tolerance_with_monotone_pieces(
         inflecting += 1;
         for tol in [1e-4, 1e-7] {
             let tolerance = tol * spline.arc_length();
+            let curve = ExportCurve::pieces(
+                "spline",
+                spline.arc_length(),
+                "G2",
+                spline_pieces(&spline).unwrap(),
+            );
             let done = export(
-                &spline,
+                &curve,
                 Format::Json,
                 Tolerance::Absolute(tolerance),
                 false,

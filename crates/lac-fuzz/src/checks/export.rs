@@ -28,8 +28,11 @@ pub(super) fn check(
     } else {
         Tolerance::Absolute(tolerance)
     };
+    let Ok(curve) = built.as_export() else {
+        return Ok(false);
+    };
     let Ok(exported) = lac_export::export(
-        built.as_export(),
+        &curve,
         format,
         tolerance,
         single_spans,

@@ -13,8 +13,8 @@ use lac::{
     TorsionType, Vec3,
 };
 use lac::{Closure, SpaceCurve};
-use lac_export::Exportable;
-use lac_io::json::Solved;
+use lac_export::ExportCurve;
+use lac_io::json::{ErrorBody, Kind, PathKind, Solved, SpaceKind};
 
 use crate::Input;
 
@@ -93,11 +93,11 @@ enum Built {
 }
 
 impl Built {
-    fn as_export(&self) -> &dyn Exportable {
+    fn as_export(&self) -> Result<ExportCurve<'_>, ErrorBody> {
         match self {
-            Built::Plane(s) => s.exportable(),
-            Built::Path(p) => p,
-            Built::Space(s) => s,
+            Built::Plane(s) => Ok(s.export_curve()),
+            Built::Path(p) => PathKind::export(p),
+            Built::Space(s) => SpaceKind::export(s),
         }
     }
 

@@ -5,7 +5,10 @@
 use lac::{CompoundCurve, Curve, LcgLine, Segment, SegmentChain};
 use serde::{Deserialize, Serialize};
 
+use lac_export::ExportCurve;
+
 use super::kind::{fields, Kind};
+use super::SegmentKind;
 use super::{all_finite, point, xy, ErrorBody, Report, SampleRow, SegmentInput, Xy};
 use serde_json::{Map, Value};
 
@@ -90,11 +93,11 @@ impl Solved {
 }
 
 impl Solved {
-    /// The curve, for CAD export.
-    pub fn exportable(&self) -> &dyn lac_export::Exportable {
+    /// The curve for CAD export.
+    pub fn export_curve(&self) -> ExportCurve<'_> {
         match self {
-            Solved::Segment(s) => s,
-            Solved::Compound(c) => c,
+            Solved::Segment(s) => ExportCurve::whole(SegmentKind::NAME, s),
+            Solved::Compound(c) => ExportCurve::whole(CompoundKind::NAME, c),
         }
     }
 }
@@ -235,6 +238,10 @@ impl Kind for CompoundKind {
 
     fn solve(document: Map<String, Value>) -> Result<CompoundCurve, ErrorBody> {
         fields::<CompoundInput>(document, "a compound curve", CompoundInput::SHAPE)?.solve()
+    }
+
+    fn export(curve: &CompoundCurve) -> Result<ExportCurve<'_>, ErrorBody> {
+        Ok(ExportCurve::whole(Self::NAME, curve))
     }
 }
 

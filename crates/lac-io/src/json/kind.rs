@@ -1,11 +1,11 @@
 //! The curve kinds, each described once ([`Kind`], in the kind's own file) and listed once
 //! (`kinds!` in `json/mod.rs`), so that the front ends iterate them instead of knowing
 //! them: reading a document of any kind (`lac export FILE`, the editor's `/api/export`),
-//! solving it, and handing it to CAD export ([`AnyCurve`]).
+//! solving it, and handing it to CAD export ([`AnyCurve::export_curve`]).
 //!
 //! A new kind of curve is one `impl Kind` in its file of `json/` and one line in the list.
 
-use lac_export::Exportable;
+use lac_export::ExportCurve;
 use serde::de::DeserializeOwned;
 use serde_json::{Map, Value};
 
@@ -17,7 +17,7 @@ pub trait Kind {
     const NAME: &'static str;
 
     /// The curve.
-    type Curve: Exportable;
+    type Curve;
 
     /// Whether `document` (a JSON object: an input, or a report read back) is one of this
     /// kind's, told by its keys. The kinds are asked in the order of their list, so a kind
@@ -26,6 +26,10 @@ pub trait Kind {
 
     /// The curve a claimed document describes, solved again from what the document gives.
     fn solve(document: Map<String, Value>) -> Result<Self::Curve, ErrorBody>;
+
+    /// The curve for CAD export: the parts it is fitted by ([`ExportCurve`]), with
+    /// [`Kind::NAME`] as the report's kind.
+    fn export(curve: &Self::Curve) -> Result<ExportCurve<'_>, ErrorBody>;
 }
 
 /// The fields of `document` as a `T`, or an error that says `what` was read and what shape
@@ -82,10 +86,12 @@ macro_rules! kinds {
                 }
             }
 
-            /// The curve, for CAD export.
-            pub fn exportable(&self) -> &dyn lac_export::Exportable {
+            /// The curve for CAD export.
+            pub fn export_curve(
+                &self,
+            ) -> Result<lac_export::ExportCurve<'_>, $crate::json::ErrorBody> {
                 match self {
-                    $(AnyCurve::$variant(curve) => curve,)*
+                    $(AnyCurve::$variant(curve) => <$kind as $crate::json::Kind>::export(curve),)*
                 }
             }
         }

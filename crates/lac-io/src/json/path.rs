@@ -6,6 +6,8 @@ use lac::Closure;
 use lac::{Alphas, Continuity, ControlPolygon, Curve, Path};
 use serde::{Deserialize, Serialize};
 
+use lac_export::{path_pieces, ExportCurve};
+
 use super::kind::{fields, Kind};
 use super::{all_finite, point, xy, ErrorBody, Report, SampleRow, Xy};
 use serde_json::{Map, Value};
@@ -314,5 +316,21 @@ impl Kind for PathKind {
             fields::<PathInput>(document, "a path", PathInput::SHAPE)?
         };
         input.solve()
+    }
+
+    /// Segment by segment: each segment's chain keeps its end points, tangents and
+    /// curvatures, so the path's joints stay knots with the path's own continuity; a straight
+    /// piece (an inflection leg) is one cubic span with collinear points.
+    fn export(path: &Path) -> Result<ExportCurve<'_>, ErrorBody> {
+        let continuity = match path.continuity() {
+            Continuity::G1 => "G1",
+            Continuity::G2 => "G2",
+        };
+        Ok(ExportCurve::pieces(
+            Self::NAME,
+            path.arc_length(),
+            continuity,
+            path_pieces(path),
+        ))
     }
 }

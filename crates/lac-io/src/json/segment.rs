@@ -5,6 +5,8 @@
 use lac::{Curve, Segment};
 use serde::{Deserialize, Serialize};
 
+use lac_export::ExportCurve;
+
 use super::kind::{fields, Kind};
 use super::{all_finite, point, xy, ErrorBody, Report, SampleRow, Xy};
 use serde_json::{Map, Value};
@@ -113,6 +115,10 @@ impl Kind for SegmentKind {
 
     fn solve(document: Map<String, Value>) -> Result<Segment, ErrorBody> {
         fields::<SegmentInput>(document, "a segment", SegmentInput::SHAPE)?.solve()
+    }
+
+    fn export(segment: &Segment) -> Result<ExportCurve<'_>, ErrorBody> {
+        Ok(ExportCurve::whole(Self::NAME, segment))
     }
 }
 

@@ -6,6 +6,8 @@ use lac::SpaceCurve;
 use lac::{Frame, GraphPoint, LcgFit, SpaceSegment, SpaceShape, TorsionType, Vec3};
 use serde::{Deserialize, Serialize};
 
+use lac_export::ExportCurve;
+
 use super::kind::{fields, Kind};
 use super::{all_finite, ErrorBody, Report, Xyz};
 use serde_json::{Map, Value};
@@ -453,6 +455,10 @@ impl Kind for SpaceKind {
 
     fn solve(document: Map<String, Value>) -> Result<SpaceSegment, ErrorBody> {
         fields::<SpaceInput>(document, "a space curve", SpaceInput::SHAPE)?.solve()
+    }
+
+    fn export(segment: &SpaceSegment) -> Result<ExportCurve<'_>, ErrorBody> {
+        Ok(ExportCurve::space(Self::NAME, segment))
     }
 }
 

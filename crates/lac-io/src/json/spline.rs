@@ -6,6 +6,8 @@ use lac::{Closure, Curve, SegmentChain, Spline};
 use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value};
 
+use lac_export::{spline_pieces, ExportCurve};
+
 use super::kind::{fields, Kind};
 use super::{all_finite, point, xy, ErrorBody, Report, SampleRow, Xy};
 
@@ -167,6 +169,17 @@ impl Kind for SplineKind {
         let report: SplineReport =
             fields(document, "a lac spline result", "what lac spline prints")?;
         report.input().solve()
+    }
+
+    /// Piece by piece, like a path: every point, and the two halves of a span through an
+    /// inflection (with the straight piece where they are flat), is a knot.
+    fn export(spline: &Spline) -> Result<ExportCurve<'_>, ErrorBody> {
+        Ok(ExportCurve::pieces(
+            Self::NAME,
+            spline.arc_length(),
+            "G2",
+            spline_pieces(spline)?,
+        ))
     }
 }
 

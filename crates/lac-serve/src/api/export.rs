@@ -92,9 +92,9 @@ pub(crate) fn export(app: &App, text: &str) -> Result<File, ApiError> {
     }
     let meta = Meta::now(name.clone());
     let curve = AnyCurve::from_fields(map)?;
-    let exportable = curve.exportable();
-    within_limit(app, tolerance, exportable.length())?;
-    let exported = write_export(exportable, format, tolerance, pieces, &meta)?;
+    let exportable = curve.export_curve()?;
+    within_limit(app, tolerance, exportable.length)?;
+    let exported = write_export(&exportable, format, tolerance, pieces, &meta)?;
     Ok(File {
         report: to_line(&exported.report),
         document: exported.document,

@@ -709,7 +709,7 @@ async fn export_writes_what_lac_export_writes() {
         serde_json::from_str(r#"{"points":[[0,0],[3,0],[4.2,1.9]],"alpha":0.5}"#).unwrap();
     let segment = input.solve().unwrap();
     let expected = lac_export::export(
-        &segment,
+        &lac_export::ExportCurve::whole("segment", &segment),
         lac_export::Format::Dxf,
         lac::Tolerance::Absolute(1e-7),
         false,

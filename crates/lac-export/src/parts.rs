@@ -1,6 +1,8 @@
-//! The curves CAD export takes, each described once ([`Exportable`]): what the report calls
-//! it, the continuity at its knots, and the parts it is fitted by. A new kind of curve is
-//! one `impl Exportable` here.
+//! What CAD export takes ([`ExportCurve`]): a curve as the parts it is fitted by, with the
+//! name and continuity its report gives. Export knows three ways to fit a curve, not the
+//! kinds of curves: a kind describes itself once, in lac-io's list of kinds, by choosing one
+//! ([`ExportCurve::whole`], [`ExportCurve::pieces`], [`ExportCurve::space`]); the pieces of
+//! a path and of a spline are made here ([`path_pieces`], [`spline_pieces`]).
 //!
 //! A segment or a compound curve is one chain of segments, fitted whole (the quasi chain of
 //! seed 001 keeps its G2 joint). A path and a spline are fitted piece by piece, so that
@@ -10,30 +12,22 @@
 use std::borrow::Cow;
 
 use kurbo::Point;
-use lac::{
-    CompoundCurve, Continuity, Curve, Path, Segment, SegmentChain, SpaceCurve, SpaceSegment, Spline,
-};
+use lac::{Curve, Path, Segment, SegmentChain, SpaceCurve, SpaceSegment, Spline};
 
 use crate::certify::Piece;
 use crate::Result;
 
-/// What CAD export needs of a curve.
-pub trait Exportable {
-    /// Its name in the export's report: `"segment"`, `"compound"`, `"path"`, `"spline"`,
-    /// `"space"`.
-    fn kind(&self) -> &'static str;
-
-    /// Its arc length (the tolerance may be relative to it).
-    fn length(&self) -> f64;
-
+/// A curve to export: its parts, and what the report says of it.
+pub struct ExportCurve<'a> {
+    /// Its name in the export's report: `"segment"`, `"path"`, ….
+    pub kind: &'static str,
+    /// Its arc length (a relative tolerance is a share of it).
+    pub length: f64,
     /// The continuity the B-spline has at the knots between parts: `"G2"`, `"G1"` (a G1
     /// path) or `"C1"` (space curves).
-    fn continuity(&self) -> &'static str {
-        "G2"
-    }
-
+    pub continuity: &'static str,
     /// The parts it is fitted by.
-    fn parts(&self) -> Result<Parts<'_>>;
+    pub parts: Parts<'a>,
 }
 
 /// How a curve is fitted.
@@ -47,89 +41,40 @@ pub enum Parts<'a> {
     Space(&'a SpaceSegment),
 }
 
-impl Exportable for Segment {
-    fn kind(&self) -> &'static str {
-        "segment"
-    }
-
-    fn length(&self) -> f64 {
-        Curve::arc_length(self)
-    }
-
-    fn parts(&self) -> Result<Parts<'_>> {
-        Ok(Parts::Whole(self))
-    }
-}
-
-impl Exportable for CompoundCurve {
-    fn kind(&self) -> &'static str {
-        "compound"
-    }
-
-    fn length(&self) -> f64 {
-        Curve::arc_length(self)
-    }
-
-    fn parts(&self) -> Result<Parts<'_>> {
-        Ok(Parts::Whole(self))
-    }
-}
-
-/// Segment by segment: each segment's chain keeps its end points, tangents and curvatures,
-/// so the path's joints stay knots with the path's own continuity; a straight piece (an
-/// inflection leg) is one cubic span with collinear points.
-impl Exportable for Path {
-    fn kind(&self) -> &'static str {
-        "path"
-    }
-
-    fn length(&self) -> f64 {
-        Curve::arc_length(self)
-    }
-
-    fn continuity(&self) -> &'static str {
-        match Path::continuity(self) {
-            Continuity::G1 => "G1",
-            Continuity::G2 => "G2",
+impl<'a> ExportCurve<'a> {
+    /// A chain of segments (a segment, a compound curve) fitted whole, joined G2.
+    pub fn whole(kind: &'static str, chain: &'a dyn SegmentChain) -> ExportCurve<'a> {
+        ExportCurve {
+            kind,
+            length: chain.arc_length(),
+            continuity: "G2",
+            parts: Parts::Whole(chain),
         }
     }
 
-    fn parts(&self) -> Result<Parts<'_>> {
-        Ok(Parts::Pieces(path_pieces(self)))
-    }
-}
-
-/// Piece by piece, like a path: every point, and the two halves of a span through an
-/// inflection (with the straight piece where they are flat), is a knot.
-impl Exportable for Spline {
-    fn kind(&self) -> &'static str {
-        "spline"
-    }
-
-    fn length(&self) -> f64 {
-        Curve::arc_length(self)
-    }
-
-    fn parts(&self) -> Result<Parts<'_>> {
-        Ok(Parts::Pieces(spline_pieces(self)?))
-    }
-}
-
-impl Exportable for SpaceSegment {
-    fn kind(&self) -> &'static str {
-        "space"
+    /// A planar curve of `length` fitted piece by piece, its knots with `continuity`.
+    pub fn pieces(
+        kind: &'static str,
+        length: f64,
+        continuity: &'static str,
+        pieces: Vec<Piece<'a>>,
+    ) -> ExportCurve<'a> {
+        ExportCurve {
+            kind,
+            length,
+            continuity,
+            parts: Parts::Pieces(pieces),
+        }
     }
 
-    fn length(&self) -> f64 {
-        SpaceCurve::arc_length(self)
-    }
-
-    fn continuity(&self) -> &'static str {
-        "C1"
-    }
-
-    fn parts(&self) -> Result<Parts<'_>> {
-        Ok(Parts::Space(self))
+    /// A space segment, joined C1.
+    pub fn space(kind: &'static str, segment: &'a SpaceSegment) -> ExportCurve<'a> {
+        ExportCurve {
+            kind,
+            length: SpaceCurve::arc_length(segment),
+            continuity: "C1",
+            parts: Parts::Space(segment),
+        }
     }
 }
 

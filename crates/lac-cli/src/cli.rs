@@ -1,9 +1,9 @@
 //! The command-line grammar (clap derive): the subcommands with their help and usage, and
 //! what runs each ([`Command::run`]); the flag groups that several subcommands flatten
 //! ([`CurveOutput`], and [`ExportArgs`], which lists the curve kinds' groups of `lac
-//! export`). Each subcommand's own flags are in its module (`segment::SegmentArgs`, …), each
-//! curve kind's flags of `lac export` too (`path::PathExport`, …). Help texts are what `lac
-//! --help` shows.
+//! export`). Each subcommand is a module below this one (`cli/segment.rs`, …) with its own
+//! flags (`segment::SegmentArgs`) and, for a curve kind, its flags of `lac export`
+//! (`path::PathExport`). Help texts are what `lac --help` shows.
 //!
 //! The same flag means the same thing in every subcommand: `--points` (control points
 //! "x,y" or "x,y,z" separated by spaces or semicolons), `--alpha` (a segment's slope),
@@ -12,27 +12,39 @@
 //! `--format`, `-o/--output`
 //! (a file, "-" for standard output) and `--batch` (JSON lines in, JSON lines out).
 //!
-//! A new subcommand is a variant of [`Command`] and its arm in [`Command::run`]; a new curve
-//! kind's flags of `lac export` are a field of [`ExportArgs`] and an entry of
-//! [`ExportArgs::sources`].
+//! A new subcommand is a module below this one, its `mod` line, a variant of [`Command`] and
+//! its arm in [`Command::run`]; a new curve kind's flags of `lac export` are a field of
+//! [`ExportArgs`] and an entry of [`ExportArgs::sources`]: all in this file.
+
+pub(crate) mod compound;
+pub(crate) mod export;
+pub(crate) mod lcg;
+pub(crate) mod monotone;
+pub(crate) mod path;
+pub(crate) mod quasi;
+pub(crate) mod region;
+pub(crate) mod segment;
+pub(crate) mod serve;
+pub(crate) mod space;
+pub(crate) mod spline;
 
 use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use lac_io::json::ErrorBody;
 
-use crate::compound::{self, CompoundArgs, CompoundFlags};
-use crate::export::{self, ExportSource, ExportTo};
-use crate::lcg::{self, LcgArgs};
 use crate::limits::Limits;
-use crate::monotone::{self, MonotoneArgs};
-use crate::path::{self, PathArgs, PathExport};
-use crate::quasi::{self, QuasiArgs};
-use crate::region::{self, RegionArgs};
-use crate::segment::{self, SegmentArgs, SegmentExport};
-use crate::serve::{self, ServeArgs};
-use crate::space::{self, SpaceArgs, SpaceExport};
-use crate::spline::{self, SplineArgs, SplineExport};
+use compound::{CompoundArgs, CompoundFlags};
+use export::{ExportSource, ExportTo};
+use lcg::LcgArgs;
+use monotone::MonotoneArgs;
+use path::{PathArgs, PathExport};
+use quasi::QuasiArgs;
+use region::RegionArgs;
+use segment::{SegmentArgs, SegmentExport};
+use serve::ServeArgs;
+use space::{SpaceArgs, SpaceExport};
+use spline::{SplineArgs, SplineExport};
 
 /// Log-aesthetic curves: segments from three control points, compound-rhythm curves of two
 /// pieces, drawable regions, their cubic Bézier replacements, curvature analysis, and space

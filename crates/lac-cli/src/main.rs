@@ -8,8 +8,10 @@
 //! plain cubic Bézier pieces (seed 001), `lac monotone` decides whether the curvature of a
 //! rational cubic is monotone, and `lac lcg` plots the curvature and the logarithmic
 //! curvature graph of Bézier pieces or of a curve and fits its slope (both graphs of a space
-//! curve). `lac path` draws a path of segments from a control polygon, G1 or G2. `lac space` solves a log-aesthetic space curve segment from four 3-D control points
-//! (seed 003).
+//! curve). `lac path` draws a path of segments from a control polygon, G1 or G2, `lac spline`
+//! a G2 spline through points, and `lac space` solves a log-aesthetic space curve segment from
+//! four 3-D control points (seed 003); `lac export` writes any of them for CAD. Each
+//! subcommand is a module of [`cli`].
 //!
 //! Every subcommand that prints curves offers `--format json|csv|svg` (and more) and
 //! `-o FILE` (`-o -`: standard output); every solving subcommand takes `--batch FILE|-`,
@@ -20,24 +22,13 @@
 
 mod batch;
 mod cli;
-mod compound;
 mod errors;
-mod export;
 mod input;
-mod lcg;
 mod limits;
 mod mesh;
-mod monotone;
 mod output;
-mod path;
 mod points;
-mod quasi;
 mod raster;
-mod region;
-mod segment;
-mod serve;
-mod space;
-mod spline;
 mod svg;
 
 use std::io::Write;

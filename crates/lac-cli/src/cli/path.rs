@@ -8,13 +8,13 @@ use clap::Args;
 use lac::Curve;
 use lac_io::json::{to_line, AnyCurve, ErrorBody, PathInput, PathReport, Xy};
 
+use crate::cli::export::{names, ExportSource, Flag, Input};
+use crate::cli::segment::check_output;
 use crate::cli::{CurveFlags, CurveFormat, CurveOutput};
 use crate::errors;
-use crate::export::{names, ExportSource, Flag, Input};
 use crate::limits::Limits;
 use crate::output::write_document;
 use crate::points::{kurbo_points, parse_polygon};
-use crate::segment::check_output;
 use crate::svg::{self, Extras};
 
 /// Arguments of `lac path`.

@@ -9,9 +9,9 @@ use lac::Curve;
 use lac_io::json::{to_line, AnyCurve, ErrorBody, SegmentInput, SegmentReport};
 
 use crate::batch;
+use crate::cli::export::{ExportSource, Flag, Input};
 use crate::cli::{CurveFlags, CurveFormat, CurveOutput};
 use crate::errors;
-use crate::export::{ExportSource, Flag, Input};
 use crate::limits::Limits;
 use crate::output::write_document;
 use crate::points::{kurbo_points, parse_points};

@@ -15,13 +15,13 @@ use lac_io::json::{
 };
 
 use crate::batch;
+use crate::cli::export::{ExportSource, Flag, Input};
+use crate::cli::segment::check_output;
 use crate::cli::{CurveFlags, CurveFormat, CurveOutput};
 use crate::errors;
-use crate::export::{ExportSource, Flag, Input};
 use crate::limits::Limits;
 use crate::output::write_document;
 use crate::points::{kurbo_points, parse_point_list};
-use crate::segment::check_output;
 use crate::svg::{self, Extras};
 
 /// Arguments of `lac compound`.

@@ -13,9 +13,9 @@ use lac_io::json::{
 };
 
 use crate::batch;
+use crate::cli::export::{names, ExportSource, Flag, Input};
 use crate::cli::CurveFlags;
 use crate::errors;
-use crate::export::{names, ExportSource, Flag, Input};
 use crate::limits::Limits;
 use crate::mesh;
 use crate::output::write_document;

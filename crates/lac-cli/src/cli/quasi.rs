@@ -11,7 +11,7 @@ use lac_io::json::{
 };
 
 use crate::batch;
-use crate::compound::{self, CompoundFlags};
+use crate::cli::compound::{self, CompoundFlags};
 use crate::errors;
 use crate::limits::Limits;
 use crate::output::write_document;

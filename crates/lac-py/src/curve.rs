@@ -2,6 +2,8 @@
 //! written once), `Segment` (seed 000 §4) and `CompoundCurve` (seeds 004 and 002), the
 //! standard form, and the results of sampling and analysis as NumPy arrays.
 
+use crate::export::AnyCurveObject;
+use lac_io::json::AnyCurve;
 use std::sync::Arc;
 
 use kurbo::Point;
@@ -250,6 +252,11 @@ fn turn_name(turn: Turn) -> &'static str {
 
 #[pymethods]
 impl PySegment {
+    /// The curve for `lac.export` (not public: `export` calls it).
+    fn _any_curve(&self) -> AnyCurveObject {
+        AnyCurveObject(AnyCurve::Segment((*self.inner).clone()))
+    }
+
     #[new]
     fn new(
         py: Python<'_>,
@@ -374,6 +381,11 @@ impl PyCompoundCurve {
 
 #[pymethods]
 impl PyCompoundCurve {
+    /// The curve for `lac.export` (not public: `export` calls it).
+    fn _any_curve(&self) -> AnyCurveObject {
+        AnyCurveObject(AnyCurve::Compound((*self.inner).clone()))
+    }
+
     #[new]
     #[pyo3(signature = (points, alpha0, alpha1, ratio = None))]
     fn new(

@@ -7,10 +7,7 @@ use lac_io::json::{AnyCurve, ErrorBody};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::curve::{PyCompoundCurve, PySegment};
 use crate::errors::{from_body, invalid};
-use crate::path::{PyPath, PySpline};
-use crate::space::PySpaceSegment;
 
 /// Write `curve` (a `Segment`, `CompoundCurve`, `Path`, `Spline` or `SpaceSegment`) as a CAD
 /// file:
@@ -48,22 +45,16 @@ pub(crate) fn export<'py>(
     } else {
         Tolerance::Absolute(tolerance)
     };
-    // A copy of the curve, so that the GIL can be released.
-    let owned = if let Ok(s) = curve.cast::<PySegment>() {
-        AnyCurve::Segment((*s.get().inner).clone())
-    } else if let Ok(c) = curve.cast::<PyCompoundCurve>() {
-        AnyCurve::Compound((*c.get().inner).clone())
-    } else if let Ok(p) = curve.cast::<PyPath>() {
-        AnyCurve::Path(p.get().0.clone())
-    } else if let Ok(s) = curve.cast::<PySpline>() {
-        AnyCurve::Spline(s.get().0.clone())
-    } else if let Ok(s) = curve.cast::<PySpaceSegment>() {
-        AnyCurve::Space(s.get().0.clone())
-    } else {
-        return Err(invalid(
-            py,
-            "curve must be a Segment, CompoundCurve, Path, Spline or SpaceSegment",
-        ));
+    // A copy of the curve, so that the GIL can be released: every curve class gives one.
+    let any = curve.call_method0("_any_curve").ok();
+    let owned = match any.as_ref().map(|c| c.cast::<AnyCurveObject>()) {
+        Some(Ok(c)) => c.get().0.clone(),
+        _ => {
+            return Err(invalid(
+                py,
+                "curve must be a Segment, CompoundCurve, Path, Spline or SpaceSegment",
+            ))
+        }
     };
     let meta = Meta::now(name);
     let written = py.detach(|| {
@@ -99,3 +90,7 @@ fn json_to_py(py: Python<'_>, value: serde_json::Value) -> PyResult<Py<PyAny>> {
         other => other.to_string().into_py_any(py),
     }
 }
+
+/// A curve of any kind, as a curve class hands it to [`export`] (`_any_curve`).
+#[pyclass(module = "lac", name = "_AnyCurve", frozen)]
+pub(crate) struct AnyCurveObject(pub(crate) AnyCurve);

@@ -2,8 +2,10 @@
 //! solved (through inflections too), warm-started from an earlier solution; G2 splines
 //! through points (`lac::Spline`).
 
+use crate::export::AnyCurveObject;
 use lac::{Alphas, Continuity, ControlPolygon};
 use lac::{Closure, Curve, SegmentChain};
+use lac_io::json::AnyCurve;
 use numpy::{PyArray1, PyArray2, PyArray3};
 use pyo3::prelude::*;
 
@@ -27,6 +29,11 @@ pub(crate) struct PyPath(pub(crate) lac::Path);
 
 #[pymethods]
 impl PyPath {
+    /// The curve for `lac.export` (not public: `export` calls it).
+    fn _any_curve(&self) -> AnyCurveObject {
+        AnyCurveObject(AnyCurve::Path(self.0.clone()))
+    }
+
     #[new]
     #[pyo3(signature = (polygon, alpha, closed = false, g2 = true, fractions = None, warm = None))]
     fn new(
@@ -148,6 +155,11 @@ pub(crate) struct PySpline(pub(crate) lac::Spline);
 
 #[pymethods]
 impl PySpline {
+    /// The curve for `lac.export` (not public: `export` calls it).
+    fn _any_curve(&self) -> AnyCurveObject {
+        AnyCurveObject(AnyCurve::Spline(self.0.clone()))
+    }
+
     #[new]
     #[pyo3(signature = (points, alpha, closed = false, ends = None))]
     fn new(

@@ -1,8 +1,10 @@
 //! Log-aesthetic space curves (seed 003 §4): a segment from four control points whose
 //! logarithmic curvature and torsion graphs are both straight.
 
+use crate::export::AnyCurveObject;
 use lac::SpaceCurve;
 use lac::{Frame, GraphPoint, Vec3};
+use lac_io::json::AnyCurve;
 use lac_io::json::SpaceInput;
 use numpy::{PyArray1, PyArray2};
 use pyo3::prelude::*;
@@ -34,6 +36,11 @@ fn vec3_rows<'py>(
 
 #[pymethods]
 impl PySpaceSegment {
+    /// The curve for `lac.export` (not public: `export` calls it).
+    fn _any_curve(&self) -> AnyCurveObject {
+        AnyCurveObject(AnyCurve::Space(self.0.clone()))
+    }
+
     #[new]
     #[pyo3(signature = (points, alpha, beta, omega = 0.0, torsion_type = 1))]
     fn new(

@@ -16,7 +16,7 @@ use crate::errors::invalid;
 const MAX_SAMPLE_VALUES: usize = 10_000_000;
 
 /// One curve's answer.
-struct Solved {
+struct Answer {
     lambda: f64,
     arc_length: f64,
     curvature_start: f64,
@@ -25,14 +25,14 @@ struct Solved {
     samples: Vec<Sample>,
 }
 
-fn solve_one(points: [Point; 3], alpha: f64, samples: usize) -> Result<Solved, ErrorBody> {
+fn solve_one(points: [Point; 3], alpha: f64, samples: usize) -> Result<Answer, ErrorBody> {
     let segment = Segment::from_control_points(points, alpha)?;
     let samples = if samples >= 2 {
         segment.sample_by_arc_length(samples)?
     } else {
         Vec::new()
     };
-    Ok(Solved {
+    Ok(Answer {
         lambda: segment.lambda(),
         arc_length: segment.arc_length(),
         curvature_start: segment.signed_curvature_start(),
@@ -171,7 +171,7 @@ pub(crate) fn solve_segments(
                 .map_err(|e| PyRuntimeError::new_err(format!("cannot start {k} threads: {e}")))?,
         ),
     };
-    let results: Vec<Result<Solved, ErrorBody>> = py.detach(|| {
+    let results: Vec<Result<Answer, ErrorBody>> = py.detach(|| {
         let parallel = || {
             data.par_chunks_exact(6)
                 .zip(alpha.par_iter())
@@ -185,7 +185,7 @@ pub(crate) fn solve_segments(
         }
     });
 
-    let column = |f: &dyn Fn(&Solved) -> f64| -> Vec<f64> {
+    let column = |f: &dyn Fn(&Answer) -> f64| -> Vec<f64> {
         results
             .iter()
             .map(|r| r.as_ref().map_or(f64::NAN, f))

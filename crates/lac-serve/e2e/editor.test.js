@@ -13,7 +13,7 @@ import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { writeFileSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { startServer, startBrowser, LAC_BIN, ARTIFACTS } from './harness.js';
+import { startServer, startBrowser, servePage, LAC_BIN, ARTIFACTS } from './harness.js';
 
 const STEPS = 220;
 const SAMPLES = 257;
@@ -55,6 +55,7 @@ const shown = (x) => String(+x.toPrecision(8));
 
 async function openEditor(fragment = '', options = {}) {
   const context = await chrome.browser.newContext({ viewport: { width: 1280, height: 800 }, ...options });
+  await servePage(context);
   const page = await context.newPage();
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));

@@ -2,9 +2,9 @@
 // Chromium headless through playwright-core (never a downloaded browser).
 
 import { spawn } from 'node:child_process';
-import { mkdtempSync, mkdirSync } from 'node:fs';
+import { mkdtempSync, mkdirSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join, resolve, dirname } from 'node:path';
+import { join, resolve, dirname, extname } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 
@@ -72,4 +72,26 @@ export async function startBrowser() {
     browser,
     close: () => browser.close(),
   };
+}
+
+/** $LAC_WEB: a directory to serve the page from instead of the binary's copy (`lac serve`
+ * embeds web/ when it is compiled): to try a change of the page without rebuilding, or to run
+ * the tests against another version of it (e.g. `git worktree` of an older commit). */
+export const WEB_DIR = process.env.LAC_WEB ? resolve(process.env.LAC_WEB) : null;
+
+const MEDIA = { '.js': 'text/javascript', '.css': 'text/css', '.svg': 'image/svg+xml', '.html': 'text/html' };
+
+/** With $LAC_WEB, answer the page's requests in `context` (`/` and `/app/…`) from it. */
+export async function servePage(context) {
+  if (!WEB_DIR) return;
+  await context.route((url) => url.pathname === '/' || url.pathname.startsWith('/app/'), (route) => {
+    const { pathname } = new URL(route.request().url());
+    const file = pathname === '/' ? 'index.html' : pathname.slice('/app/'.length);
+    try {
+      const body = readFileSync(join(WEB_DIR, file));
+      route.fulfill({ status: 200, body, contentType: MEDIA[extname(file)] || 'application/octet-stream' });
+    } catch {
+      route.fulfill({ status: 404, body: 'not found' });
+    }
+  });
 }

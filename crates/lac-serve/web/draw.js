@@ -3,6 +3,7 @@
 // (`geometry`) and shared with the SVG export.
 
 import { mapTransform } from './view.js';
+import { labelPlaces, inBox } from './layout.js';
 
 export const COLORS = {
   curve: '#1b1b1b',
@@ -22,27 +23,35 @@ export const COLORS = {
 /** The left normal of a tangent direction θ. */
 const normal = (theta) => [-Math.sin(theta), Math.cos(theta)];
 
+/** The evolute is drawn where |κ| is at least this share of the curve's largest |κ|: beyond,
+ * its points run off towards infinity (where κ → 0: at an inflection, along a nearly straight
+ * stretch) and say nothing of the curve. */
+export const EVOLUTE_CUT = 0.1;
+
+/** Whether sample `r`'s centre of curvature is drawn, the largest |κ| being `kmax`. */
+export const evoluteKept = (r, kmax) => r.kappa !== 0 && Math.abs(r.kappa) >= EVOLUTE_CUT * kmax;
+
 /**
  * What is drawn of a list of samples {s, x, y, theta, kappa}: the curve's points, the comb's
  * teeth (from each point away from the centre of curvature, κ × combScale long) and the
- * evolute P + N/κ, cut where the radius is beyond `far` (an inflection-free LAC's evolute
- * runs off to infinity where κ → 0).
+ * evolute P + N/κ in runs, cut where |κ| is small (EVOLUTE_CUT).
  */
-export function geometry(samples, combScale, far) {
+export function geometry(samples, combScale) {
   const curve = samples.map((r) => [r.x, r.y]);
   const teeth = samples.map((r) => {
     const [nx, ny] = normal(r.theta);
     return [[r.x, r.y], [r.x - nx * r.kappa * combScale, r.y - ny * r.kappa * combScale]];
   });
+  const kmax = samples.reduce((m, r) => Math.max(m, Math.abs(r.kappa)), 0);
   const evolute = [];
   let run = [];
   for (const r of samples) {
-    const rho = r.kappa === 0 ? Infinity : 1 / r.kappa;
-    if (!(Math.abs(rho) < far)) {
+    if (!evoluteKept(r, kmax)) {
       if (run.length > 1) evolute.push(run);
       run = [];
       continue;
     }
+    const rho = 1 / r.kappa;
     const [nx, ny] = normal(r.theta);
     run.push([r.x + nx * rho, r.y + ny * rho]);
   }
@@ -151,12 +160,14 @@ function grid(ctx, view, width, height) {
 
 /**
  * Draw the plane scene:
- * {points, samples, stale, show, combScale, region: {image, size, extent, toWorld} | null,
+ * {points, samples, stale, show, combScale,
+ *  region: {image, size, extent, toWorld, wide: {image, size, extent} | null} | null,
  *  joint, joints: [[x, y]] | null, lines: [[[x, y], [x, y]]] | null, closed,
  *  pieces: [{points, weights, monotone, proven}] | null, pieceSamples, active, hover}.
  * `joints` are a path's joints (dots), `lines` its straight pieces through inflections, and
  * `closed` closes its control polygon.
  * `samples` are the last good curve's; `stale` draws them faintly (the input is not drawable).
+ * Returns what the page tells of the drawing: {evolute: 'off' | 'visible' | 'outside'}.
  */
 export function drawPlane(ctx, view, width, height, scene) {
   ctx.clearRect(0, 0, width, height);
@@ -164,7 +175,29 @@ export function drawPlane(ctx, view, width, height, scene) {
   ctx.fillRect(0, 0, width, height);
   grid(ctx, view, width, height);
   const { show } = scene;
-  const far = 4 * Math.max(width, height) / view.scale;
+  // What the page tells of the evolute: 'off' (not asked, or nothing to draw), 'visible',
+  // or 'outside' the view.
+  let evolute = 'off';
+
+  if (scene.region && scene.region.wide) {
+    // The map around the region's own: outside its square only (the canvas's rectangle less
+    // that square, even-odd), where it is coarser.
+    const { extent: [x0, x1, y0, y1], toWorld, wide } = scene.region;
+    ctx.save();
+    ctx.beginPath();
+    ctx.rect(0, 0, width, height);
+    [[x0, y1], [x1, y1], [x1, y0], [x0, y0]].forEach((p, i) => {
+      const [x, y] = view.toScreen(toWorld(p));
+      if (i) ctx.lineTo(x, y); else ctx.moveTo(x, y);
+    });
+    ctx.closePath();
+    ctx.clip('evenodd');
+    const [a, b, c, d, e, f] = mapTransform(view, wide.size, wide.extent, toWorld);
+    ctx.transform(a, b, c, d, e, f);
+    ctx.imageSmoothingEnabled = true;
+    ctx.drawImage(wide.image, 0, 0);
+    ctx.restore();
+  }
 
   if (scene.region) {
     const { image, size, extent, toWorld } = scene.region;
@@ -180,7 +213,7 @@ export function drawPlane(ctx, view, width, height, scene) {
 
   const samples = scene.samples;
   if (samples && samples.length) {
-    const g = geometry(samples, scene.combScale, far);
+    const g = geometry(samples, scene.combScale);
     if (scene.stale) {
       ctx.strokeStyle = COLORS.faint;
       ctx.lineWidth = 2;
@@ -188,11 +221,19 @@ export function drawPlane(ctx, view, width, height, scene) {
       polyline(ctx, view, g.curve);
       ctx.setLineDash([]);
     } else {
-      if (show.evolute) {
+      if (show.evolute && g.evolute.length) {
+        // Only what lies in the view (and a little around it, for the dashes' sake).
+        const runs = g.evolute.map((run) => run.map((p) => view.toScreen(p)));
+        const drawn = inBox(runs, [-50, width + 50, -50, height + 50]);
+        evolute = inBox(drawn, [0, width, 0, height]).length ? 'visible' : 'outside';
         ctx.strokeStyle = COLORS.evolute;
         ctx.lineWidth = 1.2;
         ctx.setLineDash([5, 3]);
-        for (const run of g.evolute) polyline(ctx, view, run);
+        for (const run of drawn) {
+          ctx.beginPath();
+          run.forEach(([x, y], i) => (i ? ctx.lineTo(x, y) : ctx.moveTo(x, y)));
+          ctx.stroke();
+        }
         ctx.setLineDash([]);
       }
       if (show.comb && !scene.pieces) combOf(ctx, view, g.teeth, COLORS.comb, COLORS.combEdge);
@@ -215,7 +256,7 @@ export function drawPlane(ctx, view, width, height, scene) {
     scene.pieces.forEach((piece, k) => {
       const color = piece.monotone === 'not_monotone' || !piece.proven ? COLORS.bad : COLORS.pieces[k % 2];
       const rows = scene.pieceSamples[k] || [];
-      const g = geometry(rows, scene.combScale, far);
+      const g = geometry(rows, scene.combScale);
       if (show.comb) combOf(ctx, view, g.teeth, color + '66', color);
       ctx.strokeStyle = color;
       ctx.lineWidth = 3.2;
@@ -263,8 +304,10 @@ export function drawPlane(ctx, view, width, height, scene) {
     ctx.lineWidth = 1;
     polyline(ctx, view, scene.closed ? [...scene.points, scene.points[0]] : scene.points);
   }
-  scene.points.forEach((p, i) => {
-    const [x, y] = view.toScreen(p);
+  const onScreen = scene.points.map((p) => view.toScreen(p));
+  ctx.font = '12px system-ui, sans-serif';
+  const labels = labelPlaces(ctx, onScreen, onScreen.map((_, i) => `P${i}`), 9, [width, height]);
+  onScreen.forEach(([x, y], i) => {
     ctx.beginPath();
     ctx.arc(x, y, i === scene.active ? 8 : 6.5, 0, 2 * Math.PI);
     ctx.fillStyle = i === scene.active ? '#ffe08a' : '#fff';
@@ -273,8 +316,7 @@ export function drawPlane(ctx, view, width, height, scene) {
     ctx.strokeStyle = scene.stale ? COLORS.bad : '#333';
     ctx.stroke();
     ctx.fillStyle = '#333';
-    ctx.font = '12px system-ui, sans-serif';
-    ctx.fillText(`P${i}`, x + 9, y - 9);
+    ctx.fillText(`P${i}`, labels[i][0], labels[i][1]);
   });
 
   if (scene.hover) {
@@ -285,4 +327,5 @@ export function drawPlane(ctx, view, width, height, scene) {
     ctx.arc(x, y, 5, 0, 2 * Math.PI);
     ctx.stroke();
   }
+  return { evolute };
 }

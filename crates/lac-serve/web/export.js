@@ -11,7 +11,7 @@ const path = (points) => points.map(([x, y], i) => `${i ? 'L' : 'M'}${f(x)} ${f(
 /** An SVG of a plane curve: curve, comb, evolute, polygon and (quasi) Bézier pieces, in the
  * design's coordinates (y up), with the numbers that made it in a comment. */
 export function planeSvg({ points, samples, combScale, show, pieces, pieceSamples, joint, title }) {
-  const g = geometry(samples, combScale, Infinity);
+  const g = geometry(samples, combScale);
   const all = [...points, ...g.curve, ...(show.comb ? g.teeth.map(([, q]) => q) : [])];
   const [x0, x1, y0, y1] = bounds(all);
   const margin = 0.05 * Math.max(x1 - x0, y1 - y0);
@@ -25,7 +25,7 @@ export function planeSvg({ points, samples, combScale, show, pieces, pieceSample
   out.push(`<g transform="translate(0 ${f(box[1] * 2 + box[3])}) scale(1 -1)" fill="none" stroke-linecap="round" stroke-linejoin="round">`);
   const evolute = g.evolute.filter((run) => run.every(([x, y]) => x > box[0] - box[2] && x < box[0] + 2 * box[2] && y > box[1] - box[3] && y < box[1] + 2 * box[3]));
   if (show.evolute) for (const run of evolute) out.push(`<path d="${path(run)}" stroke="${COLORS.evolute}" stroke-width="${f(stroke)}" stroke-dasharray="${f(stroke * 4)} ${f(stroke * 3)}"/>`);
-  const combs = pieces ? pieces.map((_, k) => geometry(pieceSamples[k], combScale, Infinity)) : [g];
+  const combs = pieces ? pieces.map((_, k) => geometry(pieceSamples[k], combScale)) : [g];
   if (show.comb) {
     combs.forEach((c, k) => {
       const color = pieces ? COLORS.pieces[k % 2] : COLORS.combEdge;

@@ -70,7 +70,7 @@ function endPointer(e) {
   if (state.pan && state.pan.pointerId === e.pointerId) {
     state.pan = null;
     canvas.classList.remove('grab');
-    if (state.show.region === 'always' && mode().regionInView) updateRegion();
+    if (state.show.region === 'always') updateRegion();
   }
 }
 
@@ -91,13 +91,13 @@ export function listen() {
         const p = [roundToView(x), roundToView(y)];
         const at = insertionIndex(p);
         insertPoint(at, p);
-        state.drag = { index: at, pointerId: e.pointerId };
+        state.drag = { index: at, pointerId: e.pointerId, combScale: state.combScale };
         e.preventDefault();
         return;
       }
     }
     if (index !== null) {
-      state.drag = { index, pointerId: e.pointerId };
+      state.drag = { index, pointerId: e.pointerId, combScale: state.combScale };
       state.selected = index;
       showHover(null);
       updateRegion();
@@ -160,7 +160,7 @@ export function listen() {
 export const stageInput = {
   drag(index, point, time, scale) {
     if (!state.drag) {
-      state.drag = { index, pointerId: null };
+      state.drag = { index, pointerId: null, combScale: state.combScale };
       state.selected = index;
     }
     if (point) {

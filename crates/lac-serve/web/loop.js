@@ -3,7 +3,7 @@
 
 import { post } from './api.js';
 import { request } from './design.js';
-import { state, probe, mode, design } from './state.js';
+import { state, probe, mode, design, frame } from './state.js';
 import { updateRegion } from './region.js';
 import { render, fitView } from './render.js';
 import { syncPanel } from './panel.js';
@@ -44,7 +44,8 @@ async function send() {
     if (result.ok) {
       state.answer = result.ok;
       state.error = null;
-      if (!state.drag) autoCombScale();
+      if (state.drag) keepCombInView();
+      else autoCombScale();
       if (state.fitPending) {
         state.fitPending = false;
         fitView();
@@ -54,7 +55,7 @@ async function send() {
     }
     state.hover = null;
     if (state.drag) syncPanel();
-    if (!state.drag) updateRegion();
+    updateRegion();
     render();
     if (started !== null) {
       const drawn = performance.now();
@@ -68,6 +69,13 @@ async function send() {
     queued = false;
     send();
   }
+}
+
+/** While a point is dragged: the comb's scale at the drag's start, or less where the teeth
+ * would leave the view (toward a hook, where κ grows without end). */
+export function keepCombInView() {
+  const start = state.drag.combScale ?? state.combScale;
+  state.combScale = Math.min(start, mode().combLimit(frame()));
 }
 
 /** Comb teeth at most a fifth of the drawing's size. */

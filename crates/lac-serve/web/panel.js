@@ -1,11 +1,12 @@
 // The panel: a slider and a number field for every parameter of the mode, number fields for
 // the points (and, where the polygon grows, buttons to add and remove points); the display
-// options.
+// options. A field's text that the curve cannot use is marked, not used (fields.js).
 
 import { state, $, mode, design } from './state.js';
 import { commit, insertPoint, removePoint, nextPoint } from './edit.js';
 import { solve } from './loop.js';
 import { render } from './render.js';
+import { numberField, fieldNote, showValue } from './fields.js';
 
 function paramRow(param) {
   const row = document.createElement('div');
@@ -48,29 +49,30 @@ function paramRow(param) {
   range.step = param.step;
   range.dataset.slider = param.key;
   range.setAttribute('aria-label', `${param.label} slider`);
-  const field = document.createElement('input');
-  field.type = 'number';
-  field.step = 'any';
-  field.id = `param-${param.key}`;
+  const field = numberField({
+    id: `param-${param.key}`,
+    name: param.label,
+    range: param.valid,
+    step: param.step,
+    log: param.log,
+    inUse: () => design()[param.key],
+    onValue: (value, time) => {
+      design()[param.key] = value;
+      range.value = String(param.log ? Math.log10(value) : value);
+      solve(time);
+    },
+    onCommit: () => commit(),
+  });
   field.dataset.param = param.key;
   range.addEventListener('input', (e) => {
     const v = Number(range.value);
     const value = param.log ? +(10 ** v).toPrecision(3) : v;
     design()[param.key] = value;
-    field.value = String(value);
+    showValue(field, value);
     solve(e.timeStamp);
   });
   range.addEventListener('change', () => commit());
-  field.addEventListener('input', (e) => {
-    if (field.value.trim() === '') return;
-    const value = Number(field.value);
-    if (!Number.isFinite(value)) return;
-    design()[param.key] = value;
-    range.value = String(param.log ? Math.log10(value) : value);
-    solve(e.timeStamp);
-  });
-  field.addEventListener('change', () => commit());
-  row.append(range, field);
+  row.append(range, field, fieldNote(`note-param-${param.key}`, [field]));
   return row;
 }
 
@@ -86,24 +88,23 @@ export function buildPanel() {
     const name = document.createElement('span');
     name.textContent = `P${i}`;
     row.append(name);
-    p.forEach((_, axis) => {
-      const field = document.createElement('input');
-      field.type = 'number';
-      field.step = 'any';
+    const fields = p.map((_, axis) => {
+      const field = numberField({
+        ariaLabel: `P${i} ${'xyz'[axis]}`,
+        name: `P${i} ${'xyz'[axis]}`,
+        inUse: () => design().points[i][axis],
+        onValue: (value, time) => {
+          design().points[i][axis] = value;
+          render();
+          solve(time);
+        },
+        onCommit: () => commit(),
+      });
       field.dataset.point = String(i);
       field.dataset.axis = String(axis);
-      field.setAttribute('aria-label', `P${i} ${'xyz'[axis]}`);
-      field.addEventListener('input', (e) => {
-        if (field.value.trim() === '') return;
-        const value = Number(field.value);
-        if (!Number.isFinite(value)) return;
-        design().points[i][axis] = value;
-        render();
-        solve(e.timeStamp);
-      });
-      field.addEventListener('change', () => commit());
-      row.append(field);
+      return field;
     });
+    row.append(...fields);
     if (!m.count) {
       const remove = document.createElement('button');
       remove.type = 'button';
@@ -115,6 +116,7 @@ export function buildPanel() {
       remove.addEventListener('click', () => removePoint(i));
       row.append(remove);
     }
+    row.append(fieldNote(`note-point-${i}`, fields));
     return row;
   });
   if (!m.count) {
@@ -139,6 +141,7 @@ export function syncPanel() {
     if (el === focused) continue;
     const value = d[el.dataset.param];
     if (el.type === 'checkbox') el.checked = !!value;
+    else if (el.classList.contains('num')) showValue(el, value);
     else el.value = String(value);
   }
   for (const param of mode().params) {
@@ -147,7 +150,7 @@ export function syncPanel() {
   }
   for (const el of document.querySelectorAll('[data-point]')) {
     if (el === focused) continue;
-    el.value = String(d.points[Number(el.dataset.point)][Number(el.dataset.axis)]);
+    showValue(el, d.points[Number(el.dataset.point)][Number(el.dataset.axis)]);
   }
   $('show-comb').checked = state.show.comb;
   $('show-evolute').checked = state.show.evolute;

@@ -34,13 +34,17 @@ const label = (t) => (Math.abs(t) >= 1e4 || (Math.abs(t) < 1e-3 && t !== 0) ? t.
 
 /**
  * Draw series of [x, y] points (null y: a gap) on `canvas`.
- * options: {title, xlabel, ylabel, series: [{points, color, width, dash, label}],
+ * options: {title, xlabel, ylabel (text, or lines [{text, color}] side by side),
+ *           series: [{points, color, width, dash, label}],
  *           vlines: [{x, color}], marker: [x, y] | null, empty: text when there is nothing}
  * Returns the plot's mapping {toX, toY} for tests and hover marks.
  */
 export function linePlot(canvas, options) {
   const { ctx, width, height } = prepare(canvas);
-  const pad = { left: 46, right: 10, top: 20, bottom: 30 };
+  // The y axis's label: one line, or lines side by side (each in its series' colour).
+  const ylines = (Array.isArray(options.ylabel) ? options.ylabel : [options.ylabel || ''])
+    .map((l) => (typeof l === 'string' ? { text: l } : l));
+  const pad = { left: 46 + 12 * (ylines.length - 1), right: 10, top: 20, bottom: 30 };
   ctx.font = '11px system-ui, sans-serif';
   ctx.fillStyle = '#222';
   ctx.textBaseline = 'alphabetic';
@@ -84,11 +88,22 @@ export function linePlot(canvas, options) {
   ctx.strokeRect(pad.left, pad.top, w, h);
   ctx.textAlign = 'center';
   ctx.fillText(options.xlabel || '', pad.left + w / 2, height - 4);
-  ctx.save();
-  ctx.translate(11, pad.top + h / 2);
-  ctx.rotate(-Math.PI / 2);
-  ctx.fillText(options.ylabel || '', 0, 0);
-  ctx.restore();
+  // Each line fits the plot's height (a smaller font when it would not).
+  ylines.forEach((line, k) => {
+    ctx.save();
+    ctx.translate(11 + 12 * k, pad.top + h / 2);
+    ctx.rotate(-Math.PI / 2);
+    let size = 11;
+    ctx.font = `${size}px system-ui, sans-serif`;
+    while (size > 8 && ctx.measureText(line.text).width > h) {
+      size -= 0.5;
+      ctx.font = `${size}px system-ui, sans-serif`;
+    }
+    ctx.fillStyle = line.color || '#555';
+    ctx.fillText(line.text, 0, 0);
+    ctx.restore();
+  });
+  ctx.font = '11px system-ui, sans-serif';
 
   ctx.save();
   ctx.beginPath();

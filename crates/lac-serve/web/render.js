@@ -20,7 +20,10 @@ export function render() {
 
 /** The drawing alone. */
 export function renderStage() {
-  mode().draw(frame());
+  const drawn = mode().draw(frame()) || {};
+  // The evolute is asked for but lies outside the view: say so beside its box.
+  const note = $('evolute-note');
+  note.hidden = drawn.evolute !== 'outside';
 }
 
 /** Fit the mode's view(s) to the design and its curve. */
@@ -40,7 +43,13 @@ function renderMessage() {
   const problem = state.error || state.notice;
   box.hidden = !problem;
   fix.hidden = true;
-  if (!problem) return;
+  if (problem) fillMessage(problem);
+  // Never over a control point (the mode knows where they are).
+  mode().placeMessage(box, frame());
+}
+
+function fillMessage(problem) {
+  const fix = $('message-fix');
   $('message-title').textContent = problem.title || TITLES[problem.kind] || 'Cannot draw:';
   // The library's messages for undrawable input start with "not drawable: ", as the title does.
   let text = problem.message.replace(/^not drawable: /, '');

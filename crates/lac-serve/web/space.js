@@ -3,7 +3,8 @@
 
 import { View } from './view.js';
 import { prepare } from './plots.js';
-import { COLORS } from './draw.js';
+import { COLORS, evoluteKept } from './draw.js';
+import { labelPlaces, inBox, combRoom } from './layout.js';
 
 /** Which coordinates each orthographic view shows, across and up. */
 const AXES = { top: [0, 1], front: [0, 2], side: [1, 2] };
@@ -34,6 +35,7 @@ export class SpaceViews {
     this.views = { top: new View(), front: new View(), side: new View() };
     this.scene = null;
     this.drag = null;
+    this.inset = 0; // pixels at the top of the perspective view taken by the message
     for (const [name, canvas] of Object.entries(canvases)) this.listen(name, canvas);
   }
 
@@ -77,21 +79,38 @@ export class SpaceViews {
     return [w / 2 + k * X, h / 2 - k * Z, Y];
   }
 
+  /** The perspective view's projection of `p` in its `w` × `h` canvas, below the inset. */
+  perspective(p, w, h) {
+    const [x, y, depth] = this.project(p, w, h - this.inset);
+    return [x, y + this.inset, depth];
+  }
+
+  /** The message takes `pixels` at the top of the perspective view: draw it below them. */
+  setInset(pixels) {
+    if (pixels === this.inset) return;
+    this.inset = pixels;
+    this.drawView('3d');
+  }
+
   /**
    * Draw {points, samples: [{s, x, y, z, kappa, tau, n}], stale, show, combScale, active,
    * hover}.
    */
   draw(scene) {
     this.scene = scene;
-    for (const name of Object.keys(this.canvases)) this.drawView(name);
+    const told = Object.keys(this.canvases).map((name) => this.drawView(name));
+    const evolute = told.includes('visible') ? 'visible' : told.includes('outside') ? 'outside' : 'off';
+    return { evolute };
   }
 
+  /** Draw view `name`; returns what it shows of the evolute ('off', 'visible', 'outside'). */
   drawView(name) {
     const scene = this.scene;
-    if (!scene || !this.center) return;
+    if (!scene || !this.center) return 'off';
+    let evolute = 'off';
     const { ctx, width, height } = prepare(this.canvases[name]);
     const to = name === '3d'
-      ? (p) => this.project(p, width, height)
+      ? (p) => this.perspective(p, width, height)
       : (p) => this.views[name].toScreen([p[AXES[name][0]], p[AXES[name][1]]]);
     const line = (points) => {
       ctx.beginPath();
@@ -112,21 +131,31 @@ export class SpaceViews {
         ctx.setLineDash([]);
       } else {
         if (scene.show.evolute) {
-          // Centres of curvature P + N/κ, cut where the radius runs off.
-          const far = 4 * this.radius;
-          ctx.strokeStyle = COLORS.evolute;
-          ctx.lineWidth = 1.2;
-          ctx.setLineDash([5, 3]);
+          // Centres of curvature P + N/κ, cut where κ is small (draw.js), in view.
+          const kmax = scene.samples.reduce((m, r) => Math.max(m, Math.abs(r.kappa)), 0);
+          const runs = [];
           let run = [];
           for (const r of scene.samples) {
-            const rho = r.kappa > 0 ? 1 / r.kappa : Infinity;
-            if (rho < far) run.push([r.x + r.n[0] * rho, r.y + r.n[1] * rho, r.z + r.n[2] * rho]);
+            const rho = 1 / r.kappa;
+            const q = evoluteKept(r, kmax) ? to([r.x + r.n[0] * rho, r.y + r.n[1] * rho, r.z + r.n[2] * rho]) : null;
+            // In perspective, not what lies behind the eye (3.2 radii from the centre).
+            if (q && !(q[2] < -3 * this.radius)) run.push(q);
             else {
-              if (run.length > 1) line(run);
+              if (run.length > 1) runs.push(run);
               run = [];
             }
           }
-          if (run.length > 1) line(run);
+          if (run.length > 1) runs.push(run);
+          const drawn = inBox(runs, [-50, width + 50, -50, height + 50]);
+          if (runs.length) evolute = inBox(drawn, [0, width, 0, height]).length ? 'visible' : 'outside';
+          ctx.strokeStyle = COLORS.evolute;
+          ctx.lineWidth = 1.2;
+          ctx.setLineDash([5, 3]);
+          for (const part of drawn) {
+            ctx.beginPath();
+            part.forEach(([x, y], i) => (i ? ctx.lineTo(x, y) : ctx.moveTo(x, y)));
+            ctx.stroke();
+          }
           ctx.setLineDash([]);
         }
         if (scene.show.comb) {
@@ -156,8 +185,10 @@ export class SpaceViews {
       ctx.lineWidth = 1;
       line(scene.points);
     }
-    scene.points.forEach((p, i) => {
-      const [x, y] = to(p);
+    const onScreen = scene.points.map(to);
+    ctx.font = '11px system-ui, sans-serif';
+    const labels = labelPlaces(ctx, onScreen, onScreen.map((_, i) => `P${i}`), 8, [width, height]);
+    onScreen.forEach(([x, y], i) => {
       ctx.beginPath();
       ctx.arc(x, y, i === scene.active ? 7.5 : 6, 0, 2 * Math.PI);
       ctx.fillStyle = i === scene.active ? '#ffe08a' : '#fff';
@@ -166,8 +197,7 @@ export class SpaceViews {
       ctx.lineWidth = 1.5;
       ctx.stroke();
       ctx.fillStyle = '#333';
-      ctx.font = '11px system-ui, sans-serif';
-      ctx.fillText(`P${i}`, x + 8, y - 8);
+      ctx.fillText(`P${i}`, labels[i][0], labels[i][1]);
     });
     if (scene.hover) {
       const [x, y] = to([scene.hover.x, scene.hover.y, scene.hover.z]);
@@ -177,6 +207,7 @@ export class SpaceViews {
       ctx.arc(x, y, 5, 0, 2 * Math.PI);
       ctx.stroke();
     }
+    return evolute;
   }
 
   /** The perspective view's floor: the curve's shadow and the x, y, z axes at the box's
@@ -206,6 +237,22 @@ export class SpaceViews {
     });
   }
 
+  /** The largest comb scale at which the teeth of `samples` stay in the top, front and side
+   * views (layout.js). */
+  combLimit(samples) {
+    let room = Infinity;
+    for (const [name, [a, b]] of Object.entries(AXES)) {
+      const v = this.views[name];
+      const c = this.canvases[name];
+      const teeth = samples.map((r) => {
+        const p = [r.x, r.y, r.z];
+        return [v.toScreen([p[a], p[b]]), [-r.n[a] * r.kappa * v.scale, r.n[b] * r.kappa * v.scale]];
+      });
+      room = Math.min(room, combRoom(teeth, c.clientWidth, c.clientHeight));
+    }
+    return room;
+  }
+
   /** Index of the control point within `radius` pixels of (sx, sy) in view `name`. */
   hit(name, sx, sy, radius) {
     if (!this.scene) return null;
@@ -226,7 +273,7 @@ export class SpaceViews {
     let bestDistance = 16;
     for (const r of samples) {
       const [x, y] = name === '3d'
-        ? this.project([r.x, r.y, r.z], this.canvases[name].clientWidth, this.canvases[name].clientHeight)
+        ? this.perspective([r.x, r.y, r.z], this.canvases[name].clientWidth, this.canvases[name].clientHeight)
         : this.views[name].toScreen([[r.x, r.y, r.z][AXES[name][0]], [r.x, r.y, r.z][AXES[name][1]]]);
       const d = Math.hypot(x - sx, y - sy);
       if (d < bestDistance) { best = r; bestDistance = d; }

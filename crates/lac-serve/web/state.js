@@ -15,7 +15,7 @@ export const state = {
   answer: null, // the last good answer in this mode
   error: null, // the latest answer's error, when it failed
   notice: null, // a message of the page's own (a bad link or file)
-  drag: null, // {index, pointerId} while a control point is dragged
+  drag: null, // {index, pointerId, combScale: the comb's scale when it started} while a control point is dragged
   pan: null, // {x, y, pointerId} while the view is panned
   selected: 1, // the control point dragged last
   hover: null, // {sample, index} under the pointer

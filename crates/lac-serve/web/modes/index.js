@@ -8,25 +8,32 @@
 //   dims, count        numbers per control point; how many points (null: at least `minCount`,
 //   minCount           the polygon grows and shrinks; its design may say `closed`, whether
 //                      a clicked point may go on the closing leg, edit.js)
-//   params             the panel's fields: {key, label, min, max, step, log, boolean, choices, hint}
+//   params             the panel's fields: {key, label, min, max, step, log, boolean, choices, hint,
+//                      valid}: min and max are the slider's, `valid` the values the field
+//                      accepts ({above, from, below, to}, fields.js; any finite number if absent)
 //   defaults           the starting design: {points, ...params}
 //   fileRank,          a file without "mode" is the design of the first mode, by fileRank,
 //   recognises(json)   that recognises it; adopt(json, design) reads what such a file says
 //   adopt(json, d)     in words of its own
-//   region(frame)      the drawable region's request {key, path, body, canonical}, or null
+//   region(frame)      the drawable region's request {key, path, body, canonical, wide}, or
+//                      null (`wide`: the request of a map around a canonical one, or null)
 //   regionInView       its region covers the visible plane: asked again when the view moves
 // Its functions (a plane mode takes them from ./plane.js and overrides what differs):
 //   init(input)        once at start: a mode with views of its own wires them to `input`
 //   request(body)      the API request from a copy of the design (with `samples`)
 //   cad(body)          the exact curve's fields of the /api/export request, from a copy
 //   samples(answer)    the curve's samples {s, x, y, [z], theta, kappa, ...}, or []
-//   draw(frame)        draw the design and the answer on its stage
+//   draw(frame)        draw the design and the answer on its stage; returns {evolute: 'off' |
+//                      'visible' | 'outside'}, what the page says of the evolute
 //   fit(frame)         fit its view(s) to the design and the curve
 //   screenOf(frame, i, view)  where control point i is in the window (tests)
 //   readout(answer, add, design)  the panel's numbers: add(label, key, value, text?)
 //   table(answer, design)  an element under them (or null)
 //   plots(answer, {hover, error})  {kplot, lcg}: the options of the two plots (plots.js)
 //   fix(error)         a button for a refusal: {label, apply(design)}, or null
+//   combLimit(frame)   the largest comb scale at which the teeth stay in view (while dragging)
+//   placeMessage(box, frame)  put the message (#message, shown or hidden) where it covers no
+//                      control point (banner.js)
 //   svg({design, answer, combScale, show, title})  the SVG export
 // `frame` is what the page holds now (state.js).
 
@@ -52,6 +59,8 @@ const DEFAULTS = {
   samples: (answer) => (answer && answer.samples) || [],
   table: () => null,
   fix: () => null,
+  combLimit: () => Infinity,
+  placeMessage: () => {},
 };
 
 /** The modes by name. */

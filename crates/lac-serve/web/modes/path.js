@@ -5,6 +5,11 @@
 import { plane, planePlots } from './plane.js';
 import { fmt } from '../format.js';
 
+/** How far a segment's line in the graph goes in ln ρ: until its curvature is a twentieth of
+ * its largest. A segment that runs into an inflection has κ → 0 there, and ln ρ → ∞ (28 and
+ * more in doubles): drawn whole, its line would squeeze every other segment's to a stub. */
+const LCG_SPAN = Math.log(20);
+
 export default {
   ...plane,
   name: 'path',
@@ -57,7 +62,7 @@ export default {
   },
 
   /** The curvature plot of the samples' κ, the joints marked; the graph is one line per
-   * segment (`answer.lcg`). */
+   * segment (`answer.lcg`), cut where κ → 0 (LCG_SPAN). */
   plots(a, where) {
     const plot = a ? { points: a.samples.map((r) => ({ s: r.s, kappa: r.kappa, log_rho: null, log_lcg: null })), fit: null } : null;
     const series = [];
@@ -67,12 +72,17 @@ export default {
     if (plot) {
       series.push({ points: plot.points.map((p) => [p.s, p.kappa]), color: '#1f4e9c', label: '' });
       for (const j of a.joints) vlines.push({ x: j.s });
+      let cut = false;
       a.lcg.forEach((row, k) => {
         if (!row) return;
         const { alpha, intercept, log_rho: [x0, x1] } = row;
-        graph.push({ points: [[x0, alpha * x0 + intercept], [x1, alpha * x1 + intercept]], color: k % 2 ? '#e69138' : '#1f4e9c', width: 2, label: '' });
+        const lo = Math.min(x0, x1);
+        const hi = Math.min(Math.max(x0, x1), lo + LCG_SPAN);
+        cut ||= hi < Math.max(x0, x1);
+        graph.push({ points: [[lo, alpha * lo + intercept], [hi, alpha * hi + intercept]], color: k % 2 ? '#e69138' : '#1f4e9c', width: 2, label: '' });
       });
-      title = `LCG: one line per segment, slopes ${[...new Set(a.segments.map((g) => fmt(g.alpha)))].join(', ')}`;
+      const slopes = [...new Set(a.segments.map((g) => fmt(g.alpha)))].join(', ');
+      title = cut ? `LCG per segment, slopes ${slopes} (cut where κ → 0)` : `LCG: one line per segment, slopes ${slopes}`;
     }
     return planePlots({ plot, series, graph, vlines, title }, where);
   },

@@ -9,13 +9,50 @@ import { drawPlane, geometry, sizeCanvas } from '../draw.js';
 import { bounds, similarity } from '../view.js';
 import { planeSvg } from '../export.js';
 import { fmt, deg } from '../format.js';
+import { placeClear } from '../banner.js';
+import { combRoom } from '../layout.js';
 
 /** Pixels per side of the canonical region map. */
 export const REGION_SIZE = 200;
 
-/** The request of a canonical region map (`/api/region`: where P1 may go between ends at
- * (−1, 0) and (1, 0)), drawn onto the current ends. */
-export const canonicalRegion = (body) => ({ key: JSON.stringify(body), path: '/api/region', body, canonical: true });
+/** Pixels per side of the map around the canonical one (the most /api/region/point draws). */
+const WIDE_SIZE = 128;
+
+/** The half-side, in the canonical map's units (the ends at (−1, 0) and (1, 0)), of a square
+ * about its centre that holds the visible canvas: a power of two, so that it changes seldom
+ * as the view or the ends move; 0 when the canonical map holds it all. */
+function canonicalReach(f) {
+  const pts = f.design.points;
+  const [a, b] = [pts[0], pts[pts.length - 1]];
+  const [cx, cy] = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
+  const [ex, ey] = [(b[0] - a[0]) / 2, (b[1] - a[1]) / 2];
+  const e2 = ex * ex + ey * ey;
+  if (!(e2 > 0)) return 0;
+  const [x0, x1, y0, y1] = f.view.visible(f.canvas.clientWidth, f.canvas.clientHeight);
+  let reach = 0;
+  for (const [x, y] of [[x0, y0], [x0, y1], [x1, y0], [x1, y1]]) {
+    const [dx, dy] = [x - cx, y - cy];
+    reach = Math.max(reach, Math.abs(dx * ex + dy * ey) / e2, Math.abs(dx * ey - dy * ex) / e2);
+  }
+  return reach > 1 ? 2 ** Math.min(16, Math.ceil(Math.log2(reach))) : 0;
+}
+
+/** The request of a canonical region map (`/api/region`, `body`: where P1 may go between
+ * ends at (−1, 0) and (1, 0)), drawn onto the current ends; and, when the view shows more than
+ * its square, `wide`: the map of P1 over a square that holds the view, from
+ * `/api/region/point` for the curve of the same ends and parameters (`curve`: its fields but
+ * the points), drawn around it, so the shading covers the visible canvas. */
+export function canonicalRegion(body, curve, f) {
+  const reach = canonicalReach(f);
+  const wideBody = {
+    curve: { points: [[-1, 0], [0, 0.5], [1, 0]], ...curve },
+    index: 1,
+    extent: [-reach, reach, -reach, reach],
+    size: WIDE_SIZE,
+  };
+  const wide = reach ? { key: JSON.stringify(wideBody), path: '/api/region/point', body: wideBody } : null;
+  return { key: JSON.stringify(body), path: '/api/region', body, canonical: true, wide };
+}
 
 /** The straight line of an LCG row {alpha, intercept, log_rho: [x0, x1]}. */
 const lineOf = ({ alpha, intercept, log_rho: [x0, x1] }) => [[x0, alpha * x0 + intercept], [x1, alpha * x1 + intercept]];
@@ -115,7 +152,7 @@ export const plane = {
         label: `Where P${index} may go:`,
       };
     }
-    drawPlane(ctx, f.view, width, height, {
+    return drawPlane(ctx, f.view, width, height, {
       points: d.points,
       samples: this.samples(a),
       stale: f.stale,
@@ -137,8 +174,26 @@ export const plane = {
   /** Fit the view to the control points, the curve and its comb. */
   fit(f) {
     const rows = this.samples(f.answer);
-    const tips = f.show.comb ? geometry(rows, f.combScale, Infinity).teeth.map(([, q]) => q) : [];
+    const tips = f.show.comb ? geometry(rows, f.combScale).teeth.map(([, q]) => q) : [];
     f.view.fit(bounds([...f.design.points, ...rows.map((r) => [r.x, r.y]), ...tips]), f.canvas.clientWidth, f.canvas.clientHeight);
+  },
+
+  /** The largest comb scale at which the teeth stay in the view (layout.js). */
+  combLimit(f) {
+    const s = f.view.scale;
+    const teeth = this.samples(f.answer).map((r) => [
+      f.view.toScreen([r.x, r.y]),
+      [Math.sin(r.theta) * r.kappa * s, Math.cos(r.theta) * r.kappa * s],
+    ]);
+    return combRoom(teeth, f.canvas.clientWidth, f.canvas.clientHeight);
+  },
+
+  /** Put the message (#message, over #stage as the canvas is) where it covers no control
+   * point (banner.js). */
+  placeMessage(box, f) {
+    if (box.hidden) return;
+    const area = { left: 0, top: 0, width: f.canvas.clientWidth, height: f.canvas.clientHeight };
+    placeClear(box, area, f.design.points.map((p) => f.view.toScreen(p)));
   },
 
   /** Where control point `index` is in the window. */

@@ -11,7 +11,7 @@ export default {
   count: 3,
   params: [
     { key: 'alpha', label: 'α', min: -3, max: 3, step: 0.01, hint: 'slope of the exact curve' },
-    { key: 'tolerance', label: 'tolerance', min: -10, max: -1, step: 0.1, log: true,
+    { key: 'tolerance', label: 'tolerance', min: -10, max: -1, step: 0.1, log: true, valid: { from: 1e-12, to: 1 },
       hint: 'largest deviation of the Bézier pieces, relative to the arc length' },
     { key: 'cubic', label: 'cubics', boolean: true, hint: 'plain cubics: all weights 1 (no rational pieces)' },
   ],
@@ -32,7 +32,7 @@ export default {
   fileRank: 40,
   recognises: (json) => 'tolerance' in json,
 
-  region: (f) => canonicalRegion({ alpha: f.design.alpha, size: REGION_SIZE }),
+  region: (f) => canonicalRegion({ alpha: f.design.alpha, size: REGION_SIZE }, { alpha: f.design.alpha }, f),
 
   /** The answer's exact curve is its `curve`. */
   curve: (answer) => answer.curve,

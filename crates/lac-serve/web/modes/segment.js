@@ -18,5 +18,5 @@ export default {
   fileRank: 90,
   recognises: () => true,
 
-  region: (f) => canonicalRegion({ alpha: f.design.alpha, size: REGION_SIZE }),
+  region: (f) => canonicalRegion({ alpha: f.design.alpha, size: REGION_SIZE }, { alpha: f.design.alpha }, f),
 };

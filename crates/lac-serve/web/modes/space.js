@@ -3,6 +3,7 @@
 
 import { SpaceViews, combTips } from '../space.js';
 import { spaceSvg } from '../export.js';
+import { placeTop, unplace } from '../banner.js';
 
 /** Least-squares slope of points [x, y] (for the space curve's graphs, drawn by the page). */
 function slope(points) {
@@ -32,7 +33,7 @@ export default {
   params: [
     { key: 'alpha', label: 'α', min: -3, max: 3, step: 0.01, hint: 'slope of the logarithmic curvature graph' },
     { key: 'beta', label: 'β', min: -3, max: 3, step: 0.01, hint: 'slope of the logarithmic torsion graph' },
-    { key: 'omega', label: 'Ω', min: 0, max: 2, step: 0.01, hint: 'torsion parameter (0: constant torsion)' },
+    { key: 'omega', label: 'Ω', min: 0, max: 2, step: 0.01, valid: { from: 0 }, hint: 'torsion parameter (0: constant torsion)' },
     { key: 'type', label: 'type', choices: [1, 2], hint: 'torsion type of seed 003' },
   ],
   defaults: {
@@ -52,7 +53,7 @@ export default {
   },
 
   draw(f) {
-    views.draw({
+    return views.draw({
       points: f.design.points,
       samples: f.answer ? f.answer.samples : [],
       stale: f.stale,
@@ -63,10 +64,26 @@ export default {
     });
   },
 
+  combLimit: (f) => (f.answer ? views.combLimit(f.answer.samples) : Infinity),
+
   fit(f) {
     const rows = f.answer ? f.answer.samples : [];
     const tips = f.show.comb ? combTips(rows, f.combScale) : [];
     views.fit([...f.design.points, ...rows.map((r) => [r.x, r.y, r.z]), ...tips]);
+  },
+
+  /** The message goes into the perspective view, under its caption, which draws below it:
+   * the views where points are dragged, and their captions, stay clear. */
+  placeMessage(box) {
+    if (box.hidden) {
+      unplace(box);
+      views.setInset(0);
+      return;
+    }
+    const figure = document.getElementById('view-3d').parentElement.getBoundingClientRect();
+    const stage = document.getElementById('stage').getBoundingClientRect();
+    const area = { left: figure.left - stage.left, top: figure.top - stage.top, width: figure.width, height: figure.height };
+    views.setInset(placeTop(box, area, 22));
   },
 
   /** Where control point `index` is in the window, in view `name` (top by default). */
@@ -114,7 +131,9 @@ export default {
       },
       lcg: {
         title: bits.join(', ') || 'logarithmic curvature and torsion graphs',
-        xlabel: 'ln ρ, ln μ', ylabel: 'ln(ρ ds/dρ), ln(μ ds/dμ)',
+        // One line per graph, in its colour: as one line it is longer than the plot is tall.
+        xlabel: 'ln ρ, ln μ',
+        ylabel: [{ text: 'ln(ρ ds/dρ)', color: '#1f4e9c' }, { text: 'ln(μ ds/dμ)', color: '#b3261e' }],
         series: [
           { points: lcg, color: '#1f4e9c', label: lcg.length ? 'curvature' : '' },
           { points: ltg, color: '#b3261e', label: ltg.length ? 'torsion' : '' },

@@ -181,20 +181,44 @@ fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-fn norm(a: [f64; 3]) -> f64 {
-    dot(a, a).sqrt()
+/// |a|: the square root of the sum of squares where that sum is a normal number, and
+/// otherwise the same scaled by the largest component (the differences of coordinates near
+/// 1e308 square far beyond double range, those near 1e-308 below it).
+pub(crate) fn norm(a: [f64; 3]) -> f64 {
+    let squared = dot(a, a);
+    if (f64::MIN_POSITIVE..f64::INFINITY).contains(&squared) {
+        return squared.sqrt();
+    }
+    let big = a[0].abs().max(a[1].abs()).max(a[2].abs());
+    if big == 0.0 || !big.is_finite() {
+        return big;
+    }
+    let unit = [a[0] / big, a[1] / big, a[2] / big];
+    big * dot(unit, unit).sqrt()
 }
 
 /// The Newton step for the foot of the perpendicular from `q` at a curve point with `jet`.
 fn newton_step(jet: &Jet, q: [f64; 3]) -> f64 {
     let r = sub(jet.point, q);
-    let g = dot(r, jet.d1);
-    let dg = dot(jet.d1, jet.d1) + dot(r, jet.d2);
+    let terms = |r: [f64; 3], d1: [f64; 3], d2: [f64; 3]| {
+        (dot(r, d1), dot(d1, d1), dot(d1, d1) + dot(r, d2))
+    };
+    let (mut g, mut speed, mut dg) = terms(r, jet.d1, jet.d2);
+    if ![g, speed, dg].iter().all(|x| x.is_finite()) {
+        // The step is the same for r, x′ and x″ scaled alike: a curve near 1e308, whose
+        // squares leave double range, is measured at unit scale (a power of two, exactly).
+        let big = jet.d1.iter().chain(&r).fold(0.0f64, |m, x| m.max(x.abs()));
+        if big.is_finite() && big > 0.0 {
+            let scale = 2f64.powi(-(big.log2().floor() as i32));
+            let scaled = |v: [f64; 3]| v.map(|x| x * scale);
+            (g, speed, dg) = terms(scaled(r), scaled(jet.d1), scaled(jet.d2));
+        }
+    }
     if dg > 0.0 {
         -g / dg
     } else {
         // Not convex here: a gradient step of the squared distance instead.
-        -g / dot(jet.d1, jet.d1).max(f64::MIN_POSITIVE)
+        -g / speed.max(f64::MIN_POSITIVE)
     }
 }
 
@@ -298,12 +322,19 @@ pub fn deviation(exact: &dyn Exact, nurbs: &Nurbs, per_span: usize) -> Result<f6
     // Curve → B-spline.
     let count = n * per_span + 1;
     let at: Vec<f64> = (0..count)
-        .map(|k| len * k as f64 / (count - 1) as f64)
+        .map(|k| match len * k as f64 / (count - 1) as f64 {
+            s if s.is_finite() => s,
+            _ => len * (k as f64 / (count - 1) as f64),
+        })
         .collect();
     let points = exact.jets(&at)?;
     for (k, jet) in points.iter().enumerate() {
         let q = jet.point;
-        let t = t0 + (t1 - t0) * at[k] / len;
+        let t = match t0 + (t1 - t0) * at[k] / len {
+            // (The product overflows for curves longer than 1e154: divide first there.)
+            t if t.is_finite() => t,
+            _ => t0 + (t1 - t0) * (at[k] / len),
+        };
         let mut i = (0..n)
             .find(|&i| t <= nurbs.span_interval(i).1)
             .unwrap_or(n - 1);

@@ -19,9 +19,10 @@ pub enum Error {
     /// precision cannot measure a deviation that fine, so no fit can be certified to meet
     /// it. Kind `tolerance_not_met` (the request is valid; it cannot be met).
     #[error(
-        "a tolerance of {tolerance:e} is {relative:.1e} of the arc length {length}: below \
+        "a tolerance of {tolerance:e} is {relative:.1e} of the arc length {arc_length}: below \
          {min:e} of it no deviation can be certified in double precision; ask for at least \
          {least:e}",
+        arc_length = lac::short_number(*.length),
         min = MIN_RELATIVE_TOLERANCE,
         least = MIN_RELATIVE_TOLERANCE * .length
     )]
@@ -61,7 +62,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn kinds_are_the_snake_case_names_and_messages_unchanged() {
+    fn kinds_are_the_snake_case_names_and_messages_name_the_numbers() {
         assert_eq!(Error::SvgOfSpaceCurve.kind(), "usage");
         let fine = Error::ToleranceBelowPrecision {
             tolerance: 1e-16,
@@ -71,7 +72,7 @@ mod tests {
         assert_eq!(fine.kind(), "tolerance_not_met");
         assert_eq!(
             fine.to_string(),
-            "a tolerance of 1e-16 is 2.2e-17 of the arc length 4.456290862831389: below 1e-12 \
+            "a tolerance of 1e-16 is 2.2e-17 of the arc length 4.45629: below 1e-12 \
              of it no deviation can be certified in double precision; ask for at least \
              4.456290862831388e-12"
         );

@@ -270,7 +270,31 @@ fn polyline_length(curve: &lac::RationalCubic) -> f64 {
     let points: Vec<kurbo::Point> = (0..=STEPS)
         .map(|j| curve.eval(j as f64 / STEPS as f64))
         .collect();
-    points.windows(2).map(|w| (w[1] - w[0]).hypot()).sum()
+    points
+        .windows(2)
+        .map(|w| certify::norm([w[1].x - w[0].x, w[1].y - w[0].y, 0.0]))
+        .sum()
+}
+
+/// The largest control-point coordinate whose B-spline can be evaluated and measured: the
+/// power basis of a span multiplies coordinates by up to 6 and sums four of them, so one of
+/// 2^1018 (about 2.8e306) stays within double range; larger ones are the caller's to scale.
+const LARGEST_COORDINATE: f64 = 2.8e306;
+
+/// An error unless every control point of `spans` is within [`LARGEST_COORDINATE`].
+fn representable(spans: &[Span]) -> Result<()> {
+    let largest = spans
+        .iter()
+        .flat_map(|s| s.points.iter().flatten())
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    if largest <= LARGEST_COORDINATE {
+        Ok(())
+    } else {
+        Err(lac::Error::Unrepresentable {
+            what: "B-spline (control points too near the largest double to evaluate)",
+        }
+        .into())
+    }
 }
 
 /// The B-spline of the pieces fitted to `curve` within `target` (model units).
@@ -310,6 +334,7 @@ fn fit(parts: &Parts, target: f64, plain: bool) -> Result<Fitted> {
                 breaks.push(breaks[breaks.len() - 1] + l * scale);
             }
         }
+        representable(&spans)?;
         let nurbs = Nurbs::from_spans(&spans, &breaks, true).map_err(|_| bad())?;
         Ok(Fitted {
             nurbs,
@@ -345,6 +370,7 @@ fn fit(parts: &Parts, target: f64, plain: bool) -> Result<Fitted> {
                 .collect();
             let mut breaks = vec![0.0];
             breaks.extend(cubics.pieces.iter().map(|p| p.s.1));
+            representable(&spans)?;
             let nurbs = Nurbs::from_spans(&spans, &breaks, false).map_err(|_| bad())?;
             Ok(Fitted {
                 nurbs,

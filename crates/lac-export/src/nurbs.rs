@@ -116,7 +116,7 @@ impl Span {
 }
 
 fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
-    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+    crate::certify::norm([a[0] - b[0], a[1] - b[1], a[2] - b[2]])
 }
 
 impl Nurbs {

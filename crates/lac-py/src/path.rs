@@ -91,6 +91,16 @@ impl PyPath {
         self.0.polygon().is_closed()
     }
 
+    fn __repr__(&self) -> String {
+        format!(
+            "<Path continuity={} closed={} segments={} arc_length={}>",
+            self.continuity(),
+            if self.closed() { "True" } else { "False" },
+            self.0.segments().len(),
+            self.0.arc_length()
+        )
+    }
+
     /// Arc length of the whole path (straight pieces included).
     #[getter]
     fn arc_length(&self) -> f64 {
@@ -202,6 +212,16 @@ impl PySpline {
     #[getter]
     fn closed(&self) -> bool {
         self.0.is_closed()
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "<Spline closed={} points={} pieces={} arc_length={}>",
+            if self.0.is_closed() { "True" } else { "False" },
+            self.0.points().len(),
+            self.0.pieces().len(),
+            self.0.arc_length()
+        )
     }
 
     /// Arc length of the whole spline.

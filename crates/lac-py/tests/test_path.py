@@ -174,3 +174,14 @@ def test_export_equals_the_command_line(cli, tmp_path):
         lac.export([(0, 0), (1, 0), (1, 1)], "step")
     with pytest.raises(lac.LacError, match="tolerance"):
         lac.export(seg, "step", tolerance=1e-20)
+
+
+def test_paths_splines_and_space_segments_say_what_they_are():
+    path = lac.Path(S_POLYGON, -1.0)
+    assert re.fullmatch(r"<Path continuity=g2 closed=False segments=4 arc_length=[0-9.e+-]+>",
+                        repr(path)), repr(path)
+    spline = lac.Spline([(0.0, 0.0), (2.0, 0.3), (3.5, 1.5), (4.0, 3.0)], 0.5)
+    assert re.fullmatch(r"<Spline closed=False points=4 pieces=3 arc_length=[0-9.e+-]+>",
+                        repr(spline)), repr(spline)
+    space = lac.SpaceSegment([(0, 0, 0), (3, 0, 0), (3, 3, 1.5), (0, 3, 3)], 0.5, 0.0, 0.3)
+    assert repr(space).startswith("<SpaceSegment alpha=0.5 beta=0 omega=0.3 type=1 arc_length=")

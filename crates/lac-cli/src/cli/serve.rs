@@ -38,16 +38,18 @@ pub(crate) fn run(args: &ServeArgs) -> Result<(), ErrorBody> {
             let url = format!("http://{bound}/");
             println!("lac editor: {url}  (Ctrl-C stops it)");
             if args.open {
-                if let Err(err) = open_browser(&url) {
-                    eprintln!("could not open a browser ({err}); open {url} yourself");
+                if let Err(why) = open_browser(&url) {
+                    eprintln!("could not open a browser ({why}); open {url} yourself");
                 }
             }
         },
     )
 }
 
-/// Ask the desktop to open `url`, without waiting for the browser.
-fn open_browser(url: &str) -> std::io::Result<()> {
+/// Ask the desktop to open `url`, without waiting for the browser; why not, when it cannot
+/// (no display on Linux, no opener, an opener that fails: reported from a thread, since the
+/// server is running by then).
+fn open_browser(url: &str) -> Result<(), String> {
     let mut command = if cfg!(target_os = "macos") {
         Command::new("open")
     } else if cfg!(target_os = "windows") {
@@ -55,13 +57,28 @@ fn open_browser(url: &str) -> std::io::Result<()> {
         c.args(["/C", "start", ""]);
         c
     } else {
+        let display = ["DISPLAY", "WAYLAND_DISPLAY"]
+            .iter()
+            .any(|name| std::env::var_os(name).is_some_and(|v| !v.is_empty()));
+        if !display {
+            return Err("no display: neither DISPLAY nor WAYLAND_DISPLAY is set".to_string());
+        }
         Command::new("xdg-open")
     };
-    command
+    let mut child = command
         .arg(url)
         .stdin(Stdio::null())
         .stdout(Stdio::null())
         .stderr(Stdio::null())
         .spawn()
-        .map(|_| ())
+        .map_err(|e| format!("{}: {e}", command.get_program().to_string_lossy()))?;
+    let url = url.to_string();
+    std::thread::spawn(move || {
+        if let Ok(status) = child.wait() {
+            if !status.success() {
+                eprintln!("could not open a browser (the opener exited with {status}); open {url} yourself");
+            }
+        }
+    });
+    Ok(())
 }

@@ -176,7 +176,13 @@ impl Layers {
         }
         polyline(svg, &pixels(&self.curve), CURVE, 2.0, "");
         for p in &self.joints {
-            dot(svg, view.px(*p), JOINT);
+            // A joint on a control point (a spline's, at the points it passes through) is a
+            // ring around the point's circle, which would hide a dot.
+            if on_control_point(*p, &self.points) {
+                ring(svg, view.px(*p), JOINT);
+            } else {
+                dot(svg, view.px(*p), JOINT);
+            }
         }
         control_points(svg, &polygon, &mut Labels::new(LABEL_SIZE), view.room());
     }
@@ -300,6 +306,21 @@ fn cross(svg: &mut String, p: Point, colour: &str) {
     );
 }
 
+/// A ring around a control point's circle, for a joint there.
+fn ring(svg: &mut String, p: Point, colour: &str) {
+    let _ = writeln!(
+        svg,
+        r#"<circle class="joint" cx="{:.2}" cy="{:.2}" r="6" fill="none" stroke="{colour}" stroke-width="2"/>"#,
+        p.x, p.y
+    );
+}
+
+/// Does joint `p` lie on one of the control points (to the rounding of the drawing)?
+fn on_control_point(p: Point, points: &[Point]) -> bool {
+    let near = 1e-9 * drawing_size(&bounding_box(points));
+    points.iter().any(|q| (q.x - p.x).hypot(q.y - p.y) <= near)
+}
+
 /// A filled dot, for a joint.
 fn dot(svg: &mut String, p: Point, colour: &str) {
     let _ = writeln!(
@@ -366,10 +387,12 @@ fn caption(pieces: &[Segment], layers: &Layers, extras: &Extras) -> Block {
             } else {
                 "joint"
             };
-            facts.push(Entry::keyed(
-                Key::Dot(JOINT),
-                format!("{name} s = {}", short(s)),
-            ));
+            let key = if on_control_point(piece.end_point(), &layers.points) {
+                Key::Ring(JOINT)
+            } else {
+                Key::Dot(JOINT)
+            };
+            facts.push(Entry::keyed(key, format!("{name} s = {}", short(s))));
         }
     }
     let mut length = s + pieces[pieces.len() - 1].arc_length();

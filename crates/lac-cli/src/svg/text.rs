@@ -39,6 +39,8 @@ pub(crate) enum Key {
     },
     /// A filled dot with a white rim, as a joint is marked.
     Dot(&'static str),
+    /// A ring, as a joint on a control point is marked (around the point's own circle).
+    Ring(&'static str),
 }
 
 impl Key {
@@ -77,7 +79,7 @@ impl Entry {
     /// An entry of a colour key: `key`, then `text` in the key's colour.
     pub(crate) fn keyed(key: Key, text: impl Into<String>) -> Entry {
         let colour = match key {
-            Key::Line { colour, .. } | Key::Dot(colour) => colour,
+            Key::Line { colour, .. } | Key::Dot(colour) | Key::Ring(colour) => colour,
         };
         Entry {
             key: Some(key),
@@ -281,6 +283,13 @@ fn draw_key(svg: &mut String, key: Key, x: f64, y: f64, size: f64) {
             let _ = writeln!(
                 svg,
                 r#"<circle class="key" cx="{:.2}" cy="{y:.2}" r="4.5" fill="{colour}" stroke="white" stroke-width="1.25"/>"#,
+                x + 0.5 * KEY * size
+            );
+        }
+        Key::Ring(colour) => {
+            let _ = writeln!(
+                svg,
+                r#"<circle class="key" cx="{:.2}" cy="{y:.2}" r="6" fill="none" stroke="{colour}" stroke-width="2"/>"#,
                 x + 0.5 * KEY * size
             );
         }

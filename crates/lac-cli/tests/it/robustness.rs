@@ -332,3 +332,84 @@ fn numbers_in_messages_are_short() {
         assert!(longest_number <= 20, "{args:?}: {message}");
     }
 }
+
+/// Issue 35: points within a binade of the largest double are drawn, or refused with a typed
+/// error that says what to change (exit 2), never a numerical failure (exit 70).
+#[test]
+fn curves_near_the_largest_double_are_drawn_or_refused_with_a_typed_error() {
+    let corner = ["--points", "0,0 1e308,0 1e308,1e308"];
+    for alpha in ["-1", "0", "0.5", "1", "2"] {
+        let run = lac(&[
+            &["segment"][..],
+            &corner,
+            &["--alpha", alpha, "--samples", "5"],
+        ]
+        .concat());
+        assert_eq!(run.code, 0, "segment alpha {alpha}: {}", run.stderr);
+        let length = common::json(&run)["arc_length"].as_f64().unwrap();
+        assert!((length / (std::f64::consts::FRAC_PI_2 * 1e308) - 1.0).abs() < 1e-12);
+        let run = lac(&[
+            &["quasi"][..],
+            &corner,
+            &["--alpha", alpha, "--tolerance", "1e-6"],
+        ]
+        .concat());
+        assert_eq!(run.code, 0, "quasi alpha {alpha}: {}", run.stderr);
+    }
+    // A tolerance finer than double precision can certify is refused, and says so briefly.
+    let run = lac(&[
+        &["export"][..],
+        &corner,
+        &["--alpha", "0.5", "--format", "json", "-o", "-"],
+    ]
+    .concat());
+    let message = assert_failure(&run, 3, "tolerance_not_met");
+    assert!(
+        message.len() < 400 && message.contains("1.5708e308"),
+        "{message}"
+    );
+    // Its B-spline is written up to control points of 2.8e306, beyond them refused.
+    let export = |points: &str| {
+        lac(&[
+            "export",
+            "--points",
+            points,
+            "--alpha",
+            "0.5",
+            "--relative-tolerance",
+            "1e-6",
+            "--format",
+            "json",
+            "-o",
+            "-",
+        ])
+    };
+    let run = export("0,0 1e306,0 1e306,1e306");
+    assert_eq!(run.code, 0, "export: {}", run.stderr);
+    assert_failure(&export("0,0 1e308,0 1e308,1e308"), 2, "unrepresentable");
+    // A path of length 1.2e308 is drawn; one of 2.4e308 is beyond double range.
+    let path = |p: &str| {
+        lac(&[
+            "path",
+            "--polygon",
+            &format!("0,0 {p},0 {p},{p} 0,{p}"),
+            "--alpha",
+            "0.5",
+            "--g2",
+            "--samples",
+            "5",
+        ])
+    };
+    let run = path("5e307");
+    assert_eq!(run.code, 0, "path 5e307: {}", run.stderr);
+    assert_failure(&path("1e308"), 2, "unrepresentable");
+    let run = lac(&[
+        "spline",
+        "--through",
+        "0,0 1e308,0 1e308,1e308 0,1e308",
+        "--alpha",
+        "0.5",
+    ]);
+    let message = assert_failure(&run, 2, "unrepresentable");
+    assert!(!message.contains("must be a finite number"), "{message}");
+}

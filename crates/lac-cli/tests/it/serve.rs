@@ -64,3 +64,31 @@ fn it_prints_its_url_and_serves_the_page_and_the_api_there() {
     assert!(api.starts_with("HTTP/1.1 200"), "{api}");
     assert!(api.contains(r#""arc_length":2.16196069304536"#), "{api}");
 }
+
+/// Issue 35: `--open` without a display says that no browser could be opened, beside the URL.
+#[test]
+fn open_without_a_display_says_that_no_browser_was_opened() {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_lac"))
+        .args(["serve", "--port", "0", "--open"])
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("lac serve starts");
+    let mut line = String::new();
+    BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut line)
+        .unwrap();
+    assert!(line.contains("http://127.0.0.1:"), "{line:?}");
+    let mut message = String::new();
+    BufReader::new(child.stderr.take().unwrap())
+        .read_line(&mut message)
+        .unwrap();
+    child.kill().unwrap();
+    let _ = child.wait();
+    assert!(
+        message.contains("could not open a browser") && message.contains("no display"),
+        "{message:?}"
+    );
+}

@@ -107,3 +107,41 @@ fn a_span_that_must_inflect_is_named() {
     let run = lac(&["spline", "--through", "0,0 1,1", "--alpha", "0.5"]);
     assert_failure(&run, 2, "invalid_input");
 }
+
+/// Issue 35: the joints of a spline lie on the points it passes through, where a dot would
+/// hide under the point's circle: they are rings around it, and the legend shows rings.
+#[test]
+fn the_svg_marks_joints_on_the_points_as_rings_that_the_points_do_not_hide() {
+    let run = lac(&[
+        "spline",
+        "--through",
+        "0,0 2,0.3 3.5,1.5 4,3",
+        "--alpha",
+        "0.5",
+        "--format",
+        "svg",
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let svg = &run.stdout;
+    let circles: Vec<&str> = svg.lines().filter(|l| l.starts_with("<circle")).collect();
+    let joints: Vec<&&str> = circles
+        .iter()
+        .filter(|l| l.contains(r#"class="joint""#))
+        .collect();
+    assert_eq!(joints.len(), 2, "{joints:?}");
+    for joint in joints {
+        // Larger than the point's circle (r 3.5) and open, so the point shows inside it.
+        assert!(
+            joint.contains(r#"r="6""#) && joint.contains(r#"fill="none""#),
+            "{joint}"
+        );
+    }
+    let keys: Vec<&&str> = circles
+        .iter()
+        .filter(|l| l.contains(r#"class="key""#))
+        .collect();
+    assert!(
+        !keys.is_empty() && keys.iter().all(|k| k.contains(r#"fill="none""#)),
+        "{keys:?}"
+    );
+}

@@ -856,3 +856,26 @@ async fn a_path_answer_is_lac_paths_report_with_each_segments_lcg_line() {
     .await;
     assert_eq!(short.status, StatusCode::BAD_REQUEST, "{}", short.text);
 }
+
+/// Issue 35: a segment and a path near the largest double are answered (or refused with a
+/// 4xx that names the problem), never a 500.
+#[tokio::test]
+async fn curves_near_the_largest_double_are_answered_never_an_internal_error() {
+    let body = r#"{"points":[[0,0],[1e308,0],[1e308,1e308]],"alpha":0.5,"samples":5}"#;
+    let answer = post(&app(), "/api/segment", body).await;
+    assert_eq!(answer.status, StatusCode::OK, "{}", answer.text);
+    for (p, status) in [
+        ("1e305", StatusCode::OK),
+        ("5e307", StatusCode::BAD_REQUEST),
+    ] {
+        let body = format!(
+            r#"{{"points":[[0,0],[{p},0],[{p},{p}],[0,{p}]],"alpha":0.5,"g2":true,
+               "format":"json","relative_tolerance":1e-6}}"#
+        );
+        let answer = post(&app(), "/api/export", &body).await;
+        assert_eq!(answer.status, status, "{p}: {}", answer.text);
+        if status != StatusCode::OK {
+            assert!(answer.text.contains("unrepresentable"), "{}", answer.text);
+        }
+    }
+}

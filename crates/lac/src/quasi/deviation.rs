@@ -152,7 +152,10 @@ impl Span {
                 if i == CHECK_STEPS {
                     sb
                 } else {
-                    sa + (sb - sa) * i as f64 / CHECK_STEPS as f64
+                    match sa + (sb - sa) * i as f64 / CHECK_STEPS as f64 {
+                        s if s.is_finite() => s,
+                        _ => sa + (sb - sa) * (i as f64 / CHECK_STEPS as f64),
+                    }
                 }
             })
             .collect();

@@ -82,7 +82,12 @@ pub trait SpaceCurve {
                 if i == n - 1 {
                     len
                 } else {
-                    len * i as f64 / (n - 1) as f64
+                    // (Dividing first only where the product would overflow: a curve near
+                    // 1e308 long.)
+                    match len * i as f64 / (n - 1) as f64 {
+                        s if s.is_finite() => s,
+                        _ => len * (i as f64 / (n - 1) as f64),
+                    }
                 }
             })
             .collect();

@@ -71,7 +71,7 @@ fn kurbo_nurbs(path: &BezPath) -> Nurbs {
         });
         breaks.push(breaks[breaks.len() - 1] + c.arclen(1e-12));
     }
-    Nurbs::from_spans(&spans, &breaks, true).expect("kurbo's path is a chain")
+    Nurbs::from_spans(&spans, &breaks, true, 0.0).expect("kurbo's path is a chain")
 }
 
 fn table() {

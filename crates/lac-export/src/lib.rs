@@ -335,7 +335,9 @@ fn fit(parts: &Parts, target: f64, plain: bool) -> Result<Fitted> {
             }
         }
         representable(&spans)?;
-        let nurbs = Nurbs::from_spans(&spans, &breaks, true).map_err(|_| bad())?;
+        // Pieces fitted one by one within `target` meet within it (what is written is
+        // certified below).
+        let nurbs = Nurbs::from_spans(&spans, &breaks, true, target).map_err(|_| bad())?;
         Ok(Fitted {
             nurbs,
             fit_deviation: chains
@@ -371,7 +373,7 @@ fn fit(parts: &Parts, target: f64, plain: bool) -> Result<Fitted> {
             let mut breaks = vec![0.0];
             breaks.extend(cubics.pieces.iter().map(|p| p.s.1));
             representable(&spans)?;
-            let nurbs = Nurbs::from_spans(&spans, &breaks, false).map_err(|_| bad())?;
+            let nurbs = Nurbs::from_spans(&spans, &breaks, false, target).map_err(|_| bad())?;
             Ok(Fitted {
                 nurbs,
                 fit_deviation: cubics.max_deviation,

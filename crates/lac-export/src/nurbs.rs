@@ -124,9 +124,17 @@ impl Nurbs {
     /// `[knots[i], knots[i + 1]]` (`breaks`: n + 1 increasing values).
     ///
     /// Errors: no spans, a count of breaks that does not match, breaks not increasing and
-    /// finite, consecutive spans that do not share their join point, or weights that are not
-    /// positive ([`Error::OutOfRange`]).
-    pub fn from_spans(spans: &[Span], breaks: &[f64], planar: bool) -> Result<Nurbs> {
+    /// finite, consecutive spans that do not share their join point (to 1e-9 of the larger
+    /// span, the rounding of the curve's coordinates and `join_slack`, a distance: pieces
+    /// fitted each within a tolerance of a curve may meet that far apart; the B-spline
+    /// takes the earlier piece's end), or weights that are not positive
+    /// ([`Error::OutOfRange`]).
+    pub fn from_spans(
+        spans: &[Span],
+        breaks: &[f64],
+        planar: bool,
+        join_slack: f64,
+    ) -> Result<Nurbs> {
         let bad = |expected: &'static str| Error::OutOfRange {
             name: "spans",
             value: spans.len() as f64,
@@ -141,6 +149,10 @@ impl Nurbs {
         let mut control_points = Vec::with_capacity(3 * spans.len() + 1);
         let mut weights = Vec::with_capacity(3 * spans.len() + 1);
         let mut last_size = 0.0f64;
+        let magnitude = spans
+            .iter()
+            .flat_map(|s| s.points.iter().flatten())
+            .fold(0.0f64, |m, x| m.max(x.abs()));
         for (i, span) in spans.iter().enumerate() {
             let span = span.normalized().ok_or(bad("positive finite weights"))?;
             let size = distance(span.points[0], span.points[3]);
@@ -154,7 +166,10 @@ impl Nurbs {
                 let last = control_points[control_points.len() - 1];
                 let gap = distance(last, span.points[0]);
                 let scale = size.max(last_size).max(f64::MIN_POSITIVE);
-                if gap.is_nan() || gap > 1e-9 * scale {
+                // (And what the rounding of the curve's coordinates allows: a piece 1e-8 long
+                // next to a hook, on a curve of size 1, meets its neighbour only to 1e-16.)
+                let allowed = 1e-9 * scale + 64.0 * f64::EPSILON * magnitude + join_slack;
+                if gap.is_nan() || gap > allowed {
                     return Err(bad("consecutive spans that share their join point"));
                 }
             }

@@ -185,11 +185,18 @@ fn triangle(rng: &mut Rng) -> [[f64; 2]; 3] {
     p
 }
 
+/// A factor that takes a shape of size about 1 to within a few binades of the largest
+/// double: its coordinates and their differences near `f64::MAX`.
+fn near_max(rng: &mut Rng) -> f64 {
+    f64::MAX / 2f64.powf(rng.uniform(2.0, 10.0))
+}
+
 /// Scale, rotate and move points, sometimes to extreme magnitudes or far from the origin.
 fn transform<const N: usize>(rng: &mut Rng, p: &mut [[f64; 2]; N]) {
     if rng.chance(0.3) {
-        let scale = match rng.below(4) {
+        let scale = match rng.below(5) {
             0 => 10f64.powf(rng.uniform(-160.0, 160.0)),
+            1 => near_max(rng),
             _ => 10f64.powf(rng.uniform(-6.0, 6.0)),
         };
         let (s, c) = rng.uniform(0.0, std::f64::consts::TAU).sin_cos();
@@ -392,7 +399,11 @@ pub(crate) fn space(rng: &mut Rng) -> Input {
         ]
     };
     if rng.chance(0.2) {
-        let scale = 10f64.powf(rng.uniform(-100.0, 100.0));
+        let scale = if rng.chance(0.2) {
+            near_max(rng)
+        } else {
+            10f64.powf(rng.uniform(-100.0, 100.0))
+        };
         for q in p.iter_mut() {
             for c in q.iter_mut() {
                 *c *= scale;
@@ -483,10 +494,12 @@ pub(crate) fn path(rng: &mut Rng) -> Input {
     }
     if rng.chance(0.15) {
         // Far from the origin, or very large or very small.
-        let (scale, shift) = (
-            rng.log_uniform(-150.0, 150.0).abs(),
-            rng.log_uniform(-3.0, 8.0),
-        );
+        let scale = if rng.chance(0.2) {
+            near_max(rng) / 10.0
+        } else {
+            rng.log_uniform(-150.0, 150.0).abs()
+        };
+        let shift = rng.log_uniform(-3.0, 8.0);
         for p in points.iter_mut() {
             *p = [p[0] * scale + shift, p[1] * scale];
         }

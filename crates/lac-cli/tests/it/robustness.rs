@@ -348,13 +348,21 @@ fn curves_near_the_largest_double_are_drawn_or_refused_with_a_typed_error() {
         assert_eq!(run.code, 0, "segment alpha {alpha}: {}", run.stderr);
         let length = common::json(&run)["arc_length"].as_f64().unwrap();
         assert!((length / (std::f64::consts::FRAC_PI_2 * 1e308) - 1.0).abs() < 1e-12);
-        let run = lac(&[
-            &["quasi"][..],
-            &corner,
-            &["--alpha", alpha, "--tolerance", "1e-6"],
-        ]
-        .concat());
+        // Its Bézier pieces cannot be evaluated that near the largest double: refused.
+        let quasi = |p: &str| {
+            lac(&[
+                "quasi",
+                "--points",
+                &format!("0,0 {p},0 {p},{p}"),
+                "--alpha",
+                alpha,
+                "--tolerance",
+                "1e-6",
+            ])
+        };
+        let run = quasi("1e306");
         assert_eq!(run.code, 0, "quasi alpha {alpha}: {}", run.stderr);
+        assert_failure(&quasi("1e308"), 2, "unrepresentable");
     }
     // A tolerance finer than double precision can certify is refused, and says so briefly.
     let run = lac(&[

@@ -4,21 +4,23 @@
 
 use lac::{curvature_plot, log_curvature_graph, RationalCubic};
 
-use super::{finite, pt};
+use super::{finite, pt, typed};
 
 /// The checks of an `analysis` input.
 pub(super) fn check(
     pieces: &[([[f64; 2]; 4], [f64; 4])],
     per_piece: usize,
 ) -> Result<bool, String> {
-    let Ok(curves) = pieces
-        .iter()
-        .map(|(p, w)| RationalCubic::new(p.map(pt), *w))
-        .collect::<lac::Result<Vec<_>>>()
+    let Some(curves) = typed(
+        pieces
+            .iter()
+            .map(|(p, w)| RationalCubic::new(p.map(pt), *w))
+            .collect::<lac::Result<Vec<_>>>(),
+    )?
     else {
         return Ok(false);
     };
-    let Ok(plot) = curvature_plot(&curves, per_piece) else {
+    let Some(plot) = typed(curvature_plot(&curves, per_piece))? else {
         return Ok(false);
     };
     for p in &plot {

@@ -19,7 +19,7 @@ pub(super) fn check_three(
     samples: usize,
 ) -> Result<bool, String> {
     let pts = points.map(pt);
-    let Some(Built::Plane(Solved::Compound(c))) = build(input) else {
+    let Some(Built::Plane(Solved::Compound(c))) = build(input)? else {
         return Ok(false);
     };
     check_curve(&c, &[pts[0], pts[1]], &[pts[1], pts[2]], samples, 1e-6)?;
@@ -34,7 +34,7 @@ pub(super) fn check_four(
     samples: usize,
 ) -> Result<bool, String> {
     let pts = points.map(pt);
-    let Some(Built::Plane(Solved::Compound(c))) = build(input) else {
+    let Some(Built::Plane(Solved::Compound(c))) = build(input)? else {
         return Ok(false);
     };
     check_curve(&c, &[pts[0], pts[1]], &[pts[2], pts[3]], samples, 1e-6)?;

@@ -9,7 +9,7 @@ use lac::Tolerance;
 use lac_export::json::{ExportDocument, NurbsRow};
 use lac_export::{Exported, Format, Meta};
 
-use super::{build, distance, finite, Built};
+use super::{build, distance, finite, typed, Built};
 use crate::Input;
 
 /// The checks of an `export` input.
@@ -20,7 +20,7 @@ pub(super) fn check(
     relative: bool,
     single_spans: bool,
 ) -> Result<bool, String> {
-    let Some(built) = build(curve) else {
+    let Some(built) = build(curve)? else {
         return Ok(false);
     };
     let tolerance = if relative {
@@ -28,10 +28,10 @@ pub(super) fn check(
     } else {
         Tolerance::Absolute(tolerance)
     };
-    let Ok(curve) = built.as_export() else {
+    let Some(curve) = typed(built.as_export())? else {
         return Ok(false);
     };
-    let Ok(exported) = lac_export::export(
+    let Some(exported) = typed(lac_export::export(
         &curve,
         format,
         tolerance,
@@ -41,7 +41,8 @@ pub(super) fn check(
             timestamp: "2026-11-23T00:00:00".to_string(),
             version: "0".to_string(),
         },
-    ) else {
+    ))?
+    else {
         return Ok(false);
     };
     check_export(&built, tolerance, &exported)?;

@@ -123,11 +123,10 @@ impl Built {
 }
 
 /// The curve an input of a solver describes, or `None` when the solver refuses it.
-fn build(input: &Input) -> Option<Built> {
-    match input {
+fn build(input: &Input) -> Result<Option<Built>, String> {
+    Ok(match input {
         Input::Segment { points, alpha, .. } | Input::Quasi { points, alpha, .. } => {
-            Segment::from_control_points(points.map(pt), *alpha)
-                .ok()
+            typed(Segment::from_control_points(points.map(pt), *alpha))?
                 .map(|s| Built::Plane(Solved::Segment(s)))
         }
         Input::Compound3 {
@@ -135,14 +134,19 @@ fn build(input: &Input) -> Option<Built> {
             alpha,
             ratio,
             ..
-        } => CompoundCurve::from_three_points(points.map(pt), alpha[0], alpha[1], *ratio)
-            .ok()
-            .map(|c| Built::Plane(Solved::Compound(c))),
-        Input::Compound4 { points, alpha, .. } => {
-            CompoundCurve::from_four_points(points.map(pt), alpha[0], alpha[1])
-                .ok()
-                .map(|c| Built::Plane(Solved::Compound(c)))
-        }
+        } => typed(CompoundCurve::from_three_points(
+            points.map(pt),
+            alpha[0],
+            alpha[1],
+            *ratio,
+        ))?
+        .map(|c| Built::Plane(Solved::Compound(c))),
+        Input::Compound4 { points, alpha, .. } => typed(CompoundCurve::from_four_points(
+            points.map(pt),
+            alpha[0],
+            alpha[1],
+        ))?
+        .map(|c| Built::Plane(Solved::Compound(c))),
         Input::Path {
             points,
             alpha,
@@ -150,22 +154,23 @@ fn build(input: &Input) -> Option<Built> {
             g2,
         } => {
             let pts: Vec<Point> = points.iter().map(|&p| pt(p)).collect();
-            let polygon = if *closed {
-                ControlPolygon::from_points(&pts, Closure::Closed)
+            let closure = if *closed {
+                Closure::Closed
             } else {
-                ControlPolygon::from_points(&pts, Closure::Open)
-            }
-            .ok()?;
+                Closure::Open
+            };
+            let Some(polygon) = typed(ControlPolygon::from_points(&pts, closure))? else {
+                return Ok(None);
+            };
             let alphas = match alpha.as_slice() {
                 [one] => Alphas::One(*one),
                 many => Alphas::PerSegment(many.to_vec()),
             };
-            if *g2 {
+            typed(if *g2 {
                 Path::from_polygon_g2(&polygon, &alphas)
             } else {
                 Path::from_polygon_g1(&polygon, &alphas, None)
-            }
-            .ok()
+            })?
             .map(Built::Path)
         }
         Input::Space {
@@ -179,25 +184,27 @@ fn build(input: &Input) -> Option<Built> {
                 alpha: *alpha,
                 beta: *beta,
                 omega: *omega,
-                torsion: TorsionType::from_number(*torsion).ok()?,
+                torsion: match TorsionType::from_number(*torsion) {
+                    Ok(torsion) => torsion,
+                    Err(_) => return Ok(None),
+                },
             };
-            SpaceSegment::from_control_points(points.map(Vec3::from_array), shape)
-                .ok()
-                .map(Built::Space)
+            typed(SpaceSegment::from_control_points(
+                points.map(Vec3::from_array),
+                shape,
+            ))?
+            .map(Built::Space)
         }
         Input::Monotone { .. }
         | Input::Analysis { .. }
         | Input::Export { .. }
         | Input::Spline { .. } => None,
-    }
+    })
 }
 
+/// |a − b| without squaring (points near 1e308).
 fn distance(a: &[f64], b: &[f64]) -> f64 {
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x - y) * (x - y))
-        .sum::<f64>()
-        .sqrt()
+    a.iter().zip(b).fold(0.0, |d, (x, y)| d.hypot(x - y))
 }
 
 fn pt(p: [f64; 2]) -> Point {
@@ -295,7 +302,7 @@ fn check_curve(
     } else if (2..=10_000_000).contains(&n) {
         return Err(format!("{n} samples refused"));
     }
-    if let Ok(adaptive) = curve.sample_adaptive(accuracy) {
+    if let Some(adaptive) = typed(curve.sample_adaptive(accuracy))? {
         for s in &adaptive {
             finite(
                 "adaptive sample",
@@ -433,4 +440,38 @@ fn largest_end_curvature(pieces: &[Segment]) -> f64 {
                 .max(p.signed_curvature_end().abs())
         })
         .fold(0.0, f64::max)
+}
+
+/// An error that is lac's own defect (a numerical failure), not a refusal of the input.
+pub(super) trait Defect: std::fmt::Display {
+    /// Is it a defect?
+    fn is_defect(&self) -> bool;
+}
+
+impl Defect for lac::Error {
+    fn is_defect(&self) -> bool {
+        self.kind() == lac::ErrorKind::NumericalFailure
+    }
+}
+
+impl Defect for lac_export::Error {
+    fn is_defect(&self) -> bool {
+        matches!(self, lac_export::Error::Lac(e) if e.is_defect())
+    }
+}
+
+impl Defect for ErrorBody {
+    fn is_defect(&self) -> bool {
+        matches!(self.kind.as_str(), "numerical_failure" | "internal")
+    }
+}
+
+/// The answer of a call, `None` for a typed refusal, and a violation for a numerical
+/// failure: every input either solves or is refused with an error that names it.
+pub(super) fn typed<T, E: Defect>(result: Result<T, E>) -> Result<Option<T>, String> {
+    match result {
+        Ok(answer) => Ok(Some(answer)),
+        Err(e) if e.is_defect() => Err(format!("a numerical failure, not a typed error: {e}")),
+        Err(_) => Ok(None),
+    }
 }

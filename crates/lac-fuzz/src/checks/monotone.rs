@@ -3,14 +3,14 @@
 
 use lac::{Monotonicity, RationalCubic};
 
-use super::pt;
+use super::{pt, typed};
 
 /// The checks of a `monotone` input.
 pub(super) fn check(points: &[[f64; 2]; 4], weights: [f64; 4]) -> Result<bool, String> {
-    let Ok(curve) = RationalCubic::new(points.map(pt), weights) else {
+    let Some(curve) = typed(RationalCubic::new(points.map(pt), weights))? else {
         return Ok(false);
     };
-    let Ok(report) = curve.curvature_monotonicity() else {
+    let Some(report) = typed(curve.curvature_monotonicity())? else {
         return Ok(false);
     };
     check_verdict(&curve, report.verdict, report.proven)?;

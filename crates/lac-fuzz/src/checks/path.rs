@@ -11,7 +11,7 @@ use crate::Input;
 
 /// The checks of a `path` input.
 pub(super) fn check(input: &Input, closed: bool, g2: bool) -> Result<bool, String> {
-    let Some(Built::Path(path)) = build(input) else {
+    let Some(Built::Path(path)) = build(input)? else {
         return Ok(false);
     };
     check_path(&path, closed, g2)?;

@@ -8,7 +8,7 @@ use kurbo::{ParamCurve, Point};
 use lac::ToBezier;
 use lac::{Curve, Monotonicity, QuasiCurve, RationalCubic, Segment, Tolerance};
 
-use super::{bounds, dist, distance_to_segment, finite, pt, rounding};
+use super::{bounds, dist, distance_to_segment, finite, pt, rounding, typed};
 
 /// The checks of a `quasi` input.
 pub(super) fn check(
@@ -18,7 +18,7 @@ pub(super) fn check(
     cubic: bool,
 ) -> Result<bool, String> {
     let pts = points.map(pt);
-    let Ok(seg) = Segment::from_control_points(pts, alpha) else {
+    let Some(seg) = typed(Segment::from_control_points(pts, alpha))? else {
         return Ok(false);
     };
     let fit = match (tolerance, cubic) {
@@ -26,7 +26,7 @@ pub(super) fn check(
         (Some(t), false) => seg.to_rational_cubics(Tolerance::Relative(t)),
         (Some(t), true) => seg.to_cubics(Tolerance::Relative(t)),
     };
-    let Ok(quasi) = fit else {
+    let Some(quasi) = typed(fit)? else {
         return Ok(false);
     };
     check_quasi(&seg, &pts, &quasi, tolerance)?;

@@ -18,7 +18,7 @@ pub(super) fn check(
     accuracy: f64,
 ) -> Result<bool, String> {
     let pts = points.map(pt);
-    let Some(Built::Plane(Solved::Segment(seg))) = build(input) else {
+    let Some(Built::Plane(Solved::Segment(seg))) = build(input)? else {
         return Ok(false);
     };
     check_curve(

@@ -13,7 +13,7 @@ use crate::Input;
 /// The checks of a `space` input.
 pub(super) fn check(input: &Input, points: &[[f64; 3]; 4]) -> Result<bool, String> {
     let pts = points.map(Vec3::from_array);
-    let Some(Built::Space(seg)) = build(input) else {
+    let Some(Built::Space(seg)) = build(input)? else {
         return Ok(false);
     };
     check_space(&seg, &pts)?;

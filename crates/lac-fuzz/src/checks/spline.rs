@@ -8,7 +8,7 @@ use kurbo::Point;
 use lac::{Closure, SegmentChain};
 use lac::{Curve, Spline, INFLECTION_LIMIT};
 
-use super::{bounds, dist, finite, largest_end_curvature, meet, on_triangles, pt, rounding};
+use super::{bounds, dist, finite, largest_end_curvature, meet, on_triangles, pt, rounding, typed};
 
 /// The checks of a `spline` input.
 pub(super) fn check(
@@ -18,16 +18,12 @@ pub(super) fn check(
     ends: Option<[f64; 2]>,
 ) -> Result<bool, String> {
     let pts: Vec<Point> = points.iter().map(|&p| pt(p)).collect();
-    let Ok(spline) = Spline::from_points(
-        &pts,
-        alpha,
-        if closed {
-            Closure::Closed
-        } else {
-            Closure::Open
-        },
-        ends,
-    ) else {
+    let closure = if closed {
+        Closure::Closed
+    } else {
+        Closure::Open
+    };
+    let Some(spline) = typed(Spline::from_points(&pts, alpha, closure, ends))? else {
         return Ok(false);
     };
     check_spline(&spline)?;

@@ -527,6 +527,13 @@ pub enum G2Failure {
         /// How much of the leg is missing, as a share of it.
         overlap: f64,
     },
+    /// The segments on either side of a spline's point, solved from the same tangent
+    /// direction there, leave it in directions `jump` radians apart (more than 1e-10): one of
+    /// them is too flat or too sharply curved for double precision to place its tangent.
+    TangentUnresolved {
+        /// The angle between the two segments' tangents at the point, radians.
+        jump: f64,
+    },
 }
 
 impl fmt::Display for G2Failure {
@@ -571,6 +578,12 @@ impl fmt::Display for G2Failure {
                 "it passes through an inflection almost at one of its points (one half \
                  of its S turns by less than 0.001 rad, too flat to draw in double precision); \
                  move that point off the curve's inflection, or add a point"
+            ),
+            G2Failure::TangentUnresolved { jump } => write!(
+                f,
+                "the segments on either side of this point leave it {jump:.1e} rad apart, \
+                 beyond what double precision resolves for segments this flat or this sharply \
+                 curved; move the point a little, or use an alpha closer to 0"
             ),
             G2Failure::InflectionLegTooShort { overlap } => write!(
                 f,

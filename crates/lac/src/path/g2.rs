@@ -5,7 +5,7 @@ use super::{banded, Continuity, ControlPolygon, Path};
 
 use crate::foundation::error::{Error, G2Failure, Result};
 use crate::foundation::numeric::length;
-use crate::segment::{end_curvatures_of, Segment, SegmentSolution};
+use crate::segment::{end_curvatures_of, normalized, Segment, SegmentSolution};
 
 /// The solver stops once every joint's |ln(κ⁻/κ⁺)| is below this (about the rounding of
 /// the segments' end curvatures); a result must in any case meet
@@ -156,7 +156,7 @@ fn inflections(
                     &vec![0.5; polygon.leg_count()],
                     k,
                 );
-                let (u, v) = (p - a, b - p);
+                let (u, v) = (normalized(p - a), normalized(b - p));
                 u.cross(v).abs().atan2(u.dot(v))
             };
             match super::inflection::leg_ratio(alphas[k], turning) {

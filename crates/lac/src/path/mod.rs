@@ -72,7 +72,8 @@ pub use spline::{Spline, SplineInflection};
 pub const G2_JUMP_LIMIT: f64 = 1e-9;
 
 /// Largest gap between the ends of two segments at a joint, relative to the polygon's size,
-/// and largest tangent jump (radians), for any path.
+/// and largest tangent jump (radians), for any path (beyond what the rounding of the
+/// polygon's coordinates allows).
 const G1_LIMIT: f64 = 1e-10;
 
 /// How continuous a path is at its joints.
@@ -280,6 +281,20 @@ impl Path {
         continuity: Continuity,
     ) -> Result<Path> {
         let size = polygon.size();
+        // What the coordinates' own rounding allows beyond the limits: a polygon far from the
+        // origin compared to its size (points 2e5 from it, a millimetre apart) places its
+        // joints and tangents only to that.
+        let (gap_limit, tangent_limit) = {
+            let magnitude = polygon
+                .points()
+                .iter()
+                .fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
+            let rounding = 64.0 * f64::EPSILON * magnitude;
+            (
+                G1_LIMIT * size + rounding,
+                G1_LIMIT + 100.0 * rounding / size,
+            )
+        };
         let scale = segments
             .iter()
             .map(|s| {
@@ -292,8 +307,8 @@ impl Path {
         for leg in polygon.joint_legs() {
             if fractions[leg] != fractions_end[leg] {
                 let piece = straight_piece(&polygon, &segments, &fractions, &fractions_end, leg)?;
-                let ok = piece.gap <= G1_LIMIT * size
-                    && piece.tangent_jump <= G1_LIMIT
+                let ok = piece.gap <= gap_limit
+                    && piece.tangent_jump <= tangent_limit
                     && fractions_end[leg] <= fractions[leg];
                 if !ok {
                     return Err(Error::NumericalFailure {
@@ -344,7 +359,7 @@ impl Path {
                     0.0
                 },
             };
-            let g1_ok = joint.gap <= G1_LIMIT * size && joint.tangent_jump <= G1_LIMIT;
+            let g1_ok = joint.gap <= gap_limit && joint.tangent_jump <= tangent_limit;
             let g2_ok = continuity == Continuity::G1 || joint.curvature_jump <= G2_JUMP_LIMIT;
             if !(g1_ok && g2_ok) {
                 return Err(Error::NumericalFailure {

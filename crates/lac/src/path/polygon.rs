@@ -6,7 +6,7 @@ use kurbo::Point;
 use crate::foundation::error::{finite, Error, Result};
 use crate::foundation::numeric::length;
 use crate::foundation::turn::Turn;
-use crate::segment::check_alpha;
+use crate::segment::{check_alpha, normalized};
 
 /// The most vertices a control polygon may have (the work is linear in it; this bounds a
 /// request's memory and time).
@@ -205,7 +205,8 @@ impl ControlPolygon {
             self.points[v],
             self.points[(v + 1) % n],
         );
-        Turn::of((q - p).cross(r - q))
+        // (Each leg at its own scale: a product of legs near 1e308 overflows.)
+        Turn::of(normalized(q - p).cross(normalized(r - q)))
     }
 
     /// Largest coordinate extent, the scale of position checks.

@@ -527,6 +527,15 @@ impl Spline {
             what: "the spline's joint check (a point's position, tangent or curvature does \
                    not match)",
         };
+        // What the coordinates' own rounding allows beyond 1e-10 (see `Path`'s checks).
+        let (gap_limit, tangent_limit) = {
+            let magnitude = self
+                .points
+                .iter()
+                .fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
+            let rounding = 64.0 * f64::EPSILON * magnitude;
+            (1e-10 * size + rounding, 1e-10 + 100.0 * rounding / size)
+        };
         let (mut jumps, mut inflections) = (Vec::new(), Vec::new());
         for k in 0..pairs {
             let next = (k + 1) % segments.len();
@@ -537,8 +546,14 @@ impl Spline {
                     - b.theta_of(&b.station_at_turning(0.0)?),
             );
             let (k0, k1) = (a.end_curvatures().1, b.end_curvatures().0);
-            if !(gap <= 1e-10 * size && dt.abs() <= 1e-10) {
+            if gap.is_nan() || gap > gap_limit {
                 return Err(failure());
+            }
+            if dt.is_nan() || dt.abs() > tangent_limit {
+                return Err(Error::NoG2Spline {
+                    span: spans_of_pieces[next],
+                    reason: G2Failure::TangentUnresolved { jump: dt.abs() },
+                });
             }
             if spans_of_pieces[k] == spans_of_pieces[next] {
                 // The two halves of an S, at the inflection.

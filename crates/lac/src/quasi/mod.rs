@@ -149,12 +149,32 @@ fn replace(
         });
     if !finite {
         return Err(Error::Unrepresentable {
-            what: "the Bézier replacement of this curve (its weights or deviation overflow)",
+            what: "Bézier replacement (its weights or deviation overflow)",
+        });
+    }
+    // A piece is evaluated in the power basis of its homogeneous control points relative to
+    // the first, whose coefficients reach 24 times those: beyond 2^1018 they leave double
+    // range (pieces of a curve 1e307 across).
+    let evaluable = quasi.pieces.iter().all(|p| {
+        let (b, w) = (p.curve.points(), p.curve.weights());
+        b.iter().zip(w).all(|(q, w)| {
+            let d = (q.x - b[0].x).abs().max((q.y - b[0].y).abs());
+            w * d <= LARGEST_HOMOGENEOUS
+        })
+    });
+    if !evaluable {
+        return Err(Error::Unrepresentable {
+            what: "Bézier replacement (its control points too near the largest double to \
+                   evaluate)",
         });
     }
     check_joins(&quasi)?;
     Ok(quasi)
 }
+
+/// The largest homogeneous coordinate of a piece's control point (relative to its first)
+/// that its evaluation keeps within double range: 2^1018.
+const LARGEST_HOMOGENEOUS: f64 = 2.8e306;
 
 /// The G2 joins as a reader sees them: each piece's end curvature evaluated from its
 /// control points as written must match the next piece's start curvature, within 1e-6 of the

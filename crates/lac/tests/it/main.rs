@@ -7,6 +7,7 @@ mod architecture;
 mod bezier_kurbo;
 mod common;
 mod compound;
+mod curve_trait;
 mod kurbo_traits;
 mod monotone;
 mod path;

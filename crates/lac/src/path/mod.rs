@@ -281,20 +281,7 @@ impl Path {
         continuity: Continuity,
     ) -> Result<Path> {
         let size = polygon.size();
-        // What the coordinates' own rounding allows beyond the limits: a polygon far from the
-        // origin compared to its size (points 2e5 from it, a millimetre apart) places its
-        // joints and tangents only to that.
-        let (gap_limit, tangent_limit) = {
-            let magnitude = polygon
-                .points()
-                .iter()
-                .fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
-            let rounding = 64.0 * f64::EPSILON * magnitude;
-            (
-                G1_LIMIT * size + rounding,
-                G1_LIMIT + 100.0 * rounding / size,
-            )
-        };
+        let (gap_limit, tangent_limit) = joint_limits(polygon.points(), size);
         let scale = segments
             .iter()
             .map(|s| {
@@ -639,6 +626,21 @@ impl Curve for Path {
 }
 
 /// The point at arc length `local` along a straight piece.
+/// The largest gap and tangent jump (radians) a joint may show: [`G1_LIMIT`] of the
+/// polygon's size, plus what the coordinates' own rounding allows. A polygon far from the
+/// origin compared to its size (points 2e5 from it, a millimetre apart) places its joints
+/// and tangents only to that.
+pub(crate) fn joint_limits(points: &[Point], size: f64) -> (f64, f64) {
+    let magnitude = points
+        .iter()
+        .fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
+    let rounding = 64.0 * f64::EPSILON * magnitude;
+    (
+        G1_LIMIT * size + rounding,
+        G1_LIMIT + 100.0 * rounding / size,
+    )
+}
+
 fn line_point(p: &StraightPiece, local: f64) -> Point {
     let len = p.length();
     let u = if len > 0.0 { local / len } else { 0.0 };

@@ -18,7 +18,10 @@ use std::f64::consts::{PI, TAU};
 use kurbo::{Point, Vec2};
 
 use super::s_span::{SSpan, Unit, HAIR};
-use super::{banded, Closure, G2_JUMP_LIMIT, G2_TOLERANCE, INFLECTION_LIMIT, MAX_POLYGON_POINTS};
+use super::{
+    banded, joint_limits, Closure, G2_JUMP_LIMIT, G2_TOLERANCE, INFLECTION_LIMIT,
+    MAX_POLYGON_POINTS,
+};
 use crate::curve::chain::SegmentChain;
 use crate::curve::{check_total_length, Curve};
 use crate::foundation::error::G2Failure;
@@ -527,15 +530,7 @@ impl Spline {
             what: "the spline's joint check (a point's position, tangent or curvature does \
                    not match)",
         };
-        // What the coordinates' own rounding allows beyond 1e-10 (see `Path`'s checks).
-        let (gap_limit, tangent_limit) = {
-            let magnitude = self
-                .points
-                .iter()
-                .fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
-            let rounding = 64.0 * f64::EPSILON * magnitude;
-            (1e-10 * size + rounding, 1e-10 + 100.0 * rounding / size)
-        };
+        let (gap_limit, tangent_limit) = joint_limits(&self.points, size);
         let (mut jumps, mut inflections) = (Vec::new(), Vec::new());
         for k in 0..pairs {
             let next = (k + 1) % segments.len();

@@ -15,7 +15,7 @@ use lac_io::json::{
 };
 
 use crate::batch;
-use crate::cli::export::{ExportSource, Flag, Input};
+use crate::cli::export::{present, ExportSource, Flag, Input};
 use crate::cli::segment::check_output;
 use crate::cli::{CurveFlags, CurveFormat, CurveOutput};
 use crate::errors;
@@ -174,14 +174,11 @@ pub(crate) fn from_arguments(
 
 impl ExportSource for CompoundFlags {
     fn given(&self) -> Vec<Flag> {
-        [
+        present([
             Flag::slope("--alpha0", self.alpha0.is_some()),
             Flag::slope("--alpha1", self.alpha1.is_some()),
             Flag::other("--ratio", self.ratio.is_some()),
-        ]
-        .into_iter()
-        .flatten()
-        .collect()
+        ])
     }
 
     /// A compound curve when `--points`, `--alpha0` and `--alpha1` come without `--alpha` or

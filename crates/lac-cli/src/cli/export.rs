@@ -93,6 +93,11 @@ impl Flag {
     }
 }
 
+/// The flags given, of a kind's list of maybe-given flags.
+pub(crate) fn present<const N: usize>(flags: [Option<Flag>; N]) -> Vec<Flag> {
+    flags.into_iter().flatten().collect()
+}
+
 /// The flags' names for a message: "--a", "--a and --b", "--a, --b and --c".
 pub(crate) fn names<'a>(flags: impl IntoIterator<Item = &'a Flag>) -> String {
     let names: Vec<&str> = flags.into_iter().map(|f| f.name).collect();
@@ -250,19 +255,16 @@ fn format_of(to: &ExportTo) -> Result<Format, ErrorBody> {
 
 #[cfg(test)]
 mod tests {
-    use super::{names, Flag};
+    use super::{names, present, Flag};
 
     #[test]
     fn names_are_listed_as_in_a_sentence() {
-        let flags: Vec<Flag> = [
+        let flags: Vec<Flag> = present([
             Flag::slope("--alpha0", true),
             Flag::other("--ratio", false),
             Flag::slope("--alpha1", true),
             Flag::slope("--beta", true),
-        ]
-        .into_iter()
-        .flatten()
-        .collect();
+        ]);
         assert_eq!(names(&flags[..1]), "--alpha0");
         assert_eq!(names(&flags[..2]), "--alpha0 and --alpha1");
         assert_eq!(names(&flags), "--alpha0, --alpha1 and --beta");

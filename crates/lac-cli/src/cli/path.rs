@@ -8,7 +8,7 @@ use clap::Args;
 use lac::Curve;
 use lac_io::json::{to_line, AnyCurve, ErrorBody, PathInput, PathReport, Xy};
 
-use crate::cli::export::{names, ExportSource, Flag, Input};
+use crate::cli::export::{names, present, ExportSource, Flag, Input};
 use crate::cli::segment::check_output;
 use crate::cli::{CurveFlags, CurveFormat, CurveOutput};
 use crate::errors;
@@ -175,15 +175,12 @@ impl ExportSource for PathExport {
         if self.polygon.is_none() {
             return Vec::new();
         }
-        [
+        present([
             Flag::other("--polygon", true),
             Flag::slope("--alphas", self.alphas.is_some()),
             Flag::other("--g2", self.g2),
             Flag::other("--fractions", self.fractions.is_some()),
-        ]
-        .into_iter()
-        .flatten()
-        .collect()
+        ])
     }
 
     /// The path of `--polygon`; other kinds' slopes are refused.

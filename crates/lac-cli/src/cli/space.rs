@@ -13,7 +13,7 @@ use lac_io::json::{
 };
 
 use crate::batch;
-use crate::cli::export::{names, ExportSource, Flag, Input};
+use crate::cli::export::{names, present, ExportSource, Flag, Input};
 use crate::cli::CurveFlags;
 use crate::errors;
 use crate::limits::Limits;
@@ -247,14 +247,11 @@ pub(crate) struct SpaceExport {
 
 impl ExportSource for SpaceExport {
     fn given(&self) -> Vec<Flag> {
-        [
+        present([
             Flag::slope("--beta", self.beta.is_some()),
             Flag::other("--omega", self.omega.is_some()),
             Flag::other("--type", self.torsion_type.is_some()),
-        ]
-        .into_iter()
-        .flatten()
-        .collect()
+        ])
     }
 
     /// A space segment when `--points` come with `--beta` (and `--alpha`, without any other

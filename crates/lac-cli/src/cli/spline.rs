@@ -9,7 +9,7 @@ use kurbo::Point;
 use lac::{Curve, SegmentChain};
 use lac_io::json::{to_line, AnyCurve, ErrorBody, SplineInput, SplineReport};
 
-use crate::cli::export::{names, ExportSource, Flag, Input};
+use crate::cli::export::{names, present, ExportSource, Flag, Input};
 use crate::cli::segment::check_output;
 use crate::cli::{CurveFlags, CurveFormat, CurveOutput};
 use crate::errors;
@@ -142,14 +142,11 @@ impl ExportSource for SplineExport {
         if self.through.is_none() {
             return Vec::new();
         }
-        [
+        present([
             Flag::other("--through", true),
             Flag::other("--start-angle", self.start_angle.is_some()),
             Flag::other("--end-angle", self.end_angle.is_some()),
-        ]
-        .into_iter()
-        .flatten()
-        .collect()
+        ])
     }
 
     /// The spline through `--through`, with `--alpha`; other kinds' slopes are refused.

@@ -1,7 +1,7 @@
-"""Generate crates/lac/src/fresnel/table.rs: the Fresnel auxiliary functions f and g
+"""Generate crates/lac/src/foundation/fresnel/table.rs: the Fresnel auxiliary functions f and g
 (DLMF 7.2.10) as piecewise polynomials, at 40 digits with mpmath.
 
-    .venv/bin/python tools/reference/fresnel_table.py > crates/lac/src/fresnel/table.rs
+    .venv/bin/python tools/reference/fresnel_table.py > crates/lac/src/foundation/fresnel/table.rs
 
 With F(x) = C(x) + i S(x) = ∫₀ˣ e^{iπt²/2} dt,
 

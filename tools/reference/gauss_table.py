@@ -1,4 +1,4 @@
-"""Print the Gauss-Legendre table used by crates/lac/src/gauss.rs (nodes on [-1, 1]).
+"""Print the Gauss-Legendre table used by crates/lac/src/foundation/gauss.rs (nodes on [-1, 1]).
 
 Run: python3 tools/reference/gauss_table.py 16
 Only the non-negative half is printed; the rule is symmetric.

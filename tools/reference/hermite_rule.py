@@ -1,5 +1,5 @@
 """Exact coefficients of the two-point Hermite (Obreshkov) quadrature used in
-crates/lac/src/sampling.rs: integral over [0, h] of f = sum_k h^(k+1) (a_k f^(k)(0) + b_k f^(k)(h)),
+crates/lac/src/segment/sampling.rs: integral over [0, h] of f = sum_k h^(k+1) (a_k f^(k)(0) + b_k f^(k)(h)),
 exact for polynomials of degree 2m + 1 (m derivatives at each end).
 
 Run: python3 tools/reference/hermite_rule.py 5

@@ -611,7 +611,7 @@ mod tests {
         if std::env::var_os("LAC_WRITE_GUESS_TABLE").is_some() {
             let path = concat!(
                 env!("CARGO_MANIFEST_DIR"),
-                "/src/chord_angle/guess/table.rs"
+                "/src/family/chord_angle/guess/table.rs"
             );
             let rows: Vec<String> = m
                 .iter()

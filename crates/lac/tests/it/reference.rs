@@ -9,6 +9,8 @@ use lac::Curve;
 use lac::{Error, NotDrawable, Segment, StandardForm};
 use serde::Deserialize;
 
+use crate::common::fixture_text;
+
 const TOLERANCE: f64 = 1e-12;
 
 #[derive(Deserialize)]
@@ -53,9 +55,9 @@ struct SampleCase {
 }
 
 fn load<T: for<'de> Deserialize<'de>>(name: &str) -> Vec<T> {
-    let path = format!("{}/tests/fixtures/{name}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    serde_json::from_str::<File<T>>(&text).unwrap().cases
+    serde_json::from_str::<File<T>>(&fixture_text(name))
+        .unwrap()
+        .cases
 }
 
 fn rel(got: f64, want: f64) -> f64 {

@@ -9,6 +9,8 @@ use lac::Curve;
 use lac::{CompoundCurve, Error};
 use serde::Deserialize;
 
+use crate::common::fixture_text;
+
 const TOLERANCE: f64 = 1e-12;
 
 #[derive(Deserialize)]
@@ -58,12 +60,9 @@ fn solve(c: &Case) -> lac::Result<CompoundCurve> {
 
 #[test]
 fn compound_curves_match_the_40_digit_reference() {
-    let path = format!(
-        "{}/tests/fixtures/compound.json",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    let cases = serde_json::from_str::<File>(&text).unwrap().cases;
+    let cases = serde_json::from_str::<File>(&fixture_text("compound.json"))
+        .unwrap()
+        .cases;
     assert!(cases.len() >= 150, "{} cases", cases.len());
     let (mut worst_pos, mut worst_curv, mut worst_len, mut worst_angle) =
         (0.0f64, 0.0f64, 0.0f64, 0.0f64);

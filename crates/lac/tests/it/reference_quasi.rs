@@ -9,6 +9,8 @@ use lac::ToBezier;
 use lac::{Monotonicity, RationalCubic, Segment};
 use serde::Deserialize;
 
+use crate::common::fixture_text;
+
 #[derive(Deserialize)]
 struct Fixture<T> {
     cases: Vec<T>,
@@ -33,9 +35,9 @@ struct CurvatureSample {
 }
 
 fn load<T: for<'de> Deserialize<'de>>(name: &str) -> Vec<T> {
-    let path = format!("{}/tests/fixtures/{name}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    serde_json::from_str::<Fixture<T>>(&text).unwrap().cases
+    serde_json::from_str::<Fixture<T>>(&fixture_text(name))
+        .unwrap()
+        .cases
 }
 
 fn pt(p: [f64; 2]) -> Point {

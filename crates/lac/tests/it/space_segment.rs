@@ -9,7 +9,7 @@ use lac::{TorsionType, Vec3};
 
 // The independent Runge–Kutta integration shared with the constructed-input test.
 use crate::common::space_inputs;
-use space_inputs::independent_end;
+use space_inputs::check_ends;
 
 struct Rng(u64);
 impl Rng {
@@ -44,30 +44,6 @@ fn twisted() -> [Vec3; 4] {
         [2.0, 1.0, 0.5],
         [2.0, 2.0, 1.5],
     ])
-}
-
-/// Check the ends and end tangents of `seg` against `points`, by the independent
-/// integration; returns (position error / chord, tangent error in radians).
-fn check_ends(seg: &SpaceSegment, p: [Vec3; 4]) -> (f64, f64) {
-    let form = seg.standard_form().unwrap();
-    let tr = seg.transform().unwrap();
-    let s_end = seg.s_end().unwrap();
-    let (x_end, t_end) = independent_end(form, s_end);
-    let start = tr.apply(Vec3::ZERO);
-    let end = tr.apply(x_end);
-    let t_start = tr.apply_vector(Vec3::X);
-    let t_end = tr.apply_vector(t_end);
-    let (first, last, t_first, t_last) = if tr.reversed {
-        (end, start, -t_end, -t_start)
-    } else {
-        (start, end, t_start, t_end)
-    };
-    let chord = p[3].distance(p[0]);
-    let pos = first.distance(p[0]).max(last.distance(p[3])) / chord;
-    let tan = t_first
-        .angle_to(p[1] - p[0])
-        .max(t_last.angle_to(p[3] - p[2]));
-    (pos, tan)
 }
 
 /// Four control points from a standard-form piece, moved by a rotation, scale, translation

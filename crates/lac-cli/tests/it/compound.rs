@@ -6,7 +6,7 @@ use crate::common;
 use lac::Curve;
 use std::f64::consts::{PI, TAU};
 
-use common::{assert_failure, json, lac};
+use common::{assert_failure, f, json, lac};
 use kurbo::Point;
 use lac::CompoundCurve;
 use serde_json::Value;
@@ -28,10 +28,6 @@ fn solved(points: &str, alpha0: &str, alpha1: &str, extra: &[&str]) -> Value {
     assert_eq!(run.code, 0, "{}", run.stderr);
     assert_eq!(run.stdout.lines().count(), 1);
     json(&run)
-}
-
-fn f(v: &Value) -> f64 {
-    v.as_f64().unwrap_or_else(|| panic!("a number: {v}"))
 }
 
 /// The samples as (s, x, y, theta, kappa).

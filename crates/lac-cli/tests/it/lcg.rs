@@ -3,14 +3,10 @@
 
 use crate::common;
 
-use common::{assert_failure, json, lac, lac_with_input, Run};
+use common::{assert_failure, f, json, lac, lac_with_input, Run};
 use serde_json::Value;
 
 const POINTS: &str = "0,0 3,0 4.2,1.9";
-
-fn f(v: &Value) -> f64 {
-    v.as_f64().unwrap_or_else(|| panic!("a number: {v}"))
-}
 
 /// The standard output of a successful run of `lac args…`.
 fn stdout(args: &[&str]) -> String {

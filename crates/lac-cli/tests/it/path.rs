@@ -3,14 +3,10 @@
 
 use crate::common;
 
-use common::{assert_failure, json, lac};
+use common::{assert_failure, f, json, lac};
 use serde_json::Value;
 
 const POLYGON: &str = "0,0 2,0 3.5,1 4,3 3,4.5 1,5";
-
-fn f(v: &Value) -> f64 {
-    v.as_f64().unwrap_or_else(|| panic!("a number: {v}"))
-}
 
 #[test]
 fn g2_path_json_reports_every_joint_continuous() {

@@ -5,7 +5,7 @@ use crate::common;
 
 use std::f64::consts::{FRAC_PI_2, PI, SQRT_2};
 
-use common::{assert_failure, json, lac};
+use common::{assert_failure, f, json, lac};
 use serde_json::Value;
 
 /// An isosceles control triangle: the segment is a quarter circle of radius √2.
@@ -26,10 +26,6 @@ fn quasi_line(args: &[&str]) -> String {
 
 fn quasi(args: &[&str]) -> Value {
     serde_json::from_str(&quasi_line(args)).expect("JSON")
-}
-
-fn f(v: &Value) -> f64 {
-    v.as_f64().unwrap_or_else(|| panic!("a number: {v}"))
 }
 
 fn pair(v: &Value) -> [f64; 2] {

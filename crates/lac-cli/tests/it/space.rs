@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{assert_failure, assert_keys, json, lac, Run};
+use common::{assert_failure, assert_keys, f, json, lac, Run};
 use lac::{SpaceForm, SpaceFormParams, TorsionType, Vec3};
 use serde_json::Value;
 
@@ -44,10 +44,6 @@ fn without_input<'a>(v: &Value, text: &'a str) -> (Value, &'a str) {
     }
     let input = &text[text.rfind(r#""points":"#).unwrap()..];
     (head, input.trim_end())
-}
-
-fn f(v: &Value) -> f64 {
-    v.as_f64().unwrap_or_else(|| panic!("{v} is not a number"))
 }
 
 fn vec3(v: &Value) -> Vec3 {

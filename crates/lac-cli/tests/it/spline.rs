@@ -3,12 +3,7 @@
 
 use crate::common;
 
-use common::{assert_failure, json, lac};
-use serde_json::Value;
-
-fn f(v: &Value) -> f64 {
-    v.as_f64().unwrap_or_else(|| panic!("a number: {v}"))
-}
+use common::{assert_failure, f, json, lac};
 
 #[test]
 fn open_spline_passes_through_its_points_with_continuous_curvature() {

@@ -48,6 +48,11 @@ pub(crate) fn lac(args: &[&str]) -> Run {
     lac_with_input(args, b"")
 }
 
+/// The number `v` (the test fails when it is not one).
+pub(crate) fn f(v: &serde_json::Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("a number: {v}"))
+}
+
 /// Standard output as JSON.
 pub(crate) fn json(run: &Run) -> serde_json::Value {
     serde_json::from_str(&run.stdout)

@@ -17,7 +17,7 @@ use super::nurbs::{Jet, Nurbs};
 use kurbo::Point;
 use std::borrow::Cow;
 
-use lac::{Curve, Result, Segment, SpaceCurve, SpaceSegment};
+use lac::{times_ratio, Curve, Result, Segment, SpaceCurve, SpaceSegment};
 
 /// Newton iterations per projection.
 const ITERATIONS: usize = 8;
@@ -322,19 +322,12 @@ pub fn deviation(exact: &dyn Exact, nurbs: &Nurbs, per_span: usize) -> Result<f6
     // Curve → B-spline.
     let count = n * per_span + 1;
     let at: Vec<f64> = (0..count)
-        .map(|k| match len * k as f64 / (count - 1) as f64 {
-            s if s.is_finite() => s,
-            _ => len * (k as f64 / (count - 1) as f64),
-        })
+        .map(|k| times_ratio(len, k as f64, (count - 1) as f64))
         .collect();
     let points = exact.jets(&at)?;
     for (k, jet) in points.iter().enumerate() {
         let q = jet.point;
-        let t = match t0 + (t1 - t0) * at[k] / len {
-            // (The product overflows for curves longer than 1e154: divide first there.)
-            t if t.is_finite() => t,
-            _ => t0 + (t1 - t0) * (at[k] / len),
-        };
+        let t = t0 + times_ratio(t1 - t0, at[k], len);
         let mut i = (0..n)
             .find(|&i| t <= nurbs.span_interval(i).1)
             .unwrap_or(n - 1);

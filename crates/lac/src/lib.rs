@@ -95,7 +95,7 @@ pub use family::monotone::{Monotonicity, MonotonicityReport};
 pub use family::sample::{Sample, MAX_ADAPTIVE_SAMPLES};
 pub use family::standard_form::{Classification, InfiniteRadiusEnd, StandardForm, ZeroRadiusEnd};
 pub use foundation::error::{Error, ErrorKind, G2Failure, NotDrawable, Result};
-pub use foundation::numeric::short_number;
+pub use foundation::numeric::{short_number, times_ratio};
 pub use foundation::tolerance::{Tolerance, MIN_RELATIVE_TOLERANCE};
 pub use foundation::turn::Turn;
 pub use foundation::vec3::Vec3;

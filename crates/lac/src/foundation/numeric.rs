@@ -337,6 +337,15 @@ impl Mul for Complex {
     }
 }
 
+/// `x · num / den` as written (bit for bit) where the product stays finite, and dividing
+/// first where it overflows: a station `i / n` of the way along a length near 1e308.
+pub fn times_ratio(x: f64, num: f64, den: f64) -> f64 {
+    match x * num / den {
+        y if y.is_finite() => y,
+        _ => x * (num / den),
+    }
+}
+
 /// A number with six significant digits at most, for messages: `0.333333`, `1.5e-7`.
 pub fn short_number(x: f64) -> String {
     if x == 0.0 || !x.is_finite() {
@@ -361,6 +370,17 @@ pub fn short_number(x: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// As written where the product is finite (bit for bit), dividing first where it is not.
+    #[test]
+    fn times_ratio_divides_first_only_where_the_product_overflows() {
+        for (x, num, den) in [(0.1, 3.0, 7.0), (1e300, 17.0, 64.0), (-2.5, 1.0, 3.0)] {
+            assert_eq!(times_ratio(x, num, den).to_bits(), (x * num / den).to_bits());
+        }
+        let near_max = 1.5e308_f64;
+        assert!((near_max * 63.0 / 64.0).is_infinite());
+        assert_eq!(times_ratio(near_max, 63.0, 64.0), near_max * (63.0 / 64.0));
+    }
 
     /// Both roots to rounding, the small one too when a is tiny (where the textbook formula
     /// cancels), a double root through `slack`, none for complex roots.

@@ -625,7 +625,6 @@ impl Curve for Path {
     }
 }
 
-/// The point at arc length `local` along a straight piece.
 /// The largest gap and tangent jump (radians) a joint may show: [`G1_LIMIT`] of the
 /// polygon's size, plus what the coordinates' own rounding allows. A polygon far from the
 /// origin compared to its size (points 2e5 from it, a millimetre apart) places its joints
@@ -641,6 +640,7 @@ pub(crate) fn joint_limits(points: &[Point], size: f64) -> (f64, f64) {
     )
 }
 
+/// The point at arc length `local` along a straight piece.
 fn line_point(p: &StraightPiece, local: f64) -> Point {
     let len = p.length();
     let u = if len > 0.0 { local / len } else { 0.0 };

@@ -21,7 +21,7 @@ use kurbo::Vec2;
 use super::fit::{Candidate, Node, Span};
 use super::TurningCurve;
 use crate::foundation::error::Result;
-use crate::foundation::numeric::find_root;
+use crate::foundation::numeric::{find_root, times_ratio};
 
 /// Deviation samples per piece for the maximum.
 const CHECK_STEPS: usize = 64;
@@ -152,10 +152,7 @@ impl Span {
                 if i == CHECK_STEPS {
                     sb
                 } else {
-                    match sa + (sb - sa) * i as f64 / CHECK_STEPS as f64 {
-                        s if s.is_finite() => s,
-                        _ => sa + (sb - sa) * (i as f64 / CHECK_STEPS as f64),
-                    }
+                    sa + times_ratio(sb - sa, i as f64, CHECK_STEPS as f64)
                 }
             })
             .collect();

@@ -21,6 +21,7 @@ pub use segment::{GraphPoint, SpaceSegment, SpaceShape, PLANAR_TOLERANCE};
 pub use similarity::Similarity3;
 
 use crate::foundation::error::Result;
+use crate::foundation::numeric::times_ratio;
 use crate::foundation::vec3::Vec3;
 
 /// A point of a space curve with its Frenet frame, curvature and torsion.
@@ -82,12 +83,7 @@ pub trait SpaceCurve {
                 if i == n - 1 {
                     len
                 } else {
-                    // (Dividing first only where the product would overflow: a curve near
-                    // 1e308 long.)
-                    match len * i as f64 / (n - 1) as f64 {
-                        s if s.is_finite() => s,
-                        _ => len * (i as f64 / (n - 1) as f64),
-                    }
+                    times_ratio(len, i as f64, (n - 1) as f64)
                 }
             })
             .collect();

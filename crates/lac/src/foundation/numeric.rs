@@ -375,7 +375,10 @@ mod tests {
     #[test]
     fn times_ratio_divides_first_only_where_the_product_overflows() {
         for (x, num, den) in [(0.1, 3.0, 7.0), (1e300, 17.0, 64.0), (-2.5, 1.0, 3.0)] {
-            assert_eq!(times_ratio(x, num, den).to_bits(), (x * num / den).to_bits());
+            assert_eq!(
+                times_ratio(x, num, den).to_bits(),
+                (x * num / den).to_bits()
+            );
         }
         let near_max = 1.5e308_f64;
         assert!((near_max * 63.0 / 64.0).is_infinite());

@@ -129,7 +129,12 @@ pub(crate) fn run(args: &CompoundArgs, limits: Limits) -> Result<(), ErrorBody> 
                 evolute: output.evolute,
                 closed: false,
             };
-            svg::render(curve.pieces(), &kurbo_points(&input.points), extras)?
+            svg::render(
+                ("Compound-rhythm log-aesthetic curve", Some(curve.lambda())),
+                curve.pieces(),
+                &kurbo_points(&input.points),
+                extras,
+            )?
         }
     };
     write_document(output.file.as_deref(), document.as_bytes())

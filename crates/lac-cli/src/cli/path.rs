@@ -86,7 +86,12 @@ pub(crate) fn run(args: &PathArgs, limits: Limits) -> Result<(), ErrorBody> {
             if input.closed {
                 polygon.push(polygon[0]);
             }
-            svg::render(path.segments(), &polygon, extras)?
+            svg::render(
+                (&path_title(&path), None),
+                path.segments(),
+                &polygon,
+                extras,
+            )?
         }
     };
     write_document(output.file.as_deref(), document.as_bytes())
@@ -213,5 +218,18 @@ impl ExportSource for PathExport {
 
     fn closes(&self) -> bool {
         true
+    }
+}
+
+/// The drawing's name for `path`: "Log-aesthetic path (G2)", "Closed log-aesthetic path (G1)".
+fn path_title(path: &lac::Path) -> String {
+    let continuity = match path.continuity() {
+        lac::Continuity::G1 => "G1",
+        lac::Continuity::G2 => "G2",
+    };
+    if path.polygon().is_closed() {
+        format!("Closed log-aesthetic path ({continuity})")
+    } else {
+        format!("Log-aesthetic path ({continuity})")
     }
 }

@@ -88,6 +88,7 @@ pub(crate) fn run(args: &SegmentArgs, limits: Limits) -> Result<(), ErrorBody> {
                 closed: false,
             };
             svg::render(
+                ("Log-aesthetic segment", Some(segment.lambda())),
                 std::slice::from_ref(&segment),
                 &kurbo_points(&input.points),
                 extras,

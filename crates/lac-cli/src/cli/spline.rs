@@ -86,7 +86,12 @@ pub(crate) fn run(args: &SplineArgs, limits: Limits) -> Result<(), ErrorBody> {
             if args.closed {
                 through.push(through[0]);
             }
-            svg::render(spline.pieces(), &through, extras)?
+            svg::render(
+                ("Log-aesthetic spline (G2)", None),
+                spline.pieces(),
+                &through,
+                extras,
+            )?
         }
     };
     write_document(output.file.as_deref(), document.as_bytes())

@@ -77,8 +77,10 @@ struct Layers {
 }
 
 /// The SVG document for the curve made of `pieces` (one for a segment, two for a compound
-/// curve, in order) with control polygon `points`.
+/// curve, in order) with control polygon `points`; the title names the kind of curve
+/// (`what`: "Log-aesthetic segment") and its Λ when it has one.
 pub(crate) fn render(
+    (what, lambda): (&str, Option<f64>),
     pieces: &[Segment],
     points: &[Point],
     extras: Extras,
@@ -87,7 +89,7 @@ pub(crate) fn render(
     let caption = caption(pieces, &layers, &extras);
     let view = View::fit(layers.bounds(), &caption);
     let mut svg = String::new();
-    open(&mut svg, &view, pieces);
+    open(&mut svg, &view, (what, lambda), pieces);
     layers.draw(&mut svg, &view);
     view.caption(&mut svg, &caption);
     svg.push_str("</svg>\n");
@@ -223,17 +225,14 @@ fn bounding_box(points: &[Point]) -> Rect {
     points.iter().fold(first, |r, p| r.union_pt(*p))
 }
 
-fn open(svg: &mut String, view: &View, pieces: &[Segment]) {
-    let what = if pieces.len() == 1 {
-        "Log-aesthetic segment"
-    } else {
-        "Compound-rhythm log-aesthetic curve"
+/// The document's opening, titled with `what`, the slopes, and `lambda` when the curve has
+/// one Λ (a segment, a compound curve); a path or spline says how many segments it has.
+fn open(svg: &mut String, view: &View, (what, lambda): (&str, Option<f64>), pieces: &[Segment]) {
+    let last = match lambda {
+        Some(lambda) => format!("Λ = {}", short(lambda)),
+        None => format!("{} segments", pieces.len()),
     };
-    let title = format!(
-        "{what}, {}, Λ = {}",
-        slopes(pieces).join(", "),
-        short(pieces[0].lambda())
-    );
+    let title = format!("{what}, {}, {last}", slopes(pieces).join(", "));
     document(svg, view.width, view.height, &title);
 }
 

@@ -178,3 +178,68 @@ fn the_caption_tells_joints_inflections_and_straight_pieces_apart() {
     assert!(straight[1].contains("to 23.426"), "{straight:?}");
     assert_eq!(run.stdout.matches("inflection s = ").count(), 0);
 }
+
+#[test]
+fn the_title_names_the_kind_of_curve() {
+    let cases: [(&[&str], &str); 5] = [
+        (
+            &["segment", "--points", "0,0 2,0 2.4,1", "--alpha", "0.5"],
+            "<title>Log-aesthetic segment, α = 0.5, Λ = ",
+        ),
+        (
+            &[
+                "compound",
+                "--points",
+                "0,0 2,0 2.4,1",
+                "--alpha0",
+                "-1",
+                "--alpha1",
+                "2",
+                "--ratio",
+                "0.5",
+            ],
+            "<title>Compound-rhythm log-aesthetic curve, α0 = -1, α1 = 2, Λ = ",
+        ),
+        (
+            &[
+                "path",
+                "--polygon",
+                "0,0 2,0 3.5,1 4,3",
+                "--alpha",
+                "0.5",
+                "--g2",
+            ],
+            "<title>Log-aesthetic path (G2), α = 0.5, 2 segments</title>",
+        ),
+        (
+            &[
+                "path",
+                "--polygon",
+                "0,0 2,0 3.5,1 4,3 1,4",
+                "--alpha",
+                "0.5",
+                "--closed",
+            ],
+            "<title>Closed log-aesthetic path (G1), α = 0.5, 5 segments</title>",
+        ),
+        (
+            &[
+                "spline",
+                "--through",
+                "0,0 2,1.5 4,1 5,-1 3,-3",
+                "--alpha",
+                "0.5",
+            ],
+            "<title>Log-aesthetic spline (G2), α = 0.5, 4 segments</title>",
+        ),
+    ];
+    for (args, title) in cases {
+        let run = lac(&[args, &["--format", "svg"][..]].concat());
+        assert_eq!(run.code, 0, "{args:?}: {}", run.stderr);
+        assert!(
+            run.stdout.contains(title),
+            "{args:?}: {}",
+            &run.stdout[..300]
+        );
+    }
+}

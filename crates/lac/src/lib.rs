@@ -74,6 +74,7 @@
 // test `architecture` in tests/it checks it).
 mod curve;
 mod family;
+mod fit;
 mod foundation;
 mod path;
 mod quasi;
@@ -94,6 +95,9 @@ pub use family::lcg::LcgLine;
 pub use family::monotone::{Monotonicity, MonotonicityReport};
 pub use family::sample::{Sample, MAX_ADAPTIVE_SAMPLES};
 pub use family::standard_form::{Classification, InfiniteRadiusEnd, StandardForm, ZeroRadiusEnd};
+pub use fit::{
+    Fit, FitAlpha, FitJoint, FitLoss, FitOptions, FitPiece, DEFAULT_ALPHA_RANGE, MAX_FIT_SEGMENTS,
+};
 pub use foundation::error::{Error, ErrorKind, G2Failure, NotDrawable, Result};
 pub use foundation::numeric::{short_number, times_ratio};
 pub use foundation::tolerance::{Tolerance, MIN_RELATIVE_TOLERANCE};

@@ -140,8 +140,12 @@ impl ErrorBody {
     /// How a front end should treat it.
     pub fn class(&self) -> ErrorClass {
         match self.kind.as_str() {
-            "not_drawable" | "fit_failed" | "tolerance_not_met" | "too_many_pieces"
-            | "no_g2_path" => ErrorClass::Undrawable,
+            "not_drawable"
+            | "fit_failed"
+            | "tolerance_not_met"
+            | "too_many_pieces"
+            | "no_g2_path"
+            | "fit_tolerance_not_met" => ErrorClass::Undrawable,
             "io" => ErrorClass::Io,
             "internal" | "numerical_failure" => ErrorClass::Internal,
             _ => ErrorClass::Invalid,

@@ -162,6 +162,36 @@ pub enum Error {
         /// Why.
         reason: G2Failure,
     },
+    /// Too few points to fit a curve to.
+    #[error("a fit needs at least {needed} distinct points, got {got}; give more points")]
+    TooFewPoints {
+        /// The fewest points the fit needs.
+        needed: usize,
+        /// How many distinct points were given.
+        got: usize,
+    },
+    /// No log-aesthetic path of the allowed number of segments stays within the tolerance of
+    /// the points.
+    #[error(
+        "no log-aesthetic path of at most {segments} segments stays within {} of the points: \
+         the best fit found is {} from them at worst, between points {from} and {to}; raise \
+         the tolerance or allow more segments",
+        Num(*tolerance),
+        Num(*reached)
+    )]
+    FitToleranceNotMet {
+        /// The tolerance asked, in the points' units.
+        tolerance: f64,
+        /// The largest distance of a point from the best fit found, in the points' units.
+        reached: f64,
+        /// The most segments allowed.
+        segments: usize,
+        /// The stretch of the points (0-based, inclusive) that stays farther than the
+        /// tolerance from the best fit.
+        from: usize,
+        /// Its last point.
+        to: usize,
+    },
     /// A computation that should succeed for a solved curve did not (an overflow, or a
     /// bound of the family reached through rounding). This is a defect: please report the
     /// input that caused it.
@@ -208,6 +238,10 @@ pub enum ErrorKind {
     NumericalFailure,
     /// [`Error::NoG2Path`] and [`Error::NoG2Spline`].
     NoG2Path,
+    /// [`Error::TooFewPoints`].
+    TooFewPoints,
+    /// [`Error::FitToleranceNotMet`].
+    FitToleranceNotMet,
 }
 
 /// A number for a message: plain where that is short, in exponent form otherwise (a plain
@@ -249,6 +283,8 @@ impl Error {
             Error::CurvatureUndefined { .. } => ErrorKind::CurvatureUndefined,
             Error::Unrepresentable { .. } => ErrorKind::Unrepresentable,
             Error::NumericalFailure { .. } => ErrorKind::NumericalFailure,
+            Error::TooFewPoints { .. } => ErrorKind::TooFewPoints,
+            Error::FitToleranceNotMet { .. } => ErrorKind::FitToleranceNotMet,
             Error::PathSegment { source, .. } => source.kind(),
             Error::NoG2Path { .. } | Error::NoG2Spline { .. } => ErrorKind::NoG2Path,
             Error::SplineSpan { source, .. } => source.kind(),

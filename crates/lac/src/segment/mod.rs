@@ -10,6 +10,7 @@ use crate::foundation::error::{finite, Error, Result};
 use crate::foundation::numeric::{clamp, Complex};
 use crate::foundation::turn::Turn;
 
+mod intrinsic;
 mod kurbo;
 pub(crate) mod sampling;
 pub(crate) mod visible;

@@ -18,6 +18,7 @@ const LAYERS: &[(&str, &[&str])] = &[
     ("segments", &["segment"]),
     ("curves and analysis", &["curve"]),
     ("replacement and paths", &["quasi", "path"]),
+    ("fitting", &["fit"]),
     ("space curves and regions", &["space", "region"]),
 ];
 

@@ -8,6 +8,7 @@ mod bezier_kurbo;
 mod common;
 mod compound;
 mod curve_trait;
+mod fit;
 mod kurbo_traits;
 mod monotone;
 mod path;

@@ -1,0 +1,196 @@
+//! The curvature law of one log-aesthetic piece in intrinsic form: curvature and tangent
+//! angle along the piece from its two end curvatures, its length and α, in closed form.
+//!
+//! Along a log-aesthetic curve ρ^α is linear in arc length (docs/math.md §2). With t = s/L
+//! the share of the piece's length and r = κ_b/κ_a (one sign, neither zero),
+//!
+//! ```text
+//! κ(t) = κ_a (1 + t e)^(−1/α),          e = r^(−α) − 1 = expm1(−α ln r)
+//! θ(t) − θ_a = κ_a L ∫₀ᵗ (1 + τ e)^(−1/α) dτ = κ_a L (y/e) · expm1(y + Y)/(y + Y)
+//! ```
+//!
+//! where y = ln(1 + t e) and Y = ln(κ(t)/κ_a) = y ln r / (−α ln r): every quotient is an
+//! `expm1`/`ln1p` ratio, so α = 0 (κ = κ_a r^t), α = 1 and r = 1 (a circle) are ordinary
+//! values. For α < 0 the signed power q = sign(κ)|κ|^(−α) is linear in arc length through
+//! zero curvature (the inflection at finite length), which gives the S-shaped pieces and
+//! the ends at zero curvature: κ = sign(q)|q|^p with p = −1/α, and
+//! θ(t) − θ_a = L (|q(t)|^(p+1) − |q_a|^(p+1)) / ((p + 1)(q_b − q_a)).
+
+use crate::foundation::numeric::{expm1_ratio, ln1p_ratio};
+
+/// One piece's law; see the module documentation.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Law {
+    form: Form,
+    ka: f64,
+    len: f64,
+}
+
+#[derive(Clone, Copy, Debug)]
+enum Form {
+    /// One sign, neither end zero: ln r, x = −α ln r and e = expm1(x).
+    Ratio { ln_r: f64, x: f64, e: f64 },
+    /// α < 0 through (or at) zero curvature: q_a, q_b − q_a and p = −1/α.
+    Power { qa: f64, dq: f64, p: f64 },
+}
+
+impl Law {
+    /// The law of the piece with end curvatures `ka`, `kb`, length `len` and slope
+    /// `alpha`; `None` where no log-aesthetic piece has them (α ≥ 0 with ends of opposite
+    /// signs or at zero curvature, or a number that is not finite).
+    pub(super) fn new(ka: f64, kb: f64, len: f64, alpha: f64) -> Option<Law> {
+        if !(ka.is_finite() && kb.is_finite() && len.is_finite() && alpha.is_finite()) {
+            return None;
+        }
+        let form = if ka != 0.0 && kb != 0.0 && ka.signum() == kb.signum() {
+            let ln_r = (kb / ka).ln();
+            let x = -alpha * ln_r;
+            let e = x.exp_m1();
+            if !e.is_finite() {
+                return None;
+            }
+            Form::Ratio { ln_r, x, e }
+        } else if alpha < 0.0 {
+            let q = |k: f64| k.signum() * k.abs().powf(-alpha);
+            let qa = q(ka);
+            Form::Power {
+                qa,
+                dq: q(kb) - qa,
+                p: -1.0 / alpha,
+            }
+        } else {
+            return None;
+        };
+        Some(Law { form, ka, len })
+    }
+
+    /// (θ(t) − θ_a, κ(t)) at the share `t` ∈ [0, 1] of the piece.
+    #[inline]
+    pub(super) fn at(&self, t: f64) -> (f64, f64) {
+        match self.form {
+            Form::Ratio { ln_r, x, e } => {
+                let te = t * e;
+                let y = te.ln_1p();
+                let big_y = if x != 0.0 { ln_r * (y / x) } else { t * ln_r };
+                let y_over_e = t * ln1p_ratio(te);
+                let turn = self.ka * self.len * y_over_e * expm1_ratio(y + big_y);
+                (turn, self.ka * big_y.exp())
+            }
+            Form::Power { qa, dq, p } => {
+                let q = qa + dq * t;
+                let kappa = q.signum() * q.abs().powf(p);
+                if dq == 0.0 {
+                    return (kappa * self.len * t, kappa);
+                }
+                let lift = |q: f64| q.abs().powf(p + 1.0);
+                let turn = self.len * (lift(q) - lift(qa)) / ((p + 1.0) * dq);
+                (turn, kappa)
+            }
+        }
+    }
+
+    /// dκ/dt at the share `t`.
+    #[inline]
+    pub(super) fn slope(&self, t: f64) -> f64 {
+        match self.form {
+            Form::Ratio { ln_r, x, e } => {
+                // d ln κ/dt = ln r · e / (x (1 + t e)), ln r at x = 0.
+                let (_, kappa) = self.at(t);
+                let d = if x != 0.0 {
+                    ln_r * (e / x) / (1.0 + t * e)
+                } else {
+                    ln_r
+                };
+                kappa * d
+            }
+            Form::Power { qa, dq, p } => {
+                let q = qa + dq * t;
+                p * q.abs().powf(p - 1.0) * dq
+            }
+        }
+    }
+
+    /// The share of the piece where its curvature is zero, strictly inside it, if any.
+    pub(super) fn inflection(&self) -> Option<f64> {
+        match self.form {
+            Form::Power { qa, dq, .. } if dq != 0.0 => {
+                let t = -qa / dq;
+                (t > 0.0 && t < 1.0).then_some(t)
+            }
+            _ => None,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// κ(t) from the law against ρ^α linear in s, and θ against a Simpson sum of κ.
+    #[test]
+    fn curvature_and_turning_agree_with_the_definition() {
+        let cases = [
+            (1.0, 3.0, 0.7, -1.0),
+            (3.0, 1.0, 0.7, 2.0),
+            (-2.0, -0.5, 1.3, 0.0),
+            (-2.0, -0.5, 1.3, 1.0),
+            (0.4, 0.4, 2.0, 0.5),
+            (1.0, -2.0, 1.0, -1.0),
+            (0.0, 2.0, 1.0, -0.5),
+            (1.5, 0.0, 1.0, -2.0),
+        ];
+        for (ka, kb, len, alpha) in cases {
+            let law = Law::new(ka, kb, len, alpha).unwrap();
+            let n = 4000;
+            let mut turned = 0.0;
+            for i in 0..n {
+                let (t0, t1) = (i as f64 / n as f64, (i + 1) as f64 / n as f64);
+                let k = |t: f64| law.at(t).1;
+                turned += len / n as f64 / 6.0 * (k(t0) + 4.0 * k(0.5 * (t0 + t1)) + k(t1));
+            }
+            let (turn, kappa) = law.at(1.0);
+            assert!(
+                (kappa - kb).abs() < 1e-12,
+                "{ka} {kb} {alpha}: κ(1) = {kappa}"
+            );
+            // Simpson's sum converges slowly where κ ~ √(distance) at a zero-curvature end.
+            let slack = if ka * kb == 0.0 { 1e-6 } else { 1e-9 };
+            assert!(
+                (turn - turned).abs() < slack,
+                "{ka} {kb} {alpha}: {turn} {turned}"
+            );
+            // ρ^α (ln ρ for α = 0, the signed power for α < 0) is linear in t.
+            let g = |k: f64| {
+                if alpha == 0.0 {
+                    k.abs().ln()
+                } else {
+                    k.signum() * k.abs().powf(-alpha)
+                }
+            };
+            if ka != 0.0 && kb != 0.0 && (ka > 0.0) == (kb > 0.0) || alpha < 0.0 {
+                let mid = g(law.at(0.3).1);
+                let lin = g(ka) + 0.3 * (g(kb) - g(ka));
+                assert!(
+                    (mid - lin).abs() < 1e-12 * (1.0 + lin.abs()),
+                    "{ka} {kb} {alpha}"
+                );
+            }
+        }
+    }
+
+    /// α → 0 and α = 0 agree: the law is continuous there.
+    #[test]
+    fn continuous_across_alpha_zero() {
+        let a = Law::new(1.0, 2.0, 1.0, 0.0).unwrap().at(0.6);
+        let b = Law::new(1.0, 2.0, 1.0, 1e-12).unwrap().at(0.6);
+        assert!((a.0 - b.0).abs() < 1e-11 && (a.1 - b.1).abs() < 1e-11);
+    }
+
+    #[test]
+    fn opposite_signs_need_a_negative_alpha() {
+        assert!(Law::new(1.0, -1.0, 1.0, 0.5).is_none());
+        assert!(Law::new(0.0, 1.0, 1.0, 0.0).is_none());
+        let s = Law::new(1.0, -1.0, 1.0, -1.0).unwrap();
+        assert!((s.inflection().unwrap() - 0.5).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,447 @@
+//! Fitting log-aesthetic paths to points: the fairest curve through (or near) data, the
+//! reverse of drawing from control points.
+//!
+//! Given ordered planar points, [`Fit::from_points`] finds the G2 (or G1) chain of
+//! log-aesthetic segments that minimises the sum of squared orthogonal distances from the
+//! points to the chain (docs/fit.md):
+//!
+//! * **One segment** (`max_segments = 1`, no tolerance): the least-squares segment, α fitted
+//!   within a range or given; its ends move with the data unless pinned.
+//! * **Paths** (a tolerance): the fewest segments such that every point lies within the
+//!   tolerance. The fit starts from one segment (a closed set from two) and splits the
+//!   segment nearest the worst point, exactly (both halves follow the same curve, so a
+//!   split never loses ground), then fits all segments together again, their joints free to
+//!   move and G2 at every joint by construction.
+//!
+//! The chain is described by its start, the curvature at every joint and each segment's
+//! length and α (`model.rs`); a segment's curvature follows the log-aesthetic law between
+//! its end curvatures (`law.rs`), and for α < 0 may pass through zero (an S): such a segment
+//! becomes two [`Segment`]s meeting at the inflection. The solver is Levenberg–Marquardt
+//! over those numbers with each point's foot found again at every step (`solve.rs`), from a
+//! start read off the data's smoothed tangent and curvature (`guess.rs`). Every result is
+//! checked before it is returned (`build.rs`): finite, G2 (or G1) at every joint, closed
+//! when asked, and each point within the tolerance when one was asked.
+
+mod build;
+mod guess;
+mod law;
+mod model;
+mod solve;
+
+use kurbo::Point;
+
+use crate::curve::chain::SegmentChain;
+use crate::foundation::error::{Error, Result};
+use crate::foundation::numeric::Complex;
+use crate::path::{Closure, Continuity};
+use crate::segment::Segment;
+
+use guess::Profile;
+use model::Layout;
+use solve::{Constraints, Problem, State};
+
+/// The most segments a fit may use.
+pub const MAX_FIT_SEGMENTS: usize = 64;
+
+/// The default range of α a fitted segment may take.
+pub const DEFAULT_ALPHA_RANGE: (f64, f64) = (-5.0, 10.0);
+
+/// How α is chosen for the fitted segments.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum FitAlpha {
+    /// Every segment has this α.
+    Fixed(f64),
+    /// Each segment's α is fitted within `[min, max]`; with `shared`, one α for all.
+    Range {
+        /// Smallest α.
+        min: f64,
+        /// Largest α.
+        max: f64,
+        /// One α for every segment.
+        shared: bool,
+    },
+}
+
+impl Default for FitAlpha {
+    fn default() -> Self {
+        FitAlpha::Range {
+            min: DEFAULT_ALPHA_RANGE.0,
+            max: DEFAULT_ALPHA_RANGE.1,
+            shared: false,
+        }
+    }
+}
+
+/// The loss applied to each point's distance.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum FitLoss {
+    /// Least squares: Σ d².
+    #[default]
+    Squares,
+    /// Huber's robust loss: d² up to `delta`, 2·delta·d − delta² beyond (outliers pull
+    /// linearly, not quadratically). `delta` in the points' units.
+    Huber {
+        /// Where the loss turns linear.
+        delta: f64,
+    },
+}
+
+/// What a fit is asked for. `FitOptions::default()` is the least-squares single segment, α
+/// fitted in [`DEFAULT_ALPHA_RANGE`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct FitOptions {
+    /// The largest distance allowed between a point and the fit (the points' units); `None`
+    /// fits exactly `max_segments` segments by least squares.
+    pub tolerance: Option<f64>,
+    /// The most segments (with a tolerance), or the number of segments (without).
+    pub max_segments: usize,
+    /// How α is chosen.
+    pub alpha: FitAlpha,
+    /// G2 (curvature continuous at the joints, the default) or G1.
+    pub continuity: Continuity,
+    /// Open, or closed (the points go round once, the last not repeating the first).
+    pub closure: Closure,
+    /// Pin the ends of an open fit on the first and last points.
+    pub pin_ends: bool,
+    /// The loss on each distance.
+    pub loss: FitLoss,
+    /// A weight per point (non-negative, not all zero), or equal weights.
+    pub weights: Option<Vec<f64>>,
+}
+
+impl Default for FitOptions {
+    fn default() -> Self {
+        FitOptions {
+            tolerance: None,
+            max_segments: 1,
+            alpha: FitAlpha::default(),
+            continuity: Continuity::G2,
+            closure: Closure::Open,
+            pin_ends: false,
+            loss: FitLoss::Squares,
+            weights: None,
+        }
+    }
+}
+
+/// One fitted log-aesthetic segment (one or, through an inflection, two [`Segment`]s).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FitPiece {
+    /// Its α.
+    pub alpha: f64,
+    /// Signed curvature at its start and end.
+    pub curvatures: [f64; 2],
+    /// Its arc length.
+    pub length: f64,
+    /// Arc length from the fit's start to its start.
+    pub s: f64,
+    /// Arc length (from the fit's start) of its point of zero curvature, for an S.
+    pub inflection: Option<f64>,
+    /// The [`Segment`]s it is made of: `segments[0]` and, for an S, `segments[1]`.
+    pub segments: [usize; 2],
+}
+
+/// A joint of a fit between two pieces, as the check measured it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FitJoint {
+    /// Arc length from the fit's start (a closed fit's closing joint is at its length).
+    pub s: f64,
+    /// The joint.
+    pub point: Point,
+    /// Signed curvature at the end of the piece before it.
+    pub curvature_before: f64,
+    /// Signed curvature at the start of the piece after it.
+    pub curvature_after: f64,
+    /// Distance between the pieces' ends.
+    pub gap: f64,
+    /// Angle between their tangents, radians.
+    pub tangent_jump: f64,
+    /// |κ⁻ − κ⁺| / max(|κ⁻|, |κ⁺|) (0 when both are 0).
+    pub curvature_jump: f64,
+}
+
+/// A log-aesthetic path fitted to points: its segments, joints and how far each point lies
+/// from it. A [`Curve`](crate::Curve) through its segments ([`SegmentChain`]).
+///
+/// ```
+/// use kurbo::Point;
+/// use lac::{Curve, Fit, FitOptions, Segment};
+///
+/// // Points on a known clothoid segment (curvature from 1 to 3): the fit finds it again.
+/// let truth = Segment::from_curvatures(Point::ORIGIN, 0.0, [1.0, 3.0], 1.0, -1.0)?;
+/// let points: Vec<Point> = truth.sample_by_arc_length(200)?.iter().map(|s| s.point).collect();
+/// let fit = Fit::from_points(&points, &FitOptions::default())?;
+/// assert!(fit.max_distance() < 1e-9);
+/// assert!((fit.pieces()[0].alpha + 1.0).abs() < 1e-5);
+/// # Ok::<(), lac::Error>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct Fit {
+    segments: Vec<Segment>,
+    pieces: Vec<FitPiece>,
+    joints: Vec<FitJoint>,
+    continuity: Continuity,
+    closure: Closure,
+    distances: Vec<f64>,
+    feet: Vec<f64>,
+    rms: f64,
+    worst: usize,
+}
+
+impl SegmentChain for Fit {
+    fn pieces(&self) -> &[Segment] {
+        &self.segments
+    }
+}
+
+impl Fit {
+    /// Fit a log-aesthetic path to ordered `points`; see the module documentation.
+    ///
+    /// Errors: a non-finite point or option, fewer than 3 distinct points (4 closed),
+    /// points all on one line, [`Error::FitToleranceNotMet`] naming the worst stretch of
+    /// the points and the best distance reached, or a fit that does not pass its own check.
+    pub fn from_points(points: &[Point], options: &FitOptions) -> Result<Fit> {
+        let input = build::Input::new(points, options)?;
+        let closed = options.closure == Closure::Closed;
+        let profile = Profile::new(&input.data, closed);
+        let layout_of = |n: usize| Layout {
+            n,
+            continuity: options.continuity,
+            alpha: input.alpha_mode,
+            closed,
+        };
+        // Pinned ends are held from the free fit's answer: a first guess read off noisy data
+        // can miss the last point by a tenth of the length, which the KKT steps then fight.
+        let constraints = Constraints {
+            start: None,
+            end: None,
+            closed_turn: profile.closed_turn,
+        };
+        let pins = Constraints {
+            start: Some(input.data[0]),
+            end: Some(*input.data.last().unwrap()),
+            closed_turn: None,
+        };
+        let tolerance = input.tolerance;
+        let target = if tolerance.is_some() {
+            options.max_segments
+        } else {
+            options.max_segments.max(1)
+        };
+        // The first chain: a piece for every run of monotone curvature in the data (at
+        // least two round a closed set), or the asked number when no tolerance.
+        let cuts: Vec<f64> = if tolerance.is_some() {
+            let mut cuts = profile.curvature_extrema();
+            cuts.truncate(target.saturating_sub(1));
+            if closed && cuts.len() < 2 {
+                cuts = (1..3.min(target))
+                    .map(|i| profile.total * i as f64 / 3.0)
+                    .collect();
+            }
+            cuts
+        } else {
+            (1..target)
+                .map(|i| profile.total * i as f64 / target as f64)
+                .collect()
+        };
+        let first = cuts.len() + 1;
+        let layout = layout_of(first);
+        let pieces = guess::pieces(&profile, &cuts, input.alpha_mode, input.alpha_range);
+        let start = (input.data[0], profile.theta_at(0.0));
+        let x = layout.pack(start, &pieces);
+        let problem = |layout: Layout| Problem {
+            layout,
+            data: &input.data,
+            weights: &input.weights,
+            loss: input.loss,
+            alpha_range: input.alpha_range,
+            constraints,
+        };
+        let mut state = problem(layout)
+            .state(x, &profile.s)
+            .ok_or(Error::NumericalFailure {
+                what: "the first guess of the fit",
+            })?;
+        let mut n = first;
+        loop {
+            state = problem(layout_of(n)).minimize(state, 100);
+            if options.pin_ends && !closed {
+                let pinned = Problem {
+                    constraints: pins,
+                    ..problem(layout_of(n))
+                };
+                let mut x = state.x.clone();
+                (x[0], x[1]) = (input.data[0].re, input.data[0].im);
+                state = pinned
+                    .state(x, &state.feet)
+                    .ok_or(Error::NumericalFailure {
+                        what: "the fit with pinned ends",
+                    })?;
+                state = pinned.minimize(state, 100);
+            }
+            let worst = worst_index(&state.distances);
+            let reached = state.distances[worst];
+            let done = match tolerance {
+                Some(tol) => reached <= tol,
+                None => true,
+            };
+            if done {
+                break;
+            }
+            if n >= target {
+                let tol = tolerance.unwrap_or(0.0);
+                let (from, to) = stretch(&state.distances, worst, tol);
+                return Err(Error::FitToleranceNotMet {
+                    tolerance: tol * input.scale,
+                    reached: reached * input.scale,
+                    segments: target,
+                    from,
+                    to,
+                });
+            }
+            state = split(&layout_of(n), &problem(layout_of(n + 1)), state, worst).ok_or(
+                Error::NumericalFailure {
+                    what: "the split of a fitted segment",
+                },
+            )?;
+            n += 1;
+        }
+        if !closed && !options.pin_ends {
+            (state, n) = trim(&problem(layout_of(n)), state).ok_or(Error::NumericalFailure {
+                what: "the trimmed fit",
+            })?;
+        }
+        build::build(&input, &layout_of(n), state, options)
+    }
+
+    /// The fitted pieces in order.
+    pub fn pieces(&self) -> &[FitPiece] {
+        &self.pieces
+    }
+
+    /// The joints between pieces (a closed fit's last joint closes it).
+    pub fn joints(&self) -> &[FitJoint] {
+        &self.joints
+    }
+
+    /// G2 or G1.
+    pub fn continuity(&self) -> Continuity {
+        self.continuity
+    }
+
+    /// Open or closed.
+    pub fn closure(&self) -> Closure {
+        self.closure
+    }
+
+    /// Each point's distance to the fit, in the points' order.
+    pub fn distances(&self) -> &[f64] {
+        &self.distances
+    }
+
+    /// Each point's foot on the fit, as arc length from its start.
+    pub fn feet(&self) -> &[f64] {
+        &self.feet
+    }
+
+    /// Root mean square of the distances (unweighted).
+    pub fn rms(&self) -> f64 {
+        self.rms
+    }
+
+    /// The largest distance.
+    pub fn max_distance(&self) -> f64 {
+        self.distances[self.worst]
+    }
+
+    /// The point farthest from the fit (0-based).
+    pub fn worst_point(&self) -> usize {
+        self.worst
+    }
+
+    /// The points farthest from the fit, farthest first (at most `count`).
+    pub fn farthest_points(&self, count: usize) -> Vec<usize> {
+        let mut order: Vec<usize> = (0..self.distances.len()).collect();
+        order.sort_by(|&a, &b| self.distances[b].total_cmp(&self.distances[a]));
+        order.truncate(count);
+        order
+    }
+}
+
+/// The index of the largest distance.
+fn worst_index(distances: &[f64]) -> usize {
+    let mut worst = 0;
+    for (k, d) in distances.iter().enumerate() {
+        if *d > distances[worst] {
+            worst = k;
+        }
+    }
+    worst
+}
+
+/// The run of points around `worst` farther than `tolerance`.
+fn stretch(distances: &[f64], worst: usize, tolerance: f64) -> (usize, usize) {
+    let mut from = worst;
+    while from > 0 && distances[from - 1] > tolerance {
+        from -= 1;
+    }
+    let mut to = worst;
+    while to + 1 < distances.len() && distances[to + 1] > tolerance {
+        to += 1;
+    }
+    (from, to)
+}
+
+/// The chain with the piece nearest the worst point split in two at that point (its
+/// middle half), both halves on the same curve.
+fn split(layout: &Layout, problem: &Problem, state: State, worst: usize) -> Option<State> {
+    let chain = &state.chain;
+    let (i, t) = chain.locate(state.feet[worst], 0);
+    let t = t.clamp(0.25, 0.75);
+    let mut pieces = chain.numbers.clone();
+    let (ka, kb, len, alpha) = pieces[i];
+    let kt = chain.pieces[i].law.at(t).1;
+    pieces[i] = (ka, kt, t * len, alpha);
+    pieces.insert(i + 1, (kt, kb, (1.0 - t) * len, alpha));
+    let _ = layout;
+    let start = (Complex::new(state.x[0], state.x[1]), state.x[2]);
+    let x = problem.layout.pack(start, &pieces);
+    problem.state(x, &state.feet)
+}
+
+/// The open chain cut to the stretch between the first and the last foot of a point: the
+/// data say nothing of the curve beyond, where it would otherwise run on at no cost. The
+/// state and its number of pieces.
+fn trim(problem: &Problem, state: State) -> Option<(State, usize)> {
+    let chain = &state.chain;
+    let n = chain.pieces.len();
+    let lo = state.feet.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = state.feet.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let (i0, t0) = chain.locate(lo, 0);
+    let (i1, t1) = chain.locate(hi, n - 1);
+    let mut pieces = Vec::with_capacity(i1 + 1 - i0);
+    for i in i0..=i1 {
+        let (_, _, len, alpha) = chain.numbers[i];
+        let a = if i == i0 { t0 } else { 0.0 };
+        let b = if i == i1 { t1 } else { 1.0 };
+        if (b - a).is_nan() || b - a <= 1e-9 {
+            // A piece that would be cut to (almost) nothing: keep the chain as it is.
+            return Some((state, n));
+        }
+        let law = chain.pieces[i].law;
+        pieces.push((law.at(a).1, law.at(b).1, (b - a) * len, alpha));
+    }
+    let (p, _, _) = chain.pieces[i0].at(t0);
+    let theta = chain.pieces[i0].thetas[0] + chain.pieces[i0].law.at(t0).0;
+    let layout = Layout {
+        n: pieces.len(),
+        ..problem.layout
+    };
+    let trimmed = Problem { layout, ..*problem };
+    let x = layout.pack((p, theta), &pieces);
+    let feet: Vec<f64> = state.feet.iter().map(|f| f - lo).collect();
+    Some((trimmed.state(x, &feet)?, layout.n))
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,465 @@
+//! Orthogonal-distance least squares over a chain's numbers: Levenberg–Marquardt on the
+//! points' distances to the chain, each point's foot (nearest point of the chain) found
+//! again at every evaluation, with equality constraints (a closed chain's end on its start,
+//! a pinned end) held by the KKT system of each step.
+//!
+//! A point's residual is its distance along the chain's normal at its foot, whose
+//! derivative in any number is the normal component of how the foot moves (the foot's own
+//! slide along the chain is second order). A point whose foot is an open chain's end also
+//! has the tangential component, which pulls the end onto the data's end. Weights: the
+//! caller's, times Huber's (1, or δ/|r| beyond δ) when a robust loss is asked, recomputed
+//! at every step (iteratively reweighted least squares).
+
+use crate::foundation::numeric::Complex;
+
+use super::model::{Chain, Layout, Sensitivity};
+
+/// The slope below which a piece may not pass through zero curvature: its halves could not
+/// reach zero curvature to the precision a joint is checked to (see `build.rs`).
+pub(super) const INFLECTION_ALPHA_MIN: f64 = -1.5;
+
+/// The loss applied to each distance.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Loss {
+    Squares,
+    /// Huber's loss with this δ (in the normalized units of the problem).
+    Huber(f64),
+}
+
+/// What the fit is asked to hold besides fitting.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Constraints {
+    /// The chain starts here (its start point is not fitted).
+    pub(super) start: Option<Complex>,
+    /// The chain ends here.
+    pub(super) end: Option<Complex>,
+    /// Closed: the end point and tangent on the start's, after turning this much.
+    pub(super) closed_turn: Option<f64>,
+}
+
+/// A least-squares problem: data, weights, loss, the layout of the numbers and their ranges.
+pub(super) struct Problem<'a> {
+    pub(super) layout: Layout,
+    pub(super) data: &'a [Complex],
+    pub(super) weights: &'a [f64],
+    pub(super) loss: Loss,
+    pub(super) alpha_range: (f64, f64),
+    pub(super) constraints: Constraints,
+}
+
+/// A chain and how the data lie against it.
+#[derive(Clone, Debug)]
+pub(super) struct State {
+    pub(super) x: Vec<f64>,
+    pub(super) chain: Chain,
+    /// Each point's foot, as arc length along the chain.
+    pub(super) feet: Vec<f64>,
+    /// Each point's distance to its foot.
+    pub(super) distances: Vec<f64>,
+    /// Σ weight × loss(distance).
+    pub(super) cost: f64,
+}
+
+/// One point against the chain.
+struct Contact {
+    piece: usize,
+    t: f64,
+    point: Complex,
+    theta: f64,
+    /// Normal and tangential components of data − foot.
+    rn: f64,
+    rt: f64,
+    /// At an open chain's end.
+    at_end: bool,
+}
+
+fn sub(a: Complex, b: Complex) -> Complex {
+    Complex::new(a.re - b.re, a.im - b.im)
+}
+
+/// The foot of `d` on the chain near `s` (Newton on (P(s) − d)·T(s) = 0).
+fn contact(chain: &Chain, d: Complex, s: &mut f64, hint: &mut usize, closed: bool) -> Contact {
+    let total = chain.length();
+    let wrap = |s: f64| {
+        if closed {
+            s.rem_euclid(total)
+        } else {
+            s.clamp(0.0, total)
+        }
+    };
+    let mut x = wrap(*s);
+    for _ in 0..12 {
+        let (i, _, p, theta, kappa) = chain.at(x, *hint);
+        *hint = i;
+        let tangent = Complex::cis(theta);
+        let diff = sub(p, d);
+        let f = diff.re * tangent.re + diff.im * tangent.im;
+        let across = -diff.re * tangent.im + diff.im * tangent.re;
+        let slope = 1.0 + kappa * across;
+        let step = if slope > 0.2 { -f / slope } else { -f };
+        let step = step.clamp(-0.1 * total, 0.1 * total);
+        let next = wrap(x + step);
+        let moved = (next - x).abs();
+        x = next;
+        if moved <= 1e-14 * total {
+            break;
+        }
+    }
+    *s = x;
+    let (piece, t, point, theta, _) = chain.at(x, *hint);
+    let tangent = Complex::cis(theta);
+    let r = sub(d, point);
+    let rn = -r.re * tangent.im + r.im * tangent.re;
+    let rt = r.re * tangent.re + r.im * tangent.im;
+    let at_end = !closed && (x <= 0.0 || x >= total);
+    Contact {
+        piece,
+        t,
+        point,
+        theta,
+        rn,
+        rt: if at_end { rt } else { 0.0 },
+        at_end,
+    }
+}
+
+impl Problem<'_> {
+    fn loss(&self, r: f64) -> f64 {
+        match self.loss {
+            Loss::Squares => r * r,
+            Loss::Huber(delta) => {
+                if r <= delta {
+                    r * r
+                } else {
+                    2.0 * delta * r - delta * delta
+                }
+            }
+        }
+    }
+
+    fn irls_weight(&self, r: f64) -> f64 {
+        match self.loss {
+            Loss::Huber(delta) if r > delta => delta / r,
+            _ => 1.0,
+        }
+    }
+
+    /// The state of the numbers `x`, the feet found from `feet`; `None` where `x`
+    /// describes no chain.
+    pub(super) fn state(&self, x: Vec<f64>, feet: &[f64]) -> Option<State> {
+        let chain = Chain::new(&self.layout, &x)?;
+        let closed = self.layout.closed;
+        let mut feet = feet.to_vec();
+        let mut distances = Vec::with_capacity(self.data.len());
+        let mut cost = 0.0;
+        let mut hint = 0;
+        for (k, &d) in self.data.iter().enumerate() {
+            let c = contact(&chain, d, &mut feet[k], &mut hint, closed);
+            let r = c.rn.hypot(c.rt);
+            distances.push(r);
+            cost += self.weights[k] * self.loss(r);
+        }
+        cost.is_finite().then_some(State {
+            x,
+            chain,
+            feet,
+            distances,
+            cost,
+        })
+    }
+
+    /// The constraint values at a state, and their derivatives in every number.
+    fn constraints(
+        &self,
+        state: &State,
+        sens: &[[Option<Sensitivity>; 4]],
+    ) -> (Vec<f64>, Vec<Vec<f64>>) {
+        let np = self.layout.len();
+        let chain = &state.chain;
+        let (end, theta_end) = chain.end();
+        let start = chain.start;
+        // ∂E/∂x and ∂θ_end/∂x.
+        let mut de = vec![Complex::ZERO; np];
+        let mut dtheta = vec![0.0; np];
+        de[0] = Complex::new(1.0, 0.0);
+        de[1] = Complex::new(0.0, 1.0);
+        de[2] = sub(end, start).mul_i();
+        dtheta[2] = 1.0;
+        for (j, piece_sens) in sens.iter().enumerate() {
+            let (ej, _) = chain.pieces[j].end();
+            let arm = sub(end, ej).mul_i();
+            for (slot, s) in self.layout.slots(j).iter().zip(piece_sens) {
+                let (Some(b), Some(s)) = (slot, s) else {
+                    continue;
+                };
+                let (shift, turn) = s.end();
+                de[*b] = Complex::new(
+                    de[*b].re + shift.re + turn * arm.re,
+                    de[*b].im + shift.im + turn * arm.im,
+                );
+                dtheta[*b] += turn;
+            }
+        }
+        let mut values = Vec::new();
+        let mut rows = Vec::new();
+        if let Some(turn) = self.constraints.closed_turn {
+            values.extend([
+                end.re - start.re,
+                end.im - start.im,
+                theta_end - chain.theta0 - turn,
+            ]);
+            let mut rx: Vec<f64> = de.iter().map(|d| d.re).collect();
+            let mut ry: Vec<f64> = de.iter().map(|d| d.im).collect();
+            rx[0] -= 1.0;
+            ry[1] -= 1.0;
+            let mut rt = dtheta.clone();
+            rt[2] -= 1.0;
+            rows.extend([rx, ry, rt]);
+        }
+        if let Some(p) = self.constraints.end {
+            values.extend([end.re - p.re, end.im - p.im]);
+            rows.push(de.iter().map(|d| d.re).collect());
+            rows.push(de.iter().map(|d| d.im).collect());
+        }
+        (values, rows)
+    }
+
+    /// Which numbers are fitted.
+    fn free(&self) -> Vec<usize> {
+        let pinned = self.constraints.start.is_some();
+        (0..self.layout.len())
+            .filter(|&j| !(pinned && j < 2))
+            .collect()
+    }
+
+    /// Keep the numbers in range: each α within the range (and above
+    /// [`INFLECTION_ALPHA_MIN`] on a piece through zero curvature), lengths positive.
+    fn clamp(&self, x: &mut [f64]) {
+        let (lo, hi) = self.alpha_range;
+        for i in 0..self.layout.n {
+            if let Some(j) = self.layout.alpha_slot(i) {
+                x[j] = x[j].clamp(lo, hi);
+                let (ka, kb, _, _) = self.layout.piece(x, i);
+                let inflects = !(ka != 0.0 && kb != 0.0 && ka.signum() == kb.signum());
+                if inflects && x[j] < INFLECTION_ALPHA_MIN && hi >= INFLECTION_ALPHA_MIN {
+                    x[j] = INFLECTION_ALPHA_MIN;
+                }
+            }
+            let l = self.layout.length_slot(i);
+            x[l] = x[l].max(-30.0);
+        }
+    }
+
+    /// Normal equations (JᵀWJ, JᵀWr) over all numbers at `state`, and the sensitivities.
+    fn normal_equations(
+        &self,
+        state: &State,
+    ) -> (Vec<f64>, Vec<f64>, Vec<[Option<Sensitivity>; 4]>) {
+        let np = self.layout.len();
+        let chain = &state.chain;
+        let sens: Vec<_> = (0..self.layout.n)
+            .map(|i| chain.sensitivities(&self.layout, &state.x, i))
+            .collect();
+        // Each piece's end shift and turn per number.
+        let ends: Vec<Vec<(usize, Complex, f64)>> = sens
+            .iter()
+            .enumerate()
+            .map(|(j, s)| {
+                self.layout
+                    .slots(j)
+                    .iter()
+                    .zip(s)
+                    .filter_map(|(slot, s)| {
+                        let (shift, turn) = s.as_ref()?.end();
+                        Some(((*slot)?, shift, turn))
+                    })
+                    .collect()
+            })
+            .collect();
+        let mut a = vec![0.0; np * np];
+        let mut g = vec![0.0; np];
+        let mut dn = vec![0.0; np];
+        let mut dt = vec![0.0; np];
+        let mut touched: Vec<usize> = Vec::with_capacity(np);
+        let mut hint = 0;
+        let closed = self.layout.closed;
+        for (k, &d) in self.data.iter().enumerate() {
+            let mut s = state.feet[k];
+            let c = contact(chain, d, &mut s, &mut hint, closed);
+            let w = self.weights[k] * self.irls_weight(c.rn.hypot(c.rt));
+            if w == 0.0 {
+                continue;
+            }
+            let tangent = Complex::cis(c.theta);
+            let normal = tangent.mul_i();
+            touched.clear();
+            let mut add = |b: usize, dp: Complex, dn: &mut [f64], dt: &mut [f64]| {
+                if dn[b] == 0.0 && dt[b] == 0.0 {
+                    touched.push(b);
+                }
+                dn[b] -= normal.re * dp.re + normal.im * dp.im;
+                dt[b] -= tangent.re * dp.re + tangent.im * dp.im;
+            };
+            add(0, Complex::new(1.0, 0.0), &mut dn, &mut dt);
+            add(1, Complex::new(0.0, 1.0), &mut dn, &mut dt);
+            add(2, sub(c.point, chain.start).mul_i(), &mut dn, &mut dt);
+            for (j, end_moves) in ends.iter().enumerate().take(c.piece) {
+                let (ej, _) = chain.pieces[j].end();
+                let arm = sub(c.point, ej).mul_i();
+                for &(b, shift, turn) in end_moves {
+                    let dp = Complex::new(shift.re + turn * arm.re, shift.im + turn * arm.im);
+                    add(b, dp, &mut dn, &mut dt);
+                }
+            }
+            for (slot, s) in self.layout.slots(c.piece).iter().zip(&sens[c.piece]) {
+                if let (Some(b), Some(s)) = (slot, s) {
+                    add(
+                        *b,
+                        s.shift_at(&chain.pieces[c.piece], c.t),
+                        &mut dn,
+                        &mut dt,
+                    );
+                }
+            }
+            for (ii, &p) in touched.iter().enumerate() {
+                let (np_, tp) = (dn[p], dt[p]);
+                g[p] += w * (np_ * c.rn + if c.at_end { tp * c.rt } else { 0.0 });
+                for &q in &touched[..=ii] {
+                    let v = w * (np_ * dn[q] + if c.at_end { tp * dt[q] } else { 0.0 });
+                    a[p * np + q] += v;
+                    if p != q {
+                        a[q * np + p] += v;
+                    }
+                }
+            }
+            for &p in touched.iter() {
+                dn[p] = 0.0;
+                dt[p] = 0.0;
+            }
+        }
+        (a, g, sens)
+    }
+
+    /// Levenberg–Marquardt from `state` for at most `iterations` steps; the best state seen.
+    pub(super) fn minimize(&self, mut state: State, iterations: usize) -> State {
+        let free = self.free();
+        let nf = free.len();
+        let np = self.layout.len();
+        let mut lambda = 1e-3;
+        let mut merit_weight = 0.0;
+        for _ in 0..iterations {
+            let (a, g, sens) = self.normal_equations(&state);
+            let (c, crow) = self.constraints(&state, &sens);
+            let nc = c.len();
+
+            let violation = |c: &[f64]| c.iter().map(|v| v.abs()).sum::<f64>();
+            let merit = |s: &State, c: &[f64], mw: f64| s.cost + mw * violation(c);
+            let mut improved = false;
+            while lambda < 1e12 {
+                let n = nf + nc;
+                let mut m = vec![0.0; n * n];
+                let mut rhs = vec![0.0; n];
+                for (ii, &p) in free.iter().enumerate() {
+                    for (jj, &q) in free.iter().enumerate() {
+                        m[ii * n + jj] = a[p * np + q];
+                    }
+                    let diag = a[p * np + p];
+                    m[ii * n + ii] += lambda * diag.max(1e-12) + 1e-300;
+                    rhs[ii] = -g[p];
+                    for (ci, row) in crow.iter().enumerate() {
+                        m[ii * n + nf + ci] = row[p];
+                        m[(nf + ci) * n + ii] = row[p];
+                    }
+                }
+                for (ci, v) in c.iter().enumerate() {
+                    rhs[nf + ci] = -v;
+                }
+                // g was Jᵀr with r = data − foot and J = ∂r/∂x: the step solves
+                // (JᵀJ + λD) δ = −Jᵀr.
+                let Some(sol) = solve_dense(&mut m, &mut rhs, n) else {
+                    lambda *= 10.0;
+                    continue;
+                };
+                if nc > 0 {
+                    let mu = sol[nf..].iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                    merit_weight = f64::max(merit_weight, 2.0 * mu + 1e-12);
+                }
+                let mut x = state.x.clone();
+                for (ii, &p) in free.iter().enumerate() {
+                    x[p] += sol[ii];
+                }
+                self.clamp(&mut x);
+                let before = merit(&state, &c, merit_weight);
+                if let Some(trial) = self.state(x, &state.feet) {
+                    let (tc, _) = if nc > 0 {
+                        let sens_t: Vec<_> = (0..self.layout.n)
+                            .map(|_| [None, None, None, None])
+                            .collect();
+                        self.constraints(&trial, &sens_t)
+                    } else {
+                        (Vec::new(), Vec::new())
+                    };
+                    let after = merit(&trial, &tc, merit_weight);
+                    if after < before || (after == before && nc > 0) {
+                        let gain = (before - after) / before.max(1e-300);
+                        let step: f64 = sol[..nf].iter().map(|v| v * v).sum::<f64>().sqrt();
+                        state = trial;
+                        lambda = (lambda / 3.0).max(1e-12);
+                        improved = true;
+                        if gain < 1e-13 && step < 1e-10 {
+                            return state;
+                        }
+                        break;
+                    }
+                }
+                lambda *= 4.0;
+            }
+            if !improved {
+                break;
+            }
+        }
+        state
+    }
+}
+
+/// Solve `m x = rhs` (n × n, row-major) by Gaussian elimination with partial pivoting;
+/// `None` when singular.
+fn solve_dense(m: &mut [f64], rhs: &mut [f64], n: usize) -> Option<Vec<f64>> {
+    for col in 0..n {
+        let pivot = (col..n).max_by(|&i, &j| {
+            m[i * n + col]
+                .abs()
+                .partial_cmp(&m[j * n + col].abs())
+                .unwrap_or(std::cmp::Ordering::Equal)
+        })?;
+        if m[pivot * n + col] == 0.0 || m[pivot * n + col].is_nan() {
+            return None;
+        }
+        if pivot != col {
+            for k in 0..n {
+                m.swap(col * n + k, pivot * n + k);
+            }
+            rhs.swap(col, pivot);
+        }
+        let inv = 1.0 / m[col * n + col];
+        for row in col + 1..n {
+            let f = m[row * n + col] * inv;
+            if f == 0.0 {
+                continue;
+            }
+            for k in col..n {
+                m[row * n + k] -= f * m[col * n + k];
+            }
+            rhs[row] -= f * rhs[col];
+        }
+    }
+    let mut x = vec![0.0; n];
+    for row in (0..n).rev() {
+        let mut v = rhs[row];
+        for k in row + 1..n {
+            v -= m[row * n + k] * x[k];
+        }
+        x[row] = v / m[row * n + row];
+    }
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}

@@ -27,6 +27,8 @@ pub(super) struct Profile {
     /// Tangent angle after the whole closed set, where it returns to the first point's
     /// (the first angle plus a whole number of turns).
     pub(super) closed_turn: Option<f64>,
+    /// The half-width of the smoothing window, in points.
+    pub(super) window: usize,
 }
 
 fn sub(a: Complex, b: Complex) -> Complex {
@@ -159,11 +161,12 @@ impl Profile {
             theta,
             kappa,
             closed_turn,
+            window: w,
         }
     }
 
     /// The chord lengths where the smoothed curvature turns from rising to falling or back
-    /// (by more than a twentieth of its whole range): where one log-aesthetic segment,
+    /// (by more than a fifth of its whole range): where one log-aesthetic segment,
     /// whose curvature is monotone, must end and the next begin.
     pub(super) fn curvature_extrema(&self) -> Vec<f64> {
         let (lo, hi) = self
@@ -172,7 +175,7 @@ impl Profile {
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &k| {
                 (a.min(k), b.max(k))
             });
-        let band = 0.05 * (hi - lo);
+        let band = 0.2 * (hi - lo);
         if band.is_nan() || band <= 0.0 {
             return Vec::new();
         }
@@ -193,8 +196,19 @@ impl Profile {
                 at = k;
             }
         }
-        cuts.retain(|&c| c > 0.02 * self.total && c < 0.98 * self.s[self.s.len() - 1]);
-        cuts
+        // Not within a window of an open end (where the curvature is extrapolated), nor
+        // within a window of each other.
+        let n = self.s.len();
+        let margin = self.total * (self.window as f64 * 2.0 + 1.0) / n as f64;
+        let end = self.s[n - 1];
+        cuts.retain(|&c| c > margin && c < end - margin);
+        let mut kept: Vec<f64> = Vec::with_capacity(cuts.len());
+        for c in cuts {
+            if kept.last().is_none_or(|&k| c - k > margin) {
+                kept.push(c);
+            }
+        }
+        kept
     }
 
     /// The smoothed curvature at chord length `x`, interpolated.
@@ -263,6 +277,20 @@ pub(super) fn pieces(
     alpha: AlphaMode,
     range: (f64, f64),
 ) -> Vec<(f64, f64, f64, f64)> {
+    pieces_and_misfits(profile, cuts, alpha, range)
+        .into_iter()
+        .map(|(p, _)| p)
+        .collect()
+}
+
+/// [`pieces`], each with the largest difference between its law's curvature and the
+/// smoothed curvature of the data.
+fn pieces_and_misfits(
+    profile: &Profile,
+    cuts: &[f64],
+    alpha: AlphaMode,
+    range: (f64, f64),
+) -> Vec<((f64, f64, f64, f64), f64)> {
     let mut bounds = vec![0.0];
     bounds.extend_from_slice(cuts);
     bounds.push(profile.total);
@@ -296,7 +324,7 @@ pub(super) fn pieces(
                 .collect(),
         };
         let opposite = ka.signum() != kb.signum();
-        let mut best = (f64::INFINITY, candidates[0]);
+        let mut best = (f64::INFINITY, candidates[0], f64::INFINITY);
         for &alpha in &candidates {
             if opposite && alpha < INFLECTION_ALPHA_MIN && alpha != candidates[0] {
                 continue;
@@ -304,26 +332,31 @@ pub(super) fn pieces(
             let Some(law) = Law::new(ka, kb, len, alpha) else {
                 continue;
             };
-            let err: f64 = samples
-                .iter()
-                .map(|&(t, k)| (law.at(t).1 - k).powi(2))
-                .sum();
+            let (mut err, mut largest) = (0.0, 0.0f64);
+            for &(t, k) in &samples {
+                let d = (law.at(t).1 - k).abs();
+                err += d * d;
+                largest = largest.max(d);
+            }
             if err < best.0 {
-                best = (err, alpha);
+                best = (err, alpha, largest);
             }
         }
         let mut alpha_guess = best.1;
         if !best.0.is_finite() {
-            // No law with these ends in the range (opposite signs and α ≥ 0): make the ends
-            // one-signed, the weaker one small.
-            if ka.abs() < kb.abs() {
-                ka = floor.copysign(kb);
+            // No law with these ends in the range (opposite signs and α ≥ 0): start from the
+            // circle of the piece's mean curvature (its turning over its length), which
+            // every α has.
+            let mean = (profile.theta_at(b) - profile.theta_at(a)) / len;
+            let mean = if mean.abs() < floor {
+                floor.copysign(if mean == 0.0 { 1.0 } else { mean })
             } else {
-                kb = floor.copysign(ka);
-            }
-            alpha_guess = candidates[0];
+                mean
+            };
+            (ka, kb) = (mean, mean);
+            alpha_guess = candidates[candidates.len() / 2];
         }
-        out.push((ka, kb, len, alpha_guess));
+        out.push(((ka, kb, len, alpha_guess), best.2));
     }
     out
 }

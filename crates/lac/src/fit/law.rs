@@ -16,7 +16,7 @@
 //! the ends at zero curvature: κ = sign(q)|q|^p with p = −1/α, and
 //! θ(t) − θ_a = L (|q(t)|^(p+1) − |q_a|^(p+1)) / ((p + 1)(q_b − q_a)).
 
-use crate::foundation::numeric::{expm1_ratio, ln1p_ratio};
+use crate::foundation::numeric::expm1_ratio;
 
 /// One piece's law; see the module documentation.
 #[derive(Clone, Copy, Debug)]
@@ -72,7 +72,8 @@ impl Law {
                 let te = t * e;
                 let y = te.ln_1p();
                 let big_y = if x != 0.0 { ln_r * (y / x) } else { t * ln_r };
-                let y_over_e = t * ln1p_ratio(te);
+                // y/e = t·ln(1 + te)/(te), continued by t at e = 0.
+                let y_over_e = if e != 0.0 { y / e } else { t };
                 let turn = self.ka * self.len * y_over_e * expm1_ratio(y + big_y);
                 (turn, self.ka * big_y.exp())
             }
@@ -89,13 +90,12 @@ impl Law {
         }
     }
 
-    /// dκ/dt at the share `t`.
+    /// dκ/dt at the share `t`, where the curvature is `kappa`.
     #[inline]
-    pub(super) fn slope(&self, t: f64) -> f64 {
+    pub(super) fn slope(&self, t: f64, kappa: f64) -> f64 {
         match self.form {
             Form::Ratio { ln_r, x, e } => {
                 // d ln κ/dt = ln r · e / (x (1 + t e)), ln r at x = 0.
-                let (_, kappa) = self.at(t);
                 let d = if x != 0.0 {
                     ln_r * (e / x) / (1.0 + t * e)
                 } else {

@@ -37,7 +37,7 @@ use crate::path::{Closure, Continuity};
 use crate::segment::Segment;
 
 use guess::Profile;
-use model::Layout;
+use model::{AlphaMode, Layout};
 use solve::{Constraints, Problem, State};
 
 /// The most segments a fit may use.
@@ -228,9 +228,10 @@ impl Fit {
         } else {
             options.max_segments.max(1)
         };
-        // The first chain: a piece for every run of monotone curvature in the data (at
-        // least two round a closed set), or the asked number when no tolerance.
-        let cuts: Vec<f64> = if tolerance.is_some() {
+        // The first chain: one segment when it may be enough (a tolerance, an open set);
+        // failing that, a piece for every run of monotone curvature in the data (at least
+        // two round a closed set); without a tolerance, the asked number.
+        let mut extrema = if tolerance.is_some() {
             let mut cuts = profile.curvature_extrema();
             cuts.truncate(target.saturating_sub(1));
             if closed && cuts.len() < 2 {
@@ -238,17 +239,19 @@ impl Fit {
                     .map(|i| profile.total * i as f64 / 3.0)
                     .collect();
             }
-            cuts
+            Some(cuts)
         } else {
+            None
+        };
+        let cuts: Vec<f64> = if extrema.is_none() {
             (1..target)
                 .map(|i| profile.total * i as f64 / target as f64)
                 .collect()
+        } else if closed {
+            extrema.take().unwrap_or_default()
+        } else {
+            Vec::new()
         };
-        let first = cuts.len() + 1;
-        let layout = layout_of(first);
-        let pieces = guess::pieces(&profile, &cuts, input.alpha_mode, input.alpha_range);
-        let start = (input.data[0], profile.theta_at(0.0));
-        let x = layout.pack(start, &pieces);
         let problem = |layout: Layout| Problem {
             layout,
             data: &input.data,
@@ -257,13 +260,62 @@ impl Fit {
             alpha_range: input.alpha_range,
             constraints,
         };
-        let mut state = problem(layout)
-            .state(x, &profile.s)
-            .ok_or(Error::NumericalFailure {
+        let first_state = |cuts: &[f64]| -> Result<State> {
+            let n = cuts.len() + 1;
+            let pieces = guess::pieces(&profile, cuts, input.alpha_mode, input.alpha_range);
+            let start = (input.data[0], profile.theta_at(0.0));
+            let x = layout_of(n).pack(start, &pieces);
+            let failed = Error::NumericalFailure {
                 what: "the first guess of the fit",
-            })?;
-        let mut n = first;
+            };
+            let state = problem(layout_of(n))
+                .state(x, &profile.s)
+                .ok_or(failed.clone())?;
+            if n == 1 && !matches!(input.alpha_mode, AlphaMode::Fixed(_)) {
+                sweep_alpha(&problem(layout_of(1)), state, input.alpha_range).ok_or(failed)
+            } else {
+                Ok(state)
+            }
+        };
+        let mut n = cuts.len() + 1;
+        let mut state = first_state(&cuts)?;
         loop {
+            // With a slope per segment, one slope for all first: from a rough start, free
+            // slopes fall into minima where a segment bends hard at the range's end.
+            if input.alpha_mode == AlphaMode::Each && n > 1 {
+                let shared = Layout {
+                    alpha: AlphaMode::Shared,
+                    ..layout_of(n)
+                };
+                let mut numbers = state.chain.numbers.clone();
+                let mean = numbers.iter().map(|p| p.3).sum::<f64>() / n as f64;
+                let mean = mean.clamp(input.alpha_range.0.max(-1.0), input.alpha_range.1.min(2.0));
+                let mean = mean.clamp(input.alpha_range.0, input.alpha_range.1);
+                for p in numbers.iter_mut() {
+                    p.3 = mean;
+                }
+                let start = (state.chain.start, state.chain.theta0);
+                let one = Problem {
+                    layout: shared,
+                    ..problem(shared)
+                };
+                if let Some(s1) = one.state(shared.pack(start, &numbers), &state.feet) {
+                    let s1 = one.minimize(s1, 100);
+                    let start = (s1.chain.start, s1.chain.theta0);
+                    let x = layout_of(n).pack(start, &s1.chain.numbers);
+                    if let Some(s2) = problem(layout_of(n)).state(x, &s1.feet) {
+                        if s2.cost < state.cost || state.cost.is_nan() {
+                            state = s2;
+                        } else {
+                            state = problem(layout_of(n)).minimize(state, 100);
+                            let alternative = problem(layout_of(n)).minimize(s2, 100);
+                            if alternative.cost < state.cost {
+                                state = alternative;
+                            }
+                        }
+                    }
+                }
+            }
             state = problem(layout_of(n)).minimize(state, 100);
             if options.pin_ends && !closed {
                 let pinned = Problem {
@@ -281,6 +333,13 @@ impl Fit {
             }
             let worst = worst_index(&state.distances);
             let reached = state.distances[worst];
+            if std::env::var("LAC_FIT_DEBUG").is_ok() {
+                eprintln!(
+                    "n {n}: worst {reached:e} at {worst}; joints {:?} alphas {:?}",
+                    state.chain.starts,
+                    state.chain.numbers.iter().map(|p| p.3).collect::<Vec<_>>()
+                );
+            }
             let done = match tolerance {
                 Some(tol) => reached <= tol,
                 None => true,
@@ -299,6 +358,12 @@ impl Fit {
                     to,
                 });
             }
+            if let Some(cuts) = extrema.take().filter(|c| !c.is_empty()) {
+                // One segment is not enough: start again from the runs of the data.
+                n = cuts.len() + 1;
+                state = first_state(&cuts)?;
+                continue;
+            }
             state = split(&layout_of(n), &problem(layout_of(n + 1)), state, worst).ok_or(
                 Error::NumericalFailure {
                     what: "the split of a fitted segment",
@@ -311,6 +376,11 @@ impl Fit {
                 what: "the trimmed fit",
             })?;
         }
+        // Pieces that turn by π or more become several segments (the same curve).
+        (state, n) =
+            split_long_turns(&problem(layout_of(n)), state).ok_or(Error::NumericalFailure {
+                what: "the split of a fitted segment that turns by more than pi",
+            })?;
         build::build(&input, &layout_of(n), state, options)
     }
 
@@ -397,7 +467,7 @@ fn stretch(distances: &[f64], worst: usize, tolerance: f64) -> (usize, usize) {
 fn split(layout: &Layout, problem: &Problem, state: State, worst: usize) -> Option<State> {
     let chain = &state.chain;
     let (i, t) = chain.locate(state.feet[worst], 0);
-    let t = t.clamp(0.25, 0.75);
+    let t = t.clamp(0.4, 0.6);
     let mut pieces = chain.numbers.clone();
     let (ka, kb, len, alpha) = pieces[i];
     let kt = chain.pieces[i].law.at(t).1;
@@ -407,6 +477,107 @@ fn split(layout: &Layout, problem: &Problem, state: State, worst: usize) -> Opti
     let start = (Complex::new(state.x[0], state.x[1]), state.x[2]);
     let x = problem.layout.pack(start, &pieces);
     problem.state(x, &state.feet)
+}
+
+/// The slopes a single segment is first fitted with, each from the last one's answer.
+const ALPHA_SWEEP: [f64; 12] = [
+    0.0, 0.5, 1.0, 1.5, 2.0, 3.0, 5.0, 8.0, -0.5, -1.0, -2.0, -3.5,
+];
+
+/// A single segment whose α is free: the surface of the distances over α is flat and has
+/// several valleys for curves that bend little, so the segment is first fitted with fixed
+/// slopes across the range, each started from its neighbour's answer, and the best one
+/// starts the free fit.
+fn sweep_alpha(problem: &Problem, state: State, range: (f64, f64)) -> Option<State> {
+    let (lo, hi) = range;
+    let fixed = |alpha: f64| Layout {
+        alpha: AlphaMode::Fixed(alpha),
+        ..problem.layout
+    };
+    let free = problem.layout;
+    let mut best: Option<State> = None;
+    let first = state;
+    let mut from = first.clone();
+    let mut slopes: Vec<f64> = ALPHA_SWEEP
+        .iter()
+        .copied()
+        .filter(|a| *a >= lo && *a <= hi)
+        .collect();
+    if slopes.is_empty() {
+        slopes.push(0.5 * (lo + hi));
+    }
+    for alpha in slopes {
+        let layout = fixed(alpha);
+        let one = Problem { layout, ..*problem };
+        // From the first guess and from the neighbouring slope's answer: the better one.
+        let mut answer: Option<State> = None;
+        for start_state in [&first, &from] {
+            let start = (start_state.chain.start, start_state.chain.theta0);
+            let mut numbers = start_state.chain.numbers.clone();
+            numbers[0].3 = alpha;
+            let Some(s) = one.state(layout.pack(start, &numbers), &start_state.feet) else {
+                continue;
+            };
+            let s = one.minimize(s, 30);
+            if answer.as_ref().is_none_or(|a| s.cost < a.cost) {
+                answer = Some(s);
+            }
+        }
+        let Some(s) = answer else { continue };
+        if best.as_ref().is_none_or(|b| s.cost < b.cost) {
+            best = Some(s.clone());
+        }
+        from = s;
+    }
+    let best = best?;
+    let start = (best.chain.start, best.chain.theta0);
+    problem.state(free.pack(start, &best.chain.numbers), &best.feet)
+}
+
+/// The chain with every piece that turns by 0.9π or more cut into equal parts that turn by
+/// less (the same curve), and its number of pieces.
+fn split_long_turns(problem: &Problem, state: State) -> Option<(State, usize)> {
+    let chain = &state.chain;
+    let mut pieces = Vec::new();
+    for (table, &(ka, kb, len, alpha)) in chain.pieces.iter().zip(&chain.numbers) {
+        let turn = table.law.at(1.0).0.abs();
+        let parts = (turn / (0.9 * std::f64::consts::PI)).floor() as usize + 1;
+        if parts == 1 {
+            pieces.push((ka, kb, len, alpha));
+            continue;
+        }
+        // Equal shares of the turning: the share where the turning reaches j/parts of it.
+        let mut cuts = vec![0.0];
+        for j in 1..parts {
+            let target = turn * j as f64 / parts as f64;
+            let (mut lo, mut hi) = (0.0, 1.0);
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if table.law.at(mid).0.abs() < target {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            cuts.push(0.5 * (lo + hi));
+        }
+        cuts.push(1.0);
+        for w in cuts.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            pieces.push((table.law.at(a).1, table.law.at(b).1, (b - a) * len, alpha));
+        }
+    }
+    if pieces.len() == chain.pieces.len() {
+        let n = pieces.len();
+        return Some((state, n));
+    }
+    let layout = Layout {
+        n: pieces.len(),
+        ..problem.layout
+    };
+    let longer = Problem { layout, ..*problem };
+    let x = layout.pack((chain.start, chain.theta0), &pieces);
+    Some((longer.state(x, &state.feet)?, layout.n))
 }
 
 /// The open chain cut to the stretch between the first and the last foot of a point: the

@@ -20,7 +20,10 @@ use crate::path::Continuity;
 use super::law::Law;
 
 /// Largest turning of one station interval, radians.
-const STATION_TURN: f64 = 0.04;
+const STATION_TURN: f64 = 0.05;
+
+/// Largest turning of one piece of a chain, radians.
+const MAX_PIECE_TURN: f64 = 2.0 * std::f64::consts::TAU;
 
 /// Most station intervals of one piece.
 const MAX_STATIONS: usize = 4000;
@@ -161,6 +164,8 @@ pub(super) struct Table {
     pub(super) points: Vec<Complex>,
     pub(super) thetas: Vec<f64>,
     pub(super) kappas: Vec<f64>,
+    /// Unit tangents at the stations.
+    pub(super) tangents: Vec<Complex>,
 }
 
 /// Largest relative change of curvature across one station interval.
@@ -173,18 +178,23 @@ fn stations(law: &Law, len: f64) -> Vec<f64> {
     let largest = law.at(0.0).1.abs().max(law.at(1.0).1.abs());
     let bound = |t: f64| {
         let (_, k) = law.at(t);
-        let by_turn = STATION_TURN / (k.abs().max(1e-3 * largest) * len);
-        let by_change = STATION_CHANGE * k.abs().max(1e-3 * largest) / law.slope(t).abs();
+        let floor = k.abs().max(1e-3 * largest);
+        let by_turn = STATION_TURN / (floor * len);
+        let by_change = STATION_CHANGE * floor / law.slope(t, k).abs();
         by_turn.min(by_change).min(0.25)
     };
+    // Each step bounded where it starts and, once, where it would land.
+    let mut h = bound(0.0);
     while t < 1.0 && ts.len() <= MAX_STATIONS {
-        let h = bound(t);
-        // Look ahead once: the bound where the step lands.
-        let h = h
-            .min(bound((t + h).min(1.0)))
-            .max(1.0 / MAX_STATIONS as f64);
-        t = if t + h > 1.0 - 1e-3 * h { 1.0 } else { t + h };
+        let there = bound((t + h).min(1.0));
+        let step = h.min(there).max(1.0 / MAX_STATIONS as f64);
+        t = if t + step > 1.0 - 1e-3 * step {
+            1.0
+        } else {
+            t + step
+        };
         ts.push(t);
+        h = there;
     }
     if t < 1.0 {
         ts.push(1.0);
@@ -227,6 +237,7 @@ impl Table {
             p = Complex::new(p.re + k * sum.re, p.im + k * sum.im);
         }
         let ok = p.re.is_finite() && p.im.is_finite() && thetas.iter().all(|t| t.is_finite());
+        let tangents = thetas.iter().map(|&a| Complex::cis(a)).collect();
         ok.then_some(Table {
             law,
             len,
@@ -234,6 +245,7 @@ impl Table {
             points,
             thetas,
             kappas,
+            tangents,
         })
     }
 
@@ -259,10 +271,7 @@ impl Table {
         let h = self.len * (self.ts[j + 1] - self.ts[j]);
         let (p0, p1) = (self.points[j], self.points[j + 1]);
         let (k0, k1) = (self.kappas[j], self.kappas[j + 1]);
-        let (t0, t1) = (
-            Complex::cis(self.thetas[j]),
-            Complex::cis(self.thetas[j + 1]),
-        );
+        let (t0, t1) = (self.tangents[j], self.tangents[j + 1]);
         // Quintic Hermite: values, first (h·T) and second (h²·κ·iT) derivatives in u.
         let (u2, u3) = (u * u, u * u * u);
         let (u4, u5) = (u3 * u, u3 * u2);
@@ -279,6 +288,49 @@ impl Table {
         // Tangent angle and curvature from the law itself.
         let (turn, kappa) = self.law.at(t.clamp(0.0, 1.0));
         (Complex::new(re, im), self.thetas[0] + turn, kappa)
+    }
+}
+
+impl Table {
+    /// Point, unit tangent and (interpolated) curvature at the share `t`: the tangent from
+    /// the interpolant's own derivative, so that no transcendental function is evaluated
+    /// (the foot search calls this for every point at every step).
+    #[inline]
+    pub(super) fn frame(&self, t: f64) -> (Complex, Complex, f64) {
+        let (j, u) = self.locate(t);
+        let h = self.len * (self.ts[j + 1] - self.ts[j]);
+        let (p0, p1) = (self.points[j], self.points[j + 1]);
+        let (k0, k1) = (self.kappas[j], self.kappas[j + 1]);
+        let (t0, t1) = (self.tangents[j], self.tangents[j + 1]);
+        let (u2, u3) = (u * u, u * u * u);
+        let (u4, u5) = (u3 * u, u3 * u2);
+        let h0 = 1.0 - 10.0 * u3 + 15.0 * u4 - 6.0 * u5;
+        let h1 = u - 6.0 * u3 + 8.0 * u4 - 3.0 * u5;
+        let h2 = 0.5 * (u2 - 3.0 * u3 + 3.0 * u4 - u5);
+        let h3 = 0.5 * (u3 - 2.0 * u4 + u5);
+        let h4 = -4.0 * u3 + 7.0 * u4 - 3.0 * u5;
+        let h5 = 1.0 - h0;
+        let (d0, d1) = (h1 * h, h4 * h);
+        let (e0, e1) = (h2 * h * h * k0, h3 * h * h * k1);
+        let re = h0 * p0.re + h5 * p1.re + d0 * t0.re + d1 * t1.re - e0 * t0.im - e1 * t1.im;
+        let im = h0 * p0.im + h5 * p1.im + d0 * t0.im + d1 * t1.im + e0 * t0.re + e1 * t1.re;
+        // Derivatives of the basis in u.
+        let g0 = -30.0 * u2 + 60.0 * u3 - 30.0 * u4;
+        let g1 = 1.0 - 18.0 * u2 + 32.0 * u3 - 15.0 * u4;
+        let g2 = 0.5 * (2.0 * u - 9.0 * u2 + 12.0 * u3 - 5.0 * u4);
+        let g3 = 0.5 * (3.0 * u2 - 8.0 * u3 + 5.0 * u4);
+        let g4 = -12.0 * u2 + 28.0 * u3 - 15.0 * u4;
+        let (d0, d1) = (g1 * h, g4 * h);
+        let (e0, e1) = (g2 * h * h * k0, g3 * h * h * k1);
+        let dre = g0 * (p0.re - p1.re) + d0 * t0.re + d1 * t1.re - e0 * t0.im - e1 * t1.im;
+        let dim = g0 * (p0.im - p1.im) + d0 * t0.im + d1 * t1.im + e0 * t0.re + e1 * t1.re;
+        let speed = dre.hypot(dim);
+        let tangent = if speed > 0.0 {
+            Complex::new(dre / speed, dim / speed)
+        } else {
+            t0
+        };
+        (Complex::new(re, im), tangent, k0 + u * (k1 - k0))
     }
 }
 
@@ -345,6 +397,12 @@ impl Chain {
         for i in 0..layout.n {
             let (ka, kb, len, alpha) = layout.piece(x, i);
             let law = Law::new(ka, kb, len, alpha)?;
+            // A fit has no use for a piece that winds round more than once (a solver step
+            // that makes one is refused); pieces that turn by π or more are split before
+            // they are placed as segments.
+            if !(law.at(1.0).0.abs() < MAX_PIECE_TURN) {
+                return None;
+            }
             let table = Table::new(law, len, start, theta, None)?;
             (start, theta) = table.end();
             starts.push(s);
@@ -382,12 +440,12 @@ impl Chain {
         (i, t.clamp(0.0, 1.0))
     }
 
-    /// Point, tangent angle and curvature at arc length `s`.
+    /// Point, unit tangent and curvature at arc length `s` (see [`Table::frame`]).
     #[inline]
-    pub(super) fn at(&self, s: f64, hint: usize) -> (usize, f64, Complex, f64, f64) {
+    pub(super) fn frame(&self, s: f64, hint: usize) -> (usize, f64, Complex, Complex, f64) {
         let (i, t) = self.locate(s, hint);
-        let (p, theta, kappa) = self.pieces[i].at(t);
-        (i, t, p, theta, kappa)
+        let (p, tangent, kappa) = self.pieces[i].frame(t);
+        (i, t, p, tangent, kappa)
     }
 
     /// End point and tangent angle of the chain.

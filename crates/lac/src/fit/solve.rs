@@ -58,19 +58,34 @@ pub(super) struct State {
     pub(super) distances: Vec<f64>,
     /// Σ weight × loss(distance).
     pub(super) cost: f64,
+    /// Each point against the chain.
+    contacts: Vec<Contact>,
 }
 
 /// One point against the chain.
-struct Contact {
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Contact {
     piece: usize,
     t: f64,
     point: Complex,
-    theta: f64,
+    tangent: Complex,
     /// Normal and tangential components of data − foot.
     rn: f64,
     rt: f64,
     /// At an open chain's end.
     at_end: bool,
+}
+
+pub(crate) static COUNTS: [std::sync::atomic::AtomicUsize; 6] = [
+    std::sync::atomic::AtomicUsize::new(0),
+    std::sync::atomic::AtomicUsize::new(0),
+    std::sync::atomic::AtomicUsize::new(0),
+    std::sync::atomic::AtomicUsize::new(0),
+    std::sync::atomic::AtomicUsize::new(0),
+    std::sync::atomic::AtomicUsize::new(0),
+];
+fn count(i: usize, n: usize) {
+    COUNTS[i].fetch_add(n, std::sync::atomic::Ordering::Relaxed);
 }
 
 fn sub(a: Complex, b: Complex) -> Complex {
@@ -88,10 +103,10 @@ fn contact(chain: &Chain, d: Complex, s: &mut f64, hint: &mut usize, closed: boo
         }
     };
     let mut x = wrap(*s);
+    let mut frame = chain.frame(x, *hint);
     for _ in 0..12 {
-        let (i, _, p, theta, kappa) = chain.at(x, *hint);
+        let (i, _, p, tangent, kappa) = frame;
         *hint = i;
-        let tangent = Complex::cis(theta);
         let diff = sub(p, d);
         let f = diff.re * tangent.re + diff.im * tangent.im;
         let across = -diff.re * tangent.im + diff.im * tangent.re;
@@ -101,13 +116,16 @@ fn contact(chain: &Chain, d: Complex, s: &mut f64, hint: &mut usize, closed: boo
         let next = wrap(x + step);
         let moved = (next - x).abs();
         x = next;
-        if moved <= 1e-14 * total {
+        frame = chain.frame(x, *hint);
+        count(0, 1);
+        // Newton's error after a step of size h is about κh²: below 1e-7 of the length the
+        // point just found is the foot to rounding.
+        if moved <= 1e-7 * total {
             break;
         }
     }
     *s = x;
-    let (piece, t, point, theta, _) = chain.at(x, *hint);
-    let tangent = Complex::cis(theta);
+    let (piece, t, point, tangent, _) = frame;
     let r = sub(d, point);
     let rn = -r.re * tangent.im + r.im * tangent.re;
     let rt = r.re * tangent.re + r.im * tangent.im;
@@ -116,7 +134,7 @@ fn contact(chain: &Chain, d: Complex, s: &mut f64, hint: &mut usize, closed: boo
         piece,
         t,
         point,
-        theta,
+        tangent,
         rn,
         rt: if at_end { rt } else { 0.0 },
         at_end,
@@ -147,16 +165,21 @@ impl Problem<'_> {
     /// The state of the numbers `x`, the feet found from `feet`; `None` where `x`
     /// describes no chain.
     pub(super) fn state(&self, x: Vec<f64>, feet: &[f64]) -> Option<State> {
+        count(1, 1);
+        let t0 = std::time::Instant::now();
         let chain = Chain::new(&self.layout, &x)?;
+        count(4, t0.elapsed().as_nanos() as usize);
         let closed = self.layout.closed;
         let mut feet = feet.to_vec();
         let mut distances = Vec::with_capacity(self.data.len());
+        let mut contacts = Vec::with_capacity(self.data.len());
         let mut cost = 0.0;
         let mut hint = 0;
         for (k, &d) in self.data.iter().enumerate() {
             let c = contact(&chain, d, &mut feet[k], &mut hint, closed);
             let r = c.rn.hypot(c.rt);
             distances.push(r);
+            contacts.push(c);
             cost += self.weights[k] * self.loss(r);
         }
         cost.is_finite().then_some(State {
@@ -165,6 +188,7 @@ impl Problem<'_> {
             feet,
             distances,
             cost,
+            contacts,
         })
     }
 
@@ -257,9 +281,11 @@ impl Problem<'_> {
     ) -> (Vec<f64>, Vec<f64>, Vec<[Option<Sensitivity>; 4]>) {
         let np = self.layout.len();
         let chain = &state.chain;
+        let t0 = std::time::Instant::now();
         let sens: Vec<_> = (0..self.layout.n)
             .map(|i| chain.sensitivities(&self.layout, &state.x, i))
             .collect();
+        count(3, t0.elapsed().as_nanos() as usize);
         // Each piece's end shift and turn per number.
         let ends: Vec<Vec<(usize, Complex, f64)>> = sens
             .iter()
@@ -281,16 +307,12 @@ impl Problem<'_> {
         let mut dn = vec![0.0; np];
         let mut dt = vec![0.0; np];
         let mut touched: Vec<usize> = Vec::with_capacity(np);
-        let mut hint = 0;
-        let closed = self.layout.closed;
-        for (k, &d) in self.data.iter().enumerate() {
-            let mut s = state.feet[k];
-            let c = contact(chain, d, &mut s, &mut hint, closed);
+        for (k, c) in state.contacts.iter().enumerate() {
             let w = self.weights[k] * self.irls_weight(c.rn.hypot(c.rt));
             if w == 0.0 {
                 continue;
             }
-            let tangent = Complex::cis(c.theta);
+            let tangent = c.tangent;
             let normal = tangent.mul_i();
             touched.clear();
             let mut add = |b: usize, dp: Complex, dn: &mut [f64], dt: &mut [f64]| {
@@ -348,7 +370,10 @@ impl Problem<'_> {
         let mut lambda = 1e-3;
         let mut merit_weight = 0.0;
         for _ in 0..iterations {
+            count(2, 1);
+            let t0 = std::time::Instant::now();
             let (a, g, sens) = self.normal_equations(&state);
+            count(5, t0.elapsed().as_nanos() as usize);
             let (c, crow) = self.constraints(&state, &sens);
             let nc = c.len();
 
@@ -384,6 +409,20 @@ impl Problem<'_> {
                     let mu = sol[nf..].iter().fold(0.0f64, |m, v| m.max(v.abs()));
                     merit_weight = f64::max(merit_weight, 2.0 * mu + 1e-12);
                 }
+                // The decrease the linear model predicts, 2 gᵀδ + δᵀAδ below the cost: when
+                // it is below rounding of the cost and the constraints hold, this is the
+                // minimum (a trial would only be rejected, and λ raised, again and again).
+                let mut predicted = 0.0;
+                for (ii, &p) in free.iter().enumerate() {
+                    let mut ad = 0.0;
+                    for (jj, &q) in free.iter().enumerate() {
+                        ad += a[p * np + q] * sol[jj];
+                    }
+                    predicted -= sol[ii] * (2.0 * g[p] + ad);
+                }
+                if predicted <= 1e-11 * state.cost && violation(&c) <= 1e-14 {
+                    return state;
+                }
                 let mut x = state.x.clone();
                 for (ii, &p) in free.iter().enumerate() {
                     x[p] += sol[ii];
@@ -400,13 +439,13 @@ impl Problem<'_> {
                         (Vec::new(), Vec::new())
                     };
                     let after = merit(&trial, &tc, merit_weight);
-                    if after < before || (after == before && nc > 0) {
+                    if after < before {
                         let gain = (before - after) / before.max(1e-300);
                         let step: f64 = sol[..nf].iter().map(|v| v * v).sum::<f64>().sqrt();
                         state = trial;
                         lambda = (lambda / 3.0).max(1e-12);
                         improved = true;
-                        if gain < 1e-13 && step < 1e-10 {
+                        if gain < 1e-12 || step < 1e-13 {
                             return state;
                         }
                         break;

@@ -34,7 +34,7 @@ impl Segment {
     /// ```
     ///
     /// Errors: a non-finite input, a length that is not positive, curvatures of opposite
-    /// signs or zero, or a segment whose numbers leave double range.
+    /// signs or zero, a turning of π or more, or a segment whose numbers leave double range.
     pub fn from_curvatures(
         start: Point,
         theta: f64,
@@ -86,6 +86,18 @@ impl Segment {
         } else {
             form.station_at_s(s_other)?
         };
+        // A segment turns by less than π (as one drawn from control points does): longer
+        // turns are several segments, and every use of a segment (its control triangle, its
+        // Bézier replacement) assumes it.
+        let turning = other.theta.abs();
+        if turning.is_nan() || turning >= std::f64::consts::PI {
+            return Err(Error::OutOfRange {
+                name: "turning",
+                value: turning,
+                expected: "a segment that turns by less than pi (split longer turns into \
+                           several segments)",
+            });
+        }
         let (first, last) = if forward {
             (Station::REFERENCE, other)
         } else {
@@ -180,5 +192,8 @@ mod tests {
         assert!(Segment::from_curvatures(p, 0.0, [1.0, 2.0], 0.0, -1.0).is_err());
         assert!(Segment::from_curvatures(p, 0.0, [1.0, 2.0], f64::NAN, -1.0).is_err());
         assert!(Segment::from_curvatures(p, f64::INFINITY, [1.0, 2.0], 1.0, -1.0).is_err());
+        // Turning by π or more: a spiral of several segments, not one.
+        assert!(Segment::from_curvatures(p, 0.0, [1.0, 2.0], 2.2, -1.0).is_err());
+        assert!(Segment::from_curvatures(p, 0.0, [1.0, 1.0], 3.2, 0.0).is_err());
     }
 }

@@ -58,7 +58,8 @@ fn alpha_is_recovered_from_noisy_single_segments() {
         let alpha = [-1.0, -0.5, 0.0, 0.5, 1.0, 2.0][case % 6];
         let ratio = 2.5 + 1.5 * rng.next();
         let k0 = 0.5 + rng.next();
-        let len = 1.0;
+        // About 1.5 rad of turning (a segment turns by less than π).
+        let len = 3.0 / (k0 * (1.0 + ratio));
         let truth =
             Segment::from_curvatures(Point::ORIGIN, 0.0, [k0, k0 * ratio], len, alpha).unwrap();
         let (points, _) = noisy(&truth, 1000, 1e-4 * len, &mut rng);
@@ -91,6 +92,13 @@ fn noisy_g2_paths_are_fitted_within_the_tolerance_and_three_sigma_of_the_truth()
             continue;
         };
         let truth_segments = path.segments().len();
+        if std::env::var("LAC_FIT_DEBUG").is_ok() {
+            eprintln!(
+                "case {case} α {alpha}: truth joints {:?} length {}",
+                path.joint_arc_lengths(),
+                path.arc_length()
+            );
+        }
         let len = path.arc_length();
         let sigma = 1e-4 * len;
         let (points, clean) = noisy(&path, 1000, sigma, &mut rng);

@@ -9,6 +9,7 @@ mod common;
 mod compound;
 mod curve_trait;
 mod fit;
+mod fit_prius;
 mod kurbo_traits;
 mod monotone;
 mod path;

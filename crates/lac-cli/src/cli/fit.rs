@@ -28,7 +28,8 @@ const HINT: &str = "give a FILE of points (one \"x y\" a line, or a JSON array o
 pub(crate) struct FitArgs {
     /// The points, in order along the curve ("-" or nothing: standard input): one a line,
     /// "x y", "x,y" or "x<TAB>y" (further columns ignored, `#` comments, a header line
-    /// skipped), or a JSON array [[x,y],…]; at most 64 MiB (1 GiB with --allow-large)
+    /// skipped), or a JSON array [[x,y],…]; at most 20,000 points (1,000,000 with
+    /// --allow-large)
     #[arg(value_name = "FILE", conflicts_with = "batch")]
     pub(crate) input: Option<PathBuf>,
 

@@ -18,6 +18,7 @@
 
 pub(crate) mod compound;
 pub(crate) mod export;
+pub(crate) mod fit;
 pub(crate) mod lcg;
 pub(crate) mod monotone;
 pub(crate) mod path;
@@ -36,6 +37,7 @@ use lac_io::json::ErrorBody;
 use crate::limits::Limits;
 use compound::{CompoundArgs, CompoundFlags};
 use export::{ExportSource, ExportTo};
+use fit::FitArgs;
 use lcg::LcgArgs;
 use monotone::MonotoneArgs;
 use path::{PathArgs, PathExport};
@@ -199,7 +201,7 @@ pub(crate) enum Command {
     ///
     /// The curve is given as for lac segment, lac compound or lac space (--points with
     /// --alpha; --alpha0, --alpha1 and --ratio; or four 3-D points with --alpha and --beta), or
-    /// as one result of those commands in FILE or on standard input; or a path (--polygon with
+    /// as one result of those commands (or of lac fit) in FILE or on standard input; or a path (--polygon with
     /// --alpha or --alphas, --closed, --g2 or --fractions, as lac path takes them, or lac
     /// path's result). Planar curves become the quasi-aesthetic rational cubics of lac quasi
     /// (joined G2, each piece's curvature proven monotone; a path segment by segment, its
@@ -220,7 +222,7 @@ pub(crate) enum Command {
                                 lac export --format … -o FILE --polygon … (--alpha A | \
                                 --alphas …) [--closed] [--g2 | --fractions …]\n       \
                                 lac export [FILE|-] --format … -o FILE      \
-                                # a lac segment, compound, path or space result"
+                                # a lac segment, compound, path, spline, space or fit result"
     )]
     Export(ExportArgs),
     /// Draw a G2 spline of log-aesthetic segments through points: one segment per span (for
@@ -241,6 +243,31 @@ pub(crate) enum Command {
                                 [--samples N] [--format json|csv|svg] [-o FILE|-] [--comb] [--evolute]"
     )]
     Spline(SplineArgs),
+    /// Fit a log-aesthetic path to measured points: one least-squares segment, or the fewest
+    /// segments (G2, or G1) that keep every point within --tolerance
+    ///
+    /// The points come from FILE (or standard input), in order along the curve: one a line,
+    /// "x y", "x,y" or "x<TAB>y" (further columns ignored, `#` comments, a header line
+    /// skipped), or a JSON array [[x,y],…]. Each point's distance is measured orthogonally to
+    /// the fit. Without --tolerance it fits --max-segments segments (default 1); with it the
+    /// fewest up to --max-segments (default 16), or fails (kind fit_tolerance_not_met, exit
+    /// code 3) naming the stretch of points it could not reach and the distance it reached.
+    /// α is fitted per segment in -5..10 (--alpha-range, --shared-alpha) or fixed (--alpha).
+    ///
+    /// The JSON has the path ("continuity", "closed", "arc_length", "max_curvature_jump",
+    /// "pieces" [{alpha, curvature:[start,end], arc_length, s, inflection, segments}],
+    /// "segments" [{piece, alpha, lambda, start, theta, arc_length, curvature}], "joints"
+    /// [{point, s, curvature:[before,after], curvature_jump, gap, tangent_jump}], "samples")
+    /// and the fit's figures ("point_count", "tolerance", "fitted_segments", "rms",
+    /// "max_distance", "worst_point", "farthest" [{index, point, distance}]). lac export
+    /// reads it back.
+    #[command(
+        override_usage = "lac fit [FILE|-] [--tolerance T] [--max-segments N] [--alpha A | \
+                                --alpha-range A,B [--shared-alpha]] [--g1] [--closed | --pin-ends]\n              \
+                                [--huber DELTA] [--weighted] [--samples N] [--format json|csv|svg] [-o FILE|-]\n       \
+                                lac fit --batch FILE|- [--samples N] [-o FILE|-]"
+    )]
+    Fit(FitArgs),
     /// Start the interactive editor: a local web server with the editor's page (embedded,
     /// works offline) and its JSON API; prints the URL and serves until interrupted
     #[command(override_usage = "lac serve [--port P] [--open] [--host ADDR --allow-remote]")]
@@ -261,6 +288,7 @@ impl Command {
             Command::Path(args) => path::run(args, limits),
             Command::Export(args) => export::run(args, limits),
             Command::Spline(args) => spline::run(args, limits),
+            Command::Fit(args) => fit::run(args, limits),
             Command::Serve(args) => serve::run(args),
         }
     }
@@ -315,7 +343,8 @@ pub(crate) enum CurveFormat {
 /// take are [`CurveFlags`]. The help lists the groups in the order of the fields.
 #[derive(Debug, Args)]
 pub(crate) struct ExportArgs {
-    /// One result of lac segment, lac compound, lac path, lac spline or lac space to export
+    /// One result of lac segment, lac compound, lac path, lac spline, lac space or lac fit to
+    /// export
     /// ("-": standard input; nothing, without --points, --polygon or --through: standard
     /// input when it is not a terminal)
     #[arg(value_name = "FILE", conflicts_with = "points")]
@@ -351,7 +380,7 @@ impl ExportArgs {
     pub(crate) const HINT: &'static str =
         "give --points with --alpha (and --alpha0/--alpha1/--ratio or --beta), --polygon with \
          --alpha or --alphas, --through with --alpha, or a FILE with a lac segment, compound, \
-         path, spline or space result, or pipe one in";
+         path, spline, space or fit result, or pipe one in";
 
     /// The usage error of `--closed` with no kind that closes.
     pub(crate) const CLOSED: &'static str =

@@ -16,6 +16,9 @@ pub(crate) struct Limits {
 
 /// Most samples (or curvature points in all) by default, and with `--allow-large`.
 const SAMPLES: [usize; 2] = [1_000_000, 10_000_000];
+/// Most points of one fit (`lac fit`): 5,000 noisy points take 0.2 s, 100,000 about 30 s,
+/// and a million did not finish in two minutes (two cores).
+const POINTS: [usize; 2] = [20_000, 1_000_000];
 /// Most pixels per side of a region map.
 const SIZE: [usize; 2] = [2048, 8192];
 /// Longest `--batch` line, bytes.
@@ -36,6 +39,11 @@ impl Limits {
     /// `n` samples asked for with `flag` (e.g. "--samples"), or why that is too many.
     pub(crate) fn samples(self, n: usize, flag: &str) -> Result<usize, ErrorBody> {
         self.check(n, self.pick(SAMPLES), flag, "samples")
+    }
+
+    /// `n` points to fit, or why that is too many.
+    pub(crate) fn points(self, n: usize) -> Result<usize, ErrorBody> {
+        self.check(n, self.pick(POINTS), "the input", "points")
     }
 
     /// `n` pixels per side of a region map, or why that is too many.
@@ -64,6 +72,7 @@ impl Limits {
                 "--allow-large raises it to {}, at the cost of several GB and minutes",
                 thousands(self.with_large().pick(match what {
                     "pixels per side" => SIZE,
+                    "points" => POINTS,
                     _ => SAMPLES,
                 }))
             )

@@ -46,7 +46,7 @@ pub use error::{Error, Result};
 use json::{ExportDocument, NurbsRow};
 pub use nurbs::Nurbs;
 use nurbs::Span;
-pub use parts::{path_pieces, spline_pieces, ExportCurve, Parts};
+pub use parts::{path_pieces, segment_pieces, spline_pieces, ExportCurve, Parts};
 
 /// The default tolerance: 1e-6 model units (millimetres in DXF, STEP and IGES).
 pub const DEFAULT_TOLERANCE: f64 = 1e-6;

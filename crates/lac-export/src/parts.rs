@@ -2,7 +2,8 @@
 //! name and continuity its report gives. Export knows three ways to fit a curve, not the
 //! kinds of curves: a kind describes itself once, in lac-io's list of kinds, by choosing one
 //! ([`ExportCurve::whole`], [`ExportCurve::pieces`], [`ExportCurve::space`]); the pieces of
-//! a path and of a spline are made here ([`path_pieces`], [`spline_pieces`]).
+//! a path and of a spline are made here ([`path_pieces`], [`spline_pieces`]), and those of a
+//! chain of segments such as a fitted path ([`segment_pieces`]).
 //!
 //! A segment or a compound curve is one chain of segments, fitted whole (the quasi chain of
 //! seed 001 keeps its G2 joint). A path and a spline are fitted piece by piece, so that
@@ -100,6 +101,23 @@ pub fn path_pieces(path: &Path) -> Vec<Piece<'_>> {
                 lines.remove(i);
             }
         }
+    }
+    out
+}
+
+/// A chain's segments in order, each a piece of its own, with a straight piece across any
+/// gap between one's end and the next one's start (a fitted path's S meets across a hair
+/// of at most 1e-12 of its length at its inflection).
+pub fn segment_pieces(segments: &[Segment]) -> Vec<Piece<'_>> {
+    let mut out = Vec::with_capacity(segments.len());
+    for (k, seg) in segments.iter().enumerate() {
+        if k > 0 {
+            let (from, to) = (segments[k - 1].end_point(), seg.start_point());
+            if from != to {
+                out.push(Piece::Line(from, to));
+            }
+        }
+        out.push(Piece::Segment(Cow::Borrowed(seg)));
     }
     out
 }

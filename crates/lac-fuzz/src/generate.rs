@@ -584,3 +584,158 @@ pub(crate) fn spline(rng: &mut Rng) -> Input {
         ends,
     }
 }
+
+/// Points to fit: along a curve with noise, random, collinear, repeated, clustered, a
+/// million apart in scale, with a special float among them, one or two points, and now and
+/// then a few thousand; and the fit's options, ordinary or not.
+pub(crate) fn fit(rng: &mut Rng) -> Input {
+    let mut n = match rng.below(20) {
+        0 => rng.pick(&[0, 1, 2, 3, 4]),
+        1 => 500 + rng.below(2500),
+        _ => 5 + rng.below(120),
+    };
+    let noise = match rng.below(4) {
+        0 => 0.0,
+        _ => rng.log_uniform(-8.0, -1.0).abs(),
+    };
+    let mut points: Vec<[f64; 2]> = match rng.below(10) {
+        // Along an arc or a spiral (curvature growing or shrinking), with noise.
+        0..=3 => {
+            let (k0, k1) = (rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0));
+            let length = rng.uniform(0.5, 6.0);
+            let (mut x, mut y, mut theta) = (0.0, 0.0, 0.0);
+            let ds = length / n.max(1) as f64;
+            (0..n)
+                .map(|i| {
+                    let t = i as f64 / n.max(1) as f64;
+                    theta += (k0 + (k1 - k0) * t) * ds;
+                    x += theta.cos() * ds;
+                    y += theta.sin() * ds;
+                    [
+                        x + noise * rng.uniform(-1.0, 1.0),
+                        y + noise * rng.uniform(-1.0, 1.0),
+                    ]
+                })
+                .collect()
+        }
+        // A wave: the curvature changes sign (S pieces for α < 0).
+        4 => {
+            let (a, w) = (rng.uniform(0.05, 1.5), rng.uniform(0.5, 6.0));
+            (0..n)
+                .map(|i| {
+                    let x = i as f64 / n.max(1) as f64 * 4.0;
+                    [x, a * (w * x).sin() + noise * rng.uniform(-1.0, 1.0)]
+                })
+                .collect()
+        }
+        // Random points.
+        5 => (0..n)
+            .map(|_| [rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)])
+            .collect(),
+        // Collinear, exactly or within rounding.
+        6 => {
+            let (dx, dy) = (rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+            let off = if rng.chance(0.5) {
+                0.0
+            } else {
+                rng.log_uniform(-17.0, -10.0)
+            };
+            (0..n)
+                .map(|i| {
+                    let t = i as f64 * rng.uniform(0.5, 1.5);
+                    [t * dx, t * dy + if i % 3 == 1 { off } else { 0.0 }]
+                })
+                .collect()
+        }
+        // Repeated points: a few distinct ones, each many times.
+        7 => {
+            let distinct: Vec<[f64; 2]> = (0..1 + rng.below(4))
+                .map(|_| [rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)])
+                .collect();
+            (0..n)
+                .map(|i| distinct[i * distinct.len() / n.max(1)])
+                .collect()
+        }
+        // Clusters: tight groups far apart, or a tiny curve beside one far point (a million
+        // apart in scale).
+        8 => {
+            let spread = rng.log_uniform(-9.0, -3.0).abs();
+            let centres: Vec<[f64; 2]> = (0..2 + rng.below(3))
+                .map(|_| [rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)])
+                .collect();
+            let mut p: Vec<[f64; 2]> = (0..n)
+                .map(|i| {
+                    let c = centres[i * centres.len() / n.max(1)];
+                    [
+                        c[0] + spread * rng.uniform(-1.0, 1.0),
+                        c[1] + spread * rng.uniform(-1.0, 1.0),
+                    ]
+                })
+                .collect();
+            if rng.chance(0.5) && !p.is_empty() {
+                let last = p.len() - 1;
+                p[last] = [1e6, -1e6];
+            }
+            p
+        }
+        // Any numbers at all.
+        _ => (0..n).map(|_| [rng.number(), rng.number()]).collect(),
+    };
+    // Scaled and moved, sometimes to extreme magnitudes; reversed; a special float.
+    if rng.chance(0.3) {
+        let scale = match rng.below(4) {
+            0 => 10f64.powf(rng.uniform(-150.0, 150.0)),
+            _ => 10f64.powf(rng.uniform(-6.0, 6.0)),
+        };
+        let (dx, dy) = if rng.chance(0.3) {
+            (rng.log_uniform(-3.0, 8.0), rng.log_uniform(-3.0, 8.0))
+        } else {
+            (0.0, 0.0)
+        };
+        for q in &mut points {
+            *q = [q[0] * scale + dx, q[1] * scale + dy];
+        }
+    }
+    if rng.chance(0.05) && !points.is_empty() {
+        let k = rng.below(points.len());
+        points[k][rng.below(2)] = rng.special();
+    }
+    n = points.len();
+    let size = points
+        .iter()
+        .map(|p| p[0].abs().max(p[1].abs()))
+        .filter(|v| v.is_finite())
+        .fold(0.0, f64::max)
+        .max(f64::MIN_POSITIVE);
+    let tolerance = match rng.below(10) {
+        0..=4 => None,
+        5 => Some(rng.number()),
+        _ => Some(size * 10f64.powf(rng.uniform(-6.0, -1.0)) + noise),
+    };
+    Input::Fit {
+        points,
+        tolerance,
+        max_segments: match rng.below(10) {
+            0 => rng.pick(&[0, 65, 1000]),
+            1..=3 => 1,
+            _ => 1 + rng.below(4),
+        },
+        alpha: rng.chance(0.3).then(|| alpha(rng)),
+        closed: rng.chance(0.15),
+        g1: rng.chance(0.15),
+        pin_ends: rng.chance(0.15),
+        huber: rng.chance(0.15).then(|| match rng.below(5) {
+            0 => rng.number(),
+            _ => size * 10f64.powf(rng.uniform(-6.0, -1.0)),
+        }),
+        weights: rng.chance(0.1).then(|| {
+            (0..n + usize::from(rng.chance(0.1)))
+                .map(|_| match rng.below(10) {
+                    0 => rng.number(),
+                    1 => 0.0,
+                    _ => rng.uniform(0.1, 2.0),
+                })
+                .collect()
+        }),
+    }
+}

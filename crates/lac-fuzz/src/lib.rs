@@ -126,6 +126,27 @@ pub enum Input {
         /// 1 or 2.
         torsion: u8,
     },
+    /// `Fit::from_points`: a log-aesthetic path fitted to points.
+    Fit {
+        /// The points, in order.
+        points: Vec<[f64; 2]>,
+        /// The largest distance allowed (None: `max_segments` segments by least squares).
+        tolerance: Option<f64>,
+        /// The number of segments, or the most with a tolerance.
+        max_segments: usize,
+        /// Every segment's α, fixed (None: fitted in the default range).
+        alpha: Option<f64>,
+        /// A closed fit.
+        closed: bool,
+        /// Tangent continuity only.
+        g1: bool,
+        /// The ends held on the first and last points.
+        pin_ends: bool,
+        /// Huber's δ (None: least squares).
+        huber: Option<f64>,
+        /// A weight per point.
+        weights: Option<Vec<f64>>,
+    },
     /// `lac_export::export` of a solved curve: a segment, compound curve, path or space
     /// segment, in one of the file formats.
     Export {
@@ -141,6 +162,10 @@ pub enum Input {
         single_spans: bool,
     },
 }
+
+/// A fit is drawn this many times less often than the other entry points
+/// ([`EntryPoint::count`]).
+pub const FIT_SHARE: u64 = 100;
 
 /// The entry points the harness drives.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -165,11 +190,13 @@ pub enum EntryPoint {
     Export,
     /// G2 splines through points.
     Spline,
+    /// Paths fitted to points.
+    Fit,
 }
 
 impl EntryPoint {
     /// Every entry point.
-    pub const ALL: [EntryPoint; 10] = [
+    pub const ALL: [EntryPoint; 11] = [
         EntryPoint::Segment,
         EntryPoint::Compound3,
         EntryPoint::Compound4,
@@ -180,6 +207,7 @@ impl EntryPoint {
         EntryPoint::Path,
         EntryPoint::Export,
         EntryPoint::Spline,
+        EntryPoint::Fit,
     ];
 
     /// Its name on the command line and in reports.
@@ -195,6 +223,17 @@ impl EntryPoint {
             EntryPoint::Path => "path",
             EntryPoint::Export => "export",
             EntryPoint::Spline => "spline",
+            EntryPoint::Fit => "fit",
+        }
+    }
+
+    /// How many inputs a run of `count` per entry point draws for this one: all of them,
+    /// but for a fit (which costs about a hundred times a segment, and more with thousands
+    /// of points) one in [`FIT_SHARE`], at least ten.
+    pub fn count(self, count: u64) -> u64 {
+        match self {
+            EntryPoint::Fit => count.div_ceil(FIT_SHARE).max(count.min(10)),
+            _ => count,
         }
     }
 
@@ -234,6 +273,7 @@ impl EntryPoint {
             EntryPoint::Path => generate::path(rng),
             EntryPoint::Export => generate::export(rng),
             EntryPoint::Spline => generate::spline(rng),
+            EntryPoint::Fit => generate::fit(rng),
         }
     }
 }
@@ -365,7 +405,8 @@ impl Stats {
     }
 }
 
-/// Run `count` inputs of `entry` from `seed`, in parallel, calling `progress` with the
+/// Run `entry.count(count)` inputs of `entry` from `seed` (`count`, or a share of it for the
+/// dearer entry points: [`EntryPoint::count`]), in parallel, calling `progress` with the
 /// number done now and then.
 pub fn campaign(
     entry: EntryPoint,
@@ -374,6 +415,7 @@ pub fn campaign(
     progress: &(dyn Fn(u64) + Sync),
 ) -> Stats {
     use rayon::prelude::*;
+    let count = entry.count(count);
     const CHUNK: u64 = 1000;
     let chunks = count.div_ceil(CHUNK);
     let done = std::sync::atomic::AtomicU64::new(0);

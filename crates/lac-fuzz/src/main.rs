@@ -87,7 +87,7 @@ fn main() -> ExitCode {
     let mut clean = true;
     for entry in entries {
         let progress = |done: u64| {
-            eprint!("\r{:<10} {done:>9}/{count}", entry.name());
+            eprint!("\r{:<10} {done:>9}/{}", entry.name(), entry.count(count));
             let _ = std::io::stderr().flush();
         };
         let stats = campaign(entry, seed, count, &progress);

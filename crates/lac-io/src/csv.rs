@@ -11,8 +11,8 @@
 use std::fmt::Write as _;
 
 use crate::json::{
-    CompoundReport, LcgReport, PathReport, QuasiReport, SampleRow, SegmentReport, SpaceLcgReport,
-    SpaceReport, SplineReport,
+    CompoundReport, FitReport, LcgReport, PathReport, QuasiReport, SampleRow, SegmentReport,
+    SpaceLcgReport, SpaceReport, SplineReport,
 };
 
 /// Samples as CSV with the header `s,x,y,theta,kappa` (shortest round-trip numbers).
@@ -52,6 +52,13 @@ impl CompoundReport {
 }
 
 impl PathReport {
+    /// The samples: `s,x,y,theta,kappa`.
+    pub fn to_csv(&self) -> String {
+        samples_csv(&self.samples)
+    }
+}
+
+impl FitReport {
     /// The samples: `s,x,y,theta,kappa`.
     pub fn to_csv(&self) -> String {
         samples_csv(&self.samples)

@@ -9,8 +9,8 @@ use pyo3::types::PyDict;
 
 use crate::errors::{from_body, invalid};
 
-/// Write `curve` (a `Segment`, `CompoundCurve`, `Path`, `Spline` or `SpaceSegment`) as a CAD
-/// file:
+/// Write `curve` (a `Segment`, `CompoundCurve`, `Path`, `Spline`, `SpaceSegment` or `Fit`) as a
+/// CAD file:
 /// returns the file's text and its report (a dict: `pieces`, `tolerance`, `max_deviation`
 /// measured densely on what was written, `fit_deviation`, `continuity`, `monotone_proven`,
 /// …, as `lac export` prints it).
@@ -52,7 +52,7 @@ pub(crate) fn export<'py>(
         _ => {
             return Err(invalid(
                 py,
-                "curve must be a Segment, CompoundCurve, Path, Spline or SpaceSegment",
+                "curve must be a Segment, CompoundCurve, Path, Spline, SpaceSegment or Fit",
             ))
         }
     };

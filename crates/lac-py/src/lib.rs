@@ -13,6 +13,7 @@ mod convert;
 mod curve;
 mod errors;
 mod export;
+mod fit;
 mod path;
 mod quasi;
 mod region;
@@ -39,6 +40,7 @@ fn _lac(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<quasi::PyQuasiCurve>()?;
     m.add_class::<path::PyPath>()?;
     m.add_class::<path::PySpline>()?;
+    m.add_class::<fit::PyFit>()?;
     m.add_class::<space::PySpaceSegment>()?;
     m.add_class::<space::Frames>()?;
     m.add_class::<space::Graph>()?;
@@ -52,6 +54,7 @@ fn _lac(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(region::pixel_center, m)?)?;
     m.add_function(wrap_pyfunction!(batch::solve_segments, m)?)?;
     m.add_function(wrap_pyfunction!(export::export, m)?)?;
+    m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
     m.add("MAX_ABS_ALPHA", lac::MAX_ABS_ALPHA)?;
     Ok(())
 }

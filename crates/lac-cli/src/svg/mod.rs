@@ -1,7 +1,7 @@
 //! `--format svg` of `lac segment` and `lac compound`: a standalone drawing of a curve made
 //! of log-aesthetic pieces, its control polygon, the joints between pieces and, on request,
-//! its curvature comb and evolute. The drawings of `lac quasi`, `lac lcg` and `lac space` are
-//! in the submodules of the same names.
+//! its curvature comb and evolute. The drawings of `lac quasi`, `lac lcg`, `lac space` and
+//! `lac fit` are in the submodules of the same names.
 //!
 //! Every drawing sets its text the same way: measured with the conservative estimate of
 //! [`measure`], in blocks (captions, headings, footnotes) and labels laid out by [`text`], in
@@ -9,6 +9,7 @@
 
 mod comb;
 mod evolute;
+pub(crate) mod fit;
 pub(crate) mod lcg;
 mod measure;
 mod plot;

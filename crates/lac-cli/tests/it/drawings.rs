@@ -696,3 +696,63 @@ fn the_readme_figures_are_clean() {
         "figures that are not clean (regenerate them with `make docs`):\n{report}"
     );
 }
+
+#[test]
+fn fit_drawings_are_clean() {
+    let run = lac(&[
+        "path",
+        "--polygon",
+        "0,0 2,0 3.5,1 4,3 3,4.5 1,5",
+        "--alpha",
+        "0.5",
+        "--g2",
+        "--format",
+        "csv",
+        "--samples",
+        "300",
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let dir = tempfile::tempdir().unwrap();
+    // The samples' x and y (columns 2 and 3 of the CSV), as they are and scaled.
+    let mut files = Vec::new();
+    for scale in [1.0, 1e-6, 1e6] {
+        let text: String = run
+            .stdout
+            .lines()
+            .skip(1)
+            .map(|l| {
+                let c: Vec<f64> = l.split(',').map(|v| v.parse().unwrap()).collect();
+                format!("{} {}\n", c[1] * scale, c[2] * scale)
+            })
+            .collect();
+        let file = dir.path().join(format!("points{scale}.txt"));
+        std::fs::write(&file, text).unwrap();
+        files.push(file.to_str().unwrap().to_string());
+    }
+    let cases: Vec<Vec<&str>> = vec![
+        vec!["fit", &files[0], "--format", "svg"],
+        vec!["fit", &files[0], "--format", "svg", "--tolerance", "1e-4"],
+        vec!["fit", &files[1], "--format", "svg", "--tolerance", "1e-10"],
+        vec![
+            "fit",
+            &files[2],
+            "--format",
+            "svg",
+            "--alpha",
+            "1",
+            "--max-segments",
+            "4",
+        ],
+        vec![
+            "fit",
+            &files[0],
+            "--format",
+            "svg",
+            "--g1",
+            "--max-segments",
+            "2",
+        ],
+    ];
+    let cases: Vec<&[&str]> = cases.iter().map(Vec::as_slice).collect();
+    check_all(&cases, false);
+}

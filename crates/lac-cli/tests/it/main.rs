@@ -8,6 +8,7 @@ mod common;
 mod compound;
 mod drawings;
 mod export;
+mod fit;
 mod formats;
 mod lcg;
 mod monotone;

@@ -21,6 +21,7 @@ use crate::Input;
 mod analysis;
 mod compound;
 mod export;
+mod fit;
 mod monotone;
 mod path;
 mod quasi;
@@ -82,6 +83,27 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
             relative,
             single_spans,
         } => export::check(curve, *format, *tolerance, *relative, *single_spans),
+        Input::Fit {
+            points,
+            tolerance,
+            max_segments,
+            alpha,
+            closed,
+            g1,
+            pin_ends,
+            huber,
+            weights,
+        } => fit::check(&fit::Asked {
+            points,
+            tolerance: *tolerance,
+            max_segments: *max_segments,
+            alpha: *alpha,
+            closed: *closed,
+            g1: *g1,
+            pin_ends: *pin_ends,
+            huber: *huber,
+            weights: weights.as_deref(),
+        }),
     }
 }
 
@@ -198,6 +220,7 @@ fn build(input: &Input) -> Result<Option<Built>, String> {
         Input::Monotone { .. }
         | Input::Analysis { .. }
         | Input::Export { .. }
+        | Input::Fit { .. }
         | Input::Spline { .. } => None,
     })
 }

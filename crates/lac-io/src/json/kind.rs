@@ -99,7 +99,7 @@ macro_rules! kinds {
 }
 
 /// The documents [`AnyCurve::read`] takes, for error messages.
-pub const ANY_SHAPE: &str = "a lac segment, compound, path, spline or space result, or the \
+pub const ANY_SHAPE: &str = "a lac segment, compound, path, spline, space or fit result, or the \
                              input of one ({\"points\":…,\"alpha\":A}, {\"points\":…,\
                              \"alpha0\":A,\"alpha1\":B,…}, {\"points\":…,\"alpha\":A,\
                              \"closed\"|\"g2\"|\"fractions\":…} or {\"points\":…,\"alpha\":A,\

@@ -13,7 +13,7 @@
 //!
 //! One file per family of shapes: `segment.rs`, `compound.rs` (with [`CurveInput`] and
 //! [`Solved`], either kind of planar curve), `quasi.rs`, `monotone.rs`, `lcg.rs`,
-//! `region.rs`, `space.rs`, `path.rs`, `spline.rs`; the `--batch` fast path of segments in
+//! `region.rs`, `space.rs`, `path.rs`, `spline.rs`, `fit.rs` ([`FitInput`], [`FitReport`]); the `--batch` fast path of segments in
 //! `fast.rs`, and the geometry verdicts of `lac lcg` in `verdict.rs`. This file holds what
 //! every shape shares: points, errors, parsing and writing lines, and the [`Report`] trait.
 
@@ -23,6 +23,7 @@ use serde::{Deserialize, Serialize};
 
 mod compound;
 mod fast;
+mod fit;
 #[macro_use]
 mod kind;
 mod lcg;
@@ -35,6 +36,10 @@ mod space;
 mod spline;
 
 pub use compound::{CompoundInput, CompoundKind, CompoundReport, CurveInput, LcgRow, Solved};
+pub use fit::{
+    FarPointRow, FitInput, FitJointRow, FitKind, FitPieceRow, FitReport, FitSegmentRow, FittedPath,
+    DEFAULT_MAX_SEGMENTS, FARTHEST_LISTED,
+};
 pub use kind::{fields, Kind, ANY_SHAPE};
 pub use lcg::{FitRow, LcgInput, LcgReport, PieceFitRow, PlotRow};
 pub use monotone::{
@@ -54,6 +59,7 @@ pub use spline::{SplineInflectionRow, SplineInput, SplineKind, SplinePieceRow, S
 // The curve kinds, in the order they are asked to claim a document (`kind.rs`): a new kind
 // is its file here, its `mod` line above and one line in this list.
 kinds! {
+    Fit: FitKind,
     Spline: SplineKind,
     Path: PathKind,
     Space: SpaceKind,

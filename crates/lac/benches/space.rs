@@ -3,7 +3,7 @@
 //! {−1, 0, 1}², with the share of the random inputs that are solved and the slowest refusal
 //! (printed before the timings); a solve over inputs built from known curves
 //! (`tests/it/common/space_inputs.rs`), cold and warm-started from the segment of a slightly
-//! different input (an editor's drag); the README's points with Ω = 5 (refused, Ω_max
+//! different input (an editor's drag); the README's points with Ω = 10 (refused, Ω_max
 //! reported); and the coplanar points that turn 180° (refused at once).
 //!
 //! Inputs use seed 003's placement (P0 = (−1, 0, 0), P3 = (1, 0, 0)): θ0 and θ1 uniform in
@@ -152,7 +152,7 @@ fn bench_constructed(c: &mut Criterion) {
         Vec3::new(0.0, 3.0, 0.0),
     ];
     for (name, p, omega) in [
-        ("readme_omega_5", readme, 5.0),
+        ("readme_omega_10", readme, 10.0),
         ("u_turn_coplanar", u_turn, 0.3),
     ] {
         let shape = SpaceShape {

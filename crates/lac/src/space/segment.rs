@@ -107,8 +107,9 @@ impl SpaceSegment {
     ///
     /// Errors: non-finite input, coincident points (P0 = P1, P2 = P3 or P0 = P3), a tangent
     /// along the chord ([`Error::CollinearPoints`]), a coplanar S ([`Error::InflectedPolygon`]),
-    /// and [`Error::NotDrawable`]: [`NotDrawable::TorsionTooLarge`] with the largest Ω that
-    /// works when a smaller Ω would, [`NotDrawable::NoSpaceSegment`] when none does.
+    /// and [`Error::NotDrawable`]: [`NotDrawable::TorsionTooLarge`] when no segment was found
+    /// at Ω but one was at Ω = 0, with how far in Ω that one's branch reached,
+    /// [`NotDrawable::NoSpaceSegment`] when none was found at Ω = 0 either.
     ///
     /// Which segment, when several fit the ends (they differ in Λ, ν and length): the
     /// search is deterministic, so the same input always gives the same segment, in this
@@ -121,9 +122,10 @@ impl SpaceSegment {
     /// 0.15, 0.4, 1, best residual first, then where those scans come closest to the cone
     /// without crossing it), and the segment that turns least among (1) and (2); (3) when
     /// Ω itself is out of reach, the segment at Ω = 0 followed continuously in Ω; (4) when
-    /// none of these finds a segment, (1)–(3) with the form starting at the other end
-    /// (torsion can put the larger angle at the end where the curvature is smaller). The
-    /// refusal reports how far in Ω the branch of (3) got, in either order. Segments found
+    /// none of these finds a segment, the free-end search (2) with the form starting at the
+    /// other end (torsion can put the larger angle at the end where the curvature is
+    /// smaller), and (3) in that order when the first has no segment at Ω = 0. The refusal
+    /// reports how far in Ω the branch of (3) got. Segments found
     /// by (1) move continuously with the input while the
     /// near-helix start stays in their basin; for dragging, where the answer should follow
     /// the previous one, use [`SpaceSegment::from_control_points_near`].

@@ -280,11 +280,20 @@ fn bad_input_gives_typed_errors() {
 }
 
 #[test]
-fn too_large_omega_reports_the_largest_that_works() {
+fn out_of_reach_omega_reports_where_the_branch_ends() {
     let p = twisted();
     let solve =
         |omega| SpaceSegment::from_control_points(p, shape(0.0, 1.0, omega, TorsionType::One));
     let err = solve(50.0).unwrap_err();
+    // The message says what the search found, one line, not that Ω is too large.
+    let message = err.to_string();
+    assert!(
+        message.contains("no space segment found for omega = 50;")
+            && message.contains("found by continuing from omega = 0 ends near omega = ")
+            && !message.contains("too large")
+            && !message.contains('\n'),
+        "{message}"
+    );
     let Error::NotDrawable(NotDrawable::TorsionTooLarge { omega, omega_max }) = err else {
         panic!("expected TorsionTooLarge, got {err:?}");
     };

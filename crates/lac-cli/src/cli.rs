@@ -161,8 +161,9 @@ pub(crate) enum Command {
     /// can read it. Coplanar points give the planar segment through the first point, the
     /// tangents' intersection and the last point (torsion 0): "planar" true, "standard_form"
     /// and "transform" null, and "planar_segment" {alpha, lambda, control_points} and a
-    /// "note". When omega is too large the error line has "omega_max", the largest omega that
-    /// works.
+    /// "note". When no segment is found for omega but one is for omega = 0, the error line has
+    /// "omega_max", where that segment's branch ends as omega grows (every omega up to it has
+    /// a segment).
     #[command(
         override_usage = "lac space --points \"x0,y0,z0 x1,y1,z1 x2,y2,z2 x3,y3,z3\" --alpha A --beta B \
                                 [--omega W] [--type 1|2]\n                 \

@@ -78,7 +78,7 @@ pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
 }
 
 /// The exception for a failure described as `lac_io` describes it, with `kind`, `message`
-/// and (for space segments whose Ω is too large) `omega_max` attributes.
+/// and (for space segments found at Ω = 0 but not at the Ω asked) `omega_max` attributes.
 pub(crate) fn from_body(py: Python<'_>, body: ErrorBody) -> PyErr {
     let c = match classes(py) {
         Ok(c) => c,

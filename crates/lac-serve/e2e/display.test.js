@@ -168,9 +168,9 @@ test('messages never cover a control point: in the plane the message moves aside
   await shot(page, 'message-plane');
   await context.close();
 
-  // Ω too large for the space curve: the message leaves the top, front and side views (where
-  // points are dragged) and their captions alone.
-  const space = await openEditor('#mode=space&omega=5');
+  // No space segment found at this Ω (the default points at Ω = 10): the message leaves the
+  // top, front and side views (where points are dragged) and their captions alone.
+  const space = await openEditor('#mode=space&omega=10');
   assert.equal((await editorState(space.page)).error.kind, 'not_drawable');
   for (const under of await underPoints(space.page, ['top', 'front', 'side'])) assert.match(under, /: view-(top|front|side)$/, under);
   const rects = await space.page.evaluate(() => {

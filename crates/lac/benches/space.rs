@@ -1,9 +1,9 @@
 //! Benchmarks for the space-curve issues: a segment solve from four points ≤ 300 µs median
 //! and a refusal ≤ 500 µs median (≤ 5 ms worst), over a seeded random set per (α, β) ∈
 //! {−1, 0, 1}², with the share of the random inputs that are solved and the slowest refusal
-//! (printed before the timings); a solve over inputs built from known curves
+//! (each refusal's fastest of five timings; printed before the timings); a solve over inputs built from known curves
 //! (`tests/it/common/space_inputs.rs`), cold and warm-started from the segment of a slightly
-//! different input (an editor's drag); the README's points with Ω = 5 (refused, Ω_max
+//! different input (an editor's drag); the README's points with Ω = 10 (refused, Ω_max
 //! reported); and the coplanar points that turn 180° (refused at once).
 //!
 //! Inputs use seed 003's placement (P0 = (−1, 0, 0), P3 = (1, 0, 0)): θ0 and θ1 uniform in
@@ -71,12 +71,19 @@ fn bench_solve(c: &mut Criterion) {
             };
             let (solvable, failing): (Vec<Input>, Vec<Input>) =
                 inputs.iter().partition(|i| solve(i).is_ok());
+            // Each refusal timed five times and its fastest kept: on a shared machine one
+            // timing of the slowest input measures the other jobs as much as the solver.
             let slowest = failing
                 .iter()
                 .map(|i| {
-                    let clock = Instant::now();
-                    black_box(solve(i).unwrap_err());
-                    clock.elapsed()
+                    (0..5)
+                        .map(|_| {
+                            let clock = Instant::now();
+                            black_box(solve(i).unwrap_err());
+                            clock.elapsed()
+                        })
+                        .min()
+                        .unwrap_or_default()
                 })
                 .max()
                 .unwrap_or_default();
@@ -152,7 +159,7 @@ fn bench_constructed(c: &mut Criterion) {
         Vec3::new(0.0, 3.0, 0.0),
     ];
     for (name, p, omega) in [
-        ("readme_omega_5", readme, 5.0),
+        ("readme_omega_10", readme, 10.0),
         ("u_turn_coplanar", u_turn, 0.3),
     ] {
         let shape = SpaceShape {

@@ -99,7 +99,8 @@ pub struct ErrorBody {
     pub kind: String,
     /// What was wrong and what would fix it.
     pub message: String,
-    /// For `not_drawable` space segments whose Ω is too large: the largest Ω that works.
+    /// For `not_drawable` space segments found at Ω = 0 but not at the Ω asked: where the
+    /// Ω = 0 segment, followed as Ω grows, ends (a segment exists for every Ω up to it).
     #[serde(skip_serializing_if = "Option::is_none", default)]
     pub omega_max: Option<f64>,
     /// For a `no_g2_path` path: the joint fractions of the nearest G1 path, where one can

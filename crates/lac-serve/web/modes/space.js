@@ -143,7 +143,7 @@ export default {
     };
   },
 
-  /** Ω too large: the library says the largest that works. */
+  /** No segment at this Ω: the library says where the Ω = 0 segment's branch ends. */
   fix(error) {
     if (typeof error.omega_max !== 'number') return null;
     const omega = +error.omega_max.toPrecision(6);

@@ -366,21 +366,21 @@ pub enum NotDrawable {
         /// The curvature at that end divided by the curvature at the other.
         curvature_ratio: f64,
     },
-    /// The torsion parameter Ω is too large for these four points, α, β and type: a
-    /// segment exists for Ω up to at least `omega_max` (seed 003 §4).
+    /// No segment was found for the Ω asked, but one was for Ω = 0, and following it as Ω
+    /// grows (seed 003 §4) reached `omega_max` and no further. That says where the search
+    /// ended, not that no segment exists at the Ω asked: another branch, not connected to
+    /// that segment, may have one.
     TorsionTooLarge {
         /// The Ω asked for.
         omega: f64,
         /// The largest Ω reached by following the segment found at Ω = 0 as Ω grows (to
-        /// 0.1% of `omega`): there is a segment for every Ω up to it. It is a lower bound:
-        /// the search at `omega` found nothing, but another branch, not connected to that
-        /// segment, may still give one for some Ω between the two (on the benchmark's random
-        /// inputs, for about one refusal in eight).
+        /// 0.1% of `omega`): there is a segment for every Ω up to it.
         omega_max: f64,
     },
-    /// No log-aesthetic space segment of these α, β and type fits the four points, even
-    /// with Ω = 0: none found by the solver's search, which is bounded (a fixed budget of
-    /// integration steps per solve, so that every call returns in bounded time).
+    /// No log-aesthetic space segment of these α, β and type was found for the four points,
+    /// nor with Ω = 0, in either order of the ends: the solver's search is bounded (a fixed
+    /// budget of integration steps per solve, so that every call returns in bounded time),
+    /// so this is what it found, not a proof that none exists.
     NoSpaceSegment {
         /// The Ω asked for.
         omega: f64,
@@ -482,12 +482,13 @@ impl fmt::Display for NotDrawable {
             ),
             NotDrawable::TorsionTooLarge { omega, omega_max } => write!(
                 f,
-                "omega = {omega} is too large for these points, alpha, beta and type: a space \
-                 segment exists for omega up to at least {omega_max:.6}; use a smaller omega"
+                "no space segment found for omega = {omega}; the segment of these points \
+                 found by continuing from omega = 0 ends near omega = {omega_max:.6}; use an \
+                 omega up to that, or move the control points"
             ),
             NotDrawable::NoSpaceSegment { omega } => write!(
                 f,
-                "no log-aesthetic space segment of these alpha, beta and type fits the four \
+                "no log-aesthetic space segment of these alpha, beta and type found for the four \
                  points (omega = {omega}{}); make the end angles to the chord more alike \
                  (theta0 close to theta1), or use alpha and beta nearer 0",
                 if omega > 0.0 { ", nor with omega = 0" } else { "" }

@@ -107,19 +107,26 @@ impl SpaceSegment {
     ///
     /// Errors: non-finite input, coincident points (P0 = P1, P2 = P3 or P0 = P3), a tangent
     /// along the chord ([`Error::CollinearPoints`]), a coplanar S ([`Error::InflectedPolygon`]),
-    /// and [`Error::NotDrawable`]: [`NotDrawable::TorsionTooLarge`] with the largest Ω that
-    /// works when a smaller Ω would, [`NotDrawable::NoSpaceSegment`] when none does.
+    /// and [`Error::NotDrawable`]: [`NotDrawable::TorsionTooLarge`] when no segment was found
+    /// at Ω but one was at Ω = 0, with how far in Ω that one's branch reached,
+    /// [`NotDrawable::NoSpaceSegment`] when none was found at Ω = 0 either.
     ///
     /// Which segment, when several fit the ends (they differ in Λ, ν and length): the
     /// search is deterministic, so the same input always gives the same segment, in this
-    /// order: (1) seed 003's cone search (the end is the first crossing of the cone about
-    /// the start tangent, the second when |θ2| > π/2) from near-helix starts (Λ = 0, then
-    /// Λ = 1, ν upward from about tan θ0); its first segment whose tangent and binormal turn
-    /// by at most 3π/2 is returned; (2) otherwise the free-end search (the end s a third
-    /// unknown, starts from ν scans on the first three crossings' cones at Λ = 0, 0.15,
-    /// 0.4, 1, best residual first), and the segment that turns least among (1) and (2);
-    /// (3) when Ω itself is out of reach, the segment at Ω = 0 followed continuously in Ω
-    /// for Ω_max. Segments found by (1) move continuously with the input while the
+    /// order, with the standard form starting at the end whose tangent makes the larger
+    /// angle with the chord: (1) seed 003's cone search (the end is the first crossing of
+    /// the cone about the start tangent, the second when |θ2| > π/2) from near-helix starts
+    /// (Λ = 0, then Λ = 1, ν upward from about tan θ0); its first segment whose tangent and
+    /// binormal turn by at most 3π/2 is returned; (2) otherwise the free-end search (the end
+    /// s a third unknown, starts from ν scans on the first three crossings' cones at Λ = 0,
+    /// 0.15, 0.4, 1, best residual first, then where those scans come closest to the cone
+    /// without crossing it), and the segment that turns least among (1) and (2); (3) when
+    /// Ω itself is out of reach, the segment at Ω = 0 followed continuously in Ω; (4) when
+    /// none of these finds a segment, the free-end search (2) with the form starting at the
+    /// other end (torsion can put the larger angle at the end where the curvature is
+    /// smaller), and (3) in that order when the first has no segment at Ω = 0. The refusal
+    /// reports how far in Ω the branch of (3) got. Segments found
+    /// by (1) move continuously with the input while the
     /// near-helix start stays in their basin; for dragging, where the answer should follow
     /// the previous one, use [`SpaceSegment::from_control_points_near`].
     pub fn from_control_points(points: [Vec3; 4], shape: SpaceShape) -> Result<SpaceSegment> {
@@ -131,7 +138,7 @@ impl SpaceSegment {
     /// order), which follows the segment continuously as the points or Ω move a little (an
     /// editor's drag) and takes a few integrations instead of a search; the cold search
     /// when that does not converge or `previous` does not match (planar, other slopes or
-    /// type, the other end first).
+    /// type). The warm start keeps `previous`'s order of the ends.
     pub fn from_control_points_near(
         points: [Vec3; 4],
         shape: SpaceShape,

@@ -132,7 +132,7 @@ pub(crate) fn shoot(
     budget: &Budget,
 ) -> Option<Shot> {
     let mut found = None;
-    crossings(form, cone, accuracy, track, budget, |shot, k| {
+    crossings(form, cone, accuracy, track, budget, None, |shot, k| {
         if k == cone.crossing {
             found = Some(shot);
             false
@@ -145,19 +145,41 @@ pub(crate) fn shoot(
 
 /// Every crossing of `cone` up to its own ([`Cone::crossing`]) in one integration, in
 /// order: what [`shoot`] would give for each crossing number.
-pub(crate) fn shoot_each(
+#[cfg(test)]
+fn shoot_each(form: &SpaceForm, cone: &Cone, accuracy: Accuracy, budget: &Budget) -> Vec<Shot> {
+    shoot_each_and_touches(form, cone, accuracy, budget, None)
+}
+
+/// [`shoot_each`], and with `touches` the points before its last crossing where the curve
+/// comes closest to the cone without crossing it, within [`TOUCH_ANGLE`] (at a probe, not
+/// refined): the ends where a nearby curve grazes the cone, crossing and recrossing between
+/// two probes, or misses it.
+pub(crate) fn shoot_each_and_touches(
     form: &SpaceForm,
     cone: &Cone,
     accuracy: Accuracy,
     budget: &Budget,
+    touches: Option<&mut Vec<Shot>>,
 ) -> Vec<Shot> {
     let mut shots = Vec::new();
-    crossings(form, cone, accuracy, Track::EndOnly, budget, |shot, k| {
-        shots.push(shot);
-        k < cone.crossing
-    });
+    crossings(
+        form,
+        cone,
+        accuracy,
+        Track::EndOnly,
+        budget,
+        touches,
+        |shot, k| {
+            shots.push(shot);
+            k < cone.crossing
+        },
+    );
     shots
 }
+
+/// How close (radians, in the angle from the start tangent) a local approach to the cone
+/// must come to count as a touch ([`shoot_each_and_touches`]).
+pub(crate) const TOUCH_ANGLE: f64 = 0.1;
 
 /// Integrate `form` from 0, calling `each(shot, k)` at the k-th crossing of `cone` (from 1)
 /// until it returns false, `cone.crossing` is passed, or the curve ends (range, guard,
@@ -168,6 +190,7 @@ fn crossings(
     accuracy: Accuracy,
     track: Track,
     budget: &Budget,
+    mut touches: Option<&mut Vec<Shot>>,
     mut each: impl FnMut(Shot, u32) -> bool,
 ) {
     let (_, s_max) = form.s_range();
@@ -175,6 +198,8 @@ fn crossings(
     let mut sensitivity = Sensitivity::default();
     // Inside the cone at the start (the curve leaves the apex along the axis).
     let mut crossings = 0;
+    // g at the probe before the last one (across steps), for the touches.
+    let mut g_before = f64::NAN;
     for _ in 0..MAX_STEPS {
         if !budget.take() {
             return;
@@ -210,6 +235,18 @@ fn crossings(
         for (sigma, point) in sigmas.into_iter().zip(points) {
             let g = cone.g(point);
             let outside = crossings % 2 == 1;
+            // The last probe came closest to the cone without crossing it.
+            if let Some(touches) = touches.as_deref_mut() {
+                let same_side = (g > 0.0) == outside && (g_before > 0.0) == outside;
+                if same_side && g_prev.abs() < g_before.abs() && g_prev.abs() <= g.abs() {
+                    let near = expansion.state_at(prev);
+                    let off = (Vec3::X.angle_to(near.x) - cone.half_angle).abs();
+                    if off < TOUCH_ANGLE {
+                        touches.extend(shot_at(form, near, Vec::new()));
+                    }
+                }
+            }
+            g_before = g_prev;
             if (g > 0.0) != outside {
                 crossings += 1;
                 let at = refine(cone, &expansion, accuracy, (prev, g_prev), (sigma, g));

@@ -9,13 +9,14 @@ use super::family::{SpaceForm, SpaceFormParams};
 use super::mat3::Mat3;
 use super::segment::{Found, SpaceShape};
 use super::shoot::{
-    end_angles, integrate_to, integrate_tracked, shoot, shoot_each, Budget, Checkpoints, Cone,
-    Shot, Track, SOLVE_STEPS,
+    end_angles, integrate_to, integrate_tracked, shoot, shoot_each_and_touches, Budget,
+    Checkpoints, Cone, Shot, Track, SOLVE_STEPS,
 };
 use super::similarity::{mirror, Similarity3};
 use super::taylor::{Accuracy, State};
 use crate::foundation::error::{Error, NotDrawable, Result};
 use crate::foundation::vec3::Vec3;
+use std::rc::Rc;
 
 /// The Λ of the start scans: near-helix first, then a spiral.
 const START_LAMBDAS: [f64; 2] = [0.0, 1.0];
@@ -31,6 +32,12 @@ const SCAN_STEP: f64 = 0.25 * std::f64::consts::LN_10;
 
 /// How many of the fallback's starts (best first) are tried.
 const FREE_END_STARTS: usize = 12;
+
+/// How many of the scans' touches (best first) the fallback tries after its starts: where
+/// the curve ends grazing the cone (|θ2| near π/2), or after it has come close to the cone
+/// without crossing it, the crossing that ends the segment has no fixed number, so the
+/// starts by crossing miss it; the end comes close to the cone on the scan's curves nearby.
+const TOUCH_STARTS: usize = 8;
 
 /// A solution whose tangent and binormal turn by at most this much (3π/2) is accepted at
 /// once; beyond it (nearly a loop) the other starts are tried for a gentler one.
@@ -112,7 +119,18 @@ struct Converged {
     tangent: Option<[f64; 3]>,
 }
 
-/// Solve the space problem: swap the ends if θ0 < θ1, find (Λ, ν), build the similarity.
+/// Solve the space problem: find (Λ, ν) with the standard form starting at the end whose
+/// tangent makes the larger angle with the chord, else at the other end; build the
+/// similarity.
+///
+/// Seed 003 starts at the end with the larger angle: a planar spiral's chord makes the
+/// larger angle with the tangent where its curvature is larger, and the standard form's
+/// curvature falls from its start (Λ ≥ 0). Torsion can turn that round: a long piece
+/// whose torsion radius grows (type 1) may end with the larger angle, and then only the
+/// other order has a segment with Λ ≥ 0. So the other order is searched too when the first
+/// finds nothing; it comes second, so that what the first finds is what was found before.
+/// The Ω_max of a refusal is the first order's, or the other's where the first has no
+/// segment at Ω = 0.
 pub(super) fn solve_space(
     points: [Vec3; 4],
     shape: SpaceShape,
@@ -120,80 +138,165 @@ pub(super) fn solve_space(
     warm: Option<WarmStart>,
 ) -> Result<Found> {
     let [theta0, theta1, _] = angles;
-    let reversed = theta0 < theta1;
-    let [p0, p1, p2, p3] = if reversed {
-        [points[3], points[2], points[1], points[0]]
-    } else {
-        points
-    };
-    let t0 = (p1 - p0).normalize();
-    let t1 = (p3 - p2).normalize();
-    let chord = p3 - p0;
-    let (theta0, theta1, theta2) = end_angles(chord, t0, t1);
-    let target = Target {
-        theta0,
-        theta1,
-        theta2,
-    };
-    // The seed's crossing: the first outward, or the way back in when |θ2| > π/2.
-    let crossing = if theta2.abs() > std::f64::consts::FRAC_PI_2 {
-        2
-    } else {
-        1
-    };
+    let first = theta0 < theta1;
     let budget = Budget::new(SOLVE_STEPS);
-    let scans = ScanShots::default();
-    let problem = Problem {
-        shape,
-        target,
-        crossing,
-        budget: &budget,
-        scans: &scans,
-    };
+    let scans = [ScanShots::default(), ScanShots::default()];
+    let orders = [first, !first].map(|reversed| Order::new(points, reversed));
+    let problems = [0, 1].map(|k| orders[k].problem(shape, &budget, &scans[k]));
     let omega = shape.omega;
-    let warm = warm
-        .filter(|w| w.reversed == reversed)
-        .and_then(|w| problem.newton3(w.solution, w.s_end, omega, Accuracy::Full));
-    let found = match warm {
-        Some(found) => Ok(found),
-        None => problem.solve_with_omega(omega),
+    // A warm start in the order it was found in (a drag that makes θ0 and θ1 change places
+    // keeps following its segment).
+    if let Some(w) = warm {
+        let k = usize::from(w.reversed != first);
+        if let Some(found) = problems[k].newton3(w.solution, w.s_end, omega, Accuracy::Full) {
+            return orders[k].place(&problems[k], &found, omega);
+        }
+    }
+    if let Some(found) = problems[0].solve_directly(omega) {
+        return orders[0].place(&problems[0], &found, omega);
+    }
+    let refusal = match problems[0].continue_from_zero(omega) {
+        Ok(found) => return orders[0].place(&problems[0], &found, omega),
+        Err(e) => e,
     };
-    let found = found?;
-    let form = problem.form(&found.solution, omega);
-    // The solver's own check: the end it found, integrated once more with its checkpoints,
-    // meets the end angles.
-    let shot = integrate_to(
-        &form,
-        found.s_end,
-        Checkpoints::Keep,
-        Accuracy::Full,
-        &Budget::new(SOLVE_STEPS),
-    )
-    .filter(|shot| problem.residual3(shot).iter().all(|r| r.abs() < 1e-10))
-    .ok_or(Error::NotDrawable(NotDrawable::NoSpaceSegment { omega }))?;
-    // Mirror when the standard form's dihedral has the other sign (seed 003 §4).
-    let mirror_z = (shot.theta2 < 0.0) != (theta2 < 0.0);
-    // Rotation taking e1 to t0 and the standard-form chord to the caller's.
-    let frame_of = |axis: Vec3, towards: Vec3| {
-        let w = perpendicular(towards, axis);
-        Mat3::from_columns(axis, w, axis.cross(w))
+    // The other order: its free-end search alone (it finds every constructed input that
+    // needs this order, the cone search only three in four of them), and its continuation
+    // only where the first order has no segment at Ω = 0 to report: together they add about
+    // half to a refusal's integration steps, where the whole search would add a time.
+    if let Some(found) = problems[1].attempt_free_end(omega) {
+        return orders[1].place(&problems[1], &found, omega);
+    }
+    let other = match refusal {
+        Refusal::None => match problems[1].continue_from_zero(omega) {
+            Ok(found) => return orders[1].place(&problems[1], &found, omega),
+            Err(other) => other,
+        },
+        Refusal::BranchEnds { .. } => Refusal::None,
     };
-    let standard = frame_of(Vec3::X, mirror(shot.end.x, mirror_z));
-    let caller = frame_of(t0, chord);
-    let rotation = caller * standard.transpose();
-    let transform = Similarity3 {
-        scale: chord.length() / shot.end.x.length(),
-        rotation: rotation.0,
-        translation: p0,
-        mirror_z,
-        reversed,
-    };
-    Ok(Found::Space {
-        form,
-        s_end: shot.end.s,
-        transform,
-        checkpoints: shot.checkpoints,
-    })
+    Err(Error::NotDrawable(match refusal.max(other) {
+        Refusal::None => NotDrawable::NoSpaceSegment { omega },
+        Refusal::BranchEnds { omega_max } => NotDrawable::TorsionTooLarge { omega, omega_max },
+    }))
+}
+
+/// The refusal of the search in one order of the ends.
+#[derive(Clone, Copy, Debug)]
+enum Refusal {
+    /// No segment at Ω = 0 either.
+    None,
+    /// The branch of the Ω = 0 segment, followed in Ω, ends at `omega_max`.
+    BranchEnds { omega_max: f64 },
+}
+
+impl Refusal {
+    /// What the two orders together say: the branch that reaches further.
+    fn max(self, other: Refusal) -> Refusal {
+        match (self, other) {
+            (Refusal::None, r) | (r, Refusal::None) => r,
+            (Refusal::BranchEnds { omega_max: a }, Refusal::BranchEnds { omega_max: b }) => {
+                Refusal::BranchEnds {
+                    omega_max: a.max(b),
+                }
+            }
+        }
+    }
+}
+
+/// One order of the ends: the control points with the standard form's start first.
+#[derive(Clone, Copy, Debug)]
+struct Order {
+    reversed: bool,
+    p0: Vec3,
+    t0: Vec3,
+    chord: Vec3,
+    target: Target,
+    /// The seed's crossing: the first outward, or the way back in when |θ2| > π/2.
+    crossing: u32,
+}
+
+impl Order {
+    fn new(points: [Vec3; 4], reversed: bool) -> Order {
+        let [p0, p1, p2, p3] = if reversed {
+            [points[3], points[2], points[1], points[0]]
+        } else {
+            points
+        };
+        let t0 = (p1 - p0).normalize();
+        let t1 = (p3 - p2).normalize();
+        let chord = p3 - p0;
+        let (theta0, theta1, theta2) = end_angles(chord, t0, t1);
+        let crossing = if theta2.abs() > std::f64::consts::FRAC_PI_2 {
+            2
+        } else {
+            1
+        };
+        Order {
+            reversed,
+            p0,
+            t0,
+            chord,
+            target: Target {
+                theta0,
+                theta1,
+                theta2,
+            },
+            crossing,
+        }
+    }
+
+    fn problem<'a>(
+        &self,
+        shape: SpaceShape,
+        budget: &'a Budget,
+        scans: &'a ScanShots,
+    ) -> Problem<'a> {
+        Problem {
+            shape,
+            target: self.target,
+            crossing: self.crossing,
+            budget,
+            scans,
+        }
+    }
+
+    /// The segment of `found`: checked once more, mirrored and placed on the points.
+    fn place(&self, problem: &Problem<'_>, found: &Converged, omega: f64) -> Result<Found> {
+        let form = problem.form(&found.solution, omega);
+        // The solver's own check: the end it found, integrated once more with its
+        // checkpoints, meets the end angles.
+        let shot = integrate_to(
+            &form,
+            found.s_end,
+            Checkpoints::Keep,
+            Accuracy::Full,
+            &Budget::new(SOLVE_STEPS),
+        )
+        .filter(|shot| problem.residual3(shot).iter().all(|r| r.abs() < 1e-10))
+        .ok_or(Error::NotDrawable(NotDrawable::NoSpaceSegment { omega }))?;
+        // Mirror when the standard form's dihedral has the other sign (seed 003 §4).
+        let mirror_z = (shot.theta2 < 0.0) != (self.target.theta2 < 0.0);
+        // Rotation taking e1 to t0 and the standard-form chord to the caller's.
+        let frame_of = |axis: Vec3, towards: Vec3| {
+            let w = perpendicular(towards, axis);
+            Mat3::from_columns(axis, w, axis.cross(w))
+        };
+        let standard = frame_of(Vec3::X, mirror(shot.end.x, mirror_z));
+        let caller = frame_of(self.t0, self.chord);
+        let rotation = caller * standard.transpose();
+        let transform = Similarity3 {
+            scale: self.chord.length() / shot.end.x.length(),
+            rotation: rotation.0,
+            translation: self.p0,
+            mirror_z,
+            reversed: self.reversed,
+        };
+        Ok(Found::Space {
+            form,
+            s_end: shot.end.s,
+            transform,
+            checkpoints: shot.checkpoints,
+        })
+    }
 }
 
 /// The unit vector along the part of `v` perpendicular to the unit vector `axis`, by
@@ -317,7 +420,15 @@ struct Problem<'a> {
 /// The shots of the ν scans, each to the first [`SCAN_CROSSINGS`] crossings of the cone, by
 /// (Ω, Λ, grid index): the cone search and the free-end search scan some of the same points.
 #[derive(Debug, Default)]
-struct ScanShots(std::cell::RefCell<std::collections::HashMap<(u64, u64, u32), Vec<Shot>>>);
+struct ScanShots(std::cell::RefCell<std::collections::HashMap<(u64, u64, u32), Rc<ScanShot>>>);
+
+/// One shot of a ν scan: its crossings of the cone, in order, and its touches before the
+/// last ([`shoot_each_and_touches`]).
+#[derive(Debug)]
+struct ScanShot {
+    crossings: Vec<Shot>,
+    touches: Vec<Shot>,
+}
 
 /// How many crossings of the cone a scan's shot looks for.
 const SCAN_CROSSINGS: u32 = 3;
@@ -344,19 +455,27 @@ impl Problem<'_> {
     }
 
     /// The crossings of the θ0 cone (up to [`SCAN_CROSSINGS`]) of the form at Λ = `lambda`
-    /// and index `k` of the ν scan, made once per solve.
-    fn scan_shots(&self, omega: f64, lambda: f64, k: u32) -> Vec<Shot> {
+    /// and index `k` of the ν scan, and its touches, made once per solve.
+    fn scan_shots(&self, omega: f64, lambda: f64, k: u32) -> Rc<ScanShot> {
         let key = (omega.to_bits(), lambda.to_bits(), k);
         if let Some(shots) = self.scans.0.borrow().get(&key) {
-            return shots.clone();
+            return Rc::clone(shots);
         }
         let p = Solution {
             lambda,
             ln_nu: self.scan_ln_nu(k),
         };
         let cone = Cone::new(self.target.theta0, SCAN_CROSSINGS);
-        let shots = shoot_each(&self.form(&p, omega), &cone, Accuracy::Scan, self.budget);
-        self.scans.0.borrow_mut().insert(key, shots.clone());
+        let mut touches = Vec::new();
+        let crossings = shoot_each_and_touches(
+            &self.form(&p, omega),
+            &cone,
+            Accuracy::Scan,
+            self.budget,
+            Some(&mut touches),
+        );
+        let shots = Rc::new(ScanShot { crossings, touches });
+        self.scans.0.borrow_mut().insert(key, Rc::clone(&shots));
         shots
     }
 
@@ -389,10 +508,12 @@ impl Problem<'_> {
     /// the curve grazes the cone (|θ2| near π/2, where the first and second crossings meet)
     /// and misses ends beyond the second crossing; the angles are smooth in all three
     /// unknowns there. Starts: from ν scans at a few Λ on the cones of the first three
-    /// crossings, the lowest point of each valley of the 2-D residual along ν, best first.
+    /// crossings, the lowest point of each valley of the 2-D residual along ν, best first;
+    /// then the scans' touches ([`TOUCH_STARTS`]).
     fn attempt_free_end(&self, omega: f64) -> Option<Converged> {
         const CROSSINGS: usize = SCAN_CROSSINGS as usize;
         let mut starts = Vec::new();
+        let mut touches = Vec::new();
         for lambda in FREE_END_LAMBDAS {
             // Each crossing's residuals along the ν scan, with the start they give.
             let mut by_crossing: [Vec<ScanPoint<(Solution, f64)>>; CROSSINGS] = Default::default();
@@ -402,10 +523,14 @@ impl Problem<'_> {
                     ln_nu: self.scan_ln_nu(k),
                 };
                 let shots = self.scan_shots(omega, lambda, k);
-                for (points, shot) in by_crossing.iter_mut().zip(&shots) {
+                for (points, shot) in by_crossing.iter_mut().zip(&shots.crossings) {
                     let r = self.target.residual(shot);
                     points.push((k, r[0].hypot(r[1]), (p, shot.end.s)));
                 }
+                touches.extend(shots.touches.iter().map(|shot| {
+                    let r = self.residual3(shot);
+                    (r[0].hypot(r[1]).hypot(r[2]), p, shot.end.s)
+                }));
             }
             // One start per valley, so that the starts tried lie in different basins.
             for points in &by_crossing {
@@ -413,9 +538,11 @@ impl Problem<'_> {
             }
         }
         starts.sort_by(|a, b| a.0.total_cmp(&b.0));
+        touches.sort_by(|a, b| a.0.total_cmp(&b.0));
         starts
             .into_iter()
             .take(FREE_END_STARTS)
+            .chain(touches.into_iter().take(TOUCH_STARTS))
             .find_map(|(_, p, s_end)| self.newton3(p, s_end, omega, Accuracy::Full))
     }
 
@@ -620,31 +747,31 @@ impl Problem<'_> {
             .then_some(columns)
     }
 
-    /// Solve at `omega`, directly from a near-helix start, else by continuation in Ω from
-    /// 0; report the largest Ω reached when `omega` is out of reach.
-    fn solve_with_omega(&self, omega: f64) -> Result<Converged> {
-        // The cone search first; where it finds nothing, or only a segment that turns by
-        // more than GENTLE_TURNING, the free-end search, and the gentler of the two.
+    /// Solve at `omega` directly: the cone search first; where it finds nothing, or only a
+    /// segment that turns by more than [`GENTLE_TURNING`], the free-end search, and the
+    /// gentler of the two.
+    fn solve_directly(&self, omega: f64) -> Option<Converged> {
         let cone = self.attempt(omega);
         if let Some(c) = cone.clone().filter(|c| c.turning <= GENTLE_TURNING) {
-            return Ok(c);
+            return Some(c);
         }
         let free = self.attempt_free_end(omega);
-        if let Some(c) = [cone, free]
+        [cone, free]
             .into_iter()
             .flatten()
             .min_by(|a, b| a.turning.total_cmp(&b.turning))
-        {
-            return Ok(c);
-        }
-        let none = || Error::NotDrawable(NotDrawable::NoSpaceSegment { omega });
+    }
+
+    /// Solve at `omega` by continuation in Ω from the segment at Ω = 0; report the largest
+    /// Ω reached when `omega` is out of reach.
+    fn continue_from_zero(&self, omega: f64) -> std::result::Result<Converged, Refusal> {
         if omega == 0.0 {
-            return Err(none());
+            return Err(Refusal::None);
         }
         let ok = self
             .attempt(0.0)
             .or_else(|| self.attempt_free_end(0.0))
-            .ok_or_else(none)?;
+            .ok_or(Refusal::None)?;
         // Follow that segment's branch in Ω with the end s free (smooth through the cone's
         // fold), to Ω or as far as it goes (to 0.1% of Ω: the Ω_max reported is a lower bound),
         // each step started along the branch's tangent at its last point and converged at the
@@ -712,10 +839,7 @@ impl Problem<'_> {
                         .is_some()
             })
             .map_or(0.0, |(o, _)| *o);
-        Err(Error::NotDrawable(NotDrawable::TorsionTooLarge {
-            omega,
-            omega_max,
-        }))
+        Err(Refusal::BranchEnds { omega_max })
     }
 
     /// Newton from the near-helix start (Λ = 0: a helix when Ω = 0, which always meets the
@@ -765,7 +889,7 @@ impl Problem<'_> {
             scan.next += 1;
             let p = Solution { lambda, ln_nu };
             let shots = self.scan_shots(omega, lambda, k);
-            let Some(shot) = shots.get(self.crossing as usize - 1) else {
+            let Some(shot) = shots.crossings.get(self.crossing as usize - 1) else {
                 scan.prev = None;
                 continue;
             };

@@ -280,11 +280,20 @@ fn bad_input_gives_typed_errors() {
 }
 
 #[test]
-fn too_large_omega_reports_the_largest_that_works() {
+fn out_of_reach_omega_reports_where_the_branch_ends() {
     let p = twisted();
     let solve =
         |omega| SpaceSegment::from_control_points(p, shape(0.0, 1.0, omega, TorsionType::One));
     let err = solve(50.0).unwrap_err();
+    // The message says what the search found, one line, not that Ω is too large.
+    let message = err.to_string();
+    assert!(
+        message.contains("no space segment found for omega = 50;")
+            && message.contains("found by continuing from omega = 0 ends near omega = ")
+            && !message.contains("too large")
+            && !message.contains('\n'),
+        "{message}"
+    );
     let Error::NotDrawable(NotDrawable::TorsionTooLarge { omega, omega_max }) = err else {
         panic!("expected TorsionTooLarge, got {err:?}");
     };
@@ -300,6 +309,95 @@ fn too_large_omega_reports_the_largest_that_works() {
     );
     // Some way beyond Ω_max it still fails.
     assert!(solve(omega_max * 1.05 + 1e-3).is_err());
+}
+
+/// Pieces of known space curves that the search used to miss, each solved now and its ends
+/// reproduced: three of type 1 with β = −1 whose chord makes the larger angle with the
+/// tangent at the form's end (found only with the ends in the other order; they were refused
+/// as "omega too large"), and two of type 2 ending where the curve grazes the cone about the
+/// start tangent (found only from the scans' touches).
+#[test]
+fn pieces_the_search_used_to_miss_are_solved() {
+    let cases = [
+        (
+            0.5,
+            -1.0,
+            0.09778619517379782,
+            TorsionType::One,
+            [
+                [1.3895617668398228, -2.564261834393954, -2.8091210890292633],
+                [1.1460167392628535, -3.2632023123888185, -3.098789027032256],
+                [0.5346775160893406, -2.4133878912986755, -3.0220331052082083],
+                [
+                    0.48382525680320576,
+                    -2.6179171878701157,
+                    -3.3423874802826727,
+                ],
+            ],
+        ),
+        (
+            1.0,
+            -1.0,
+            0.1868153369512504,
+            TorsionType::One,
+            [
+                [-1.0882533107743493, 4.599549536895837, 3.0746321932132656],
+                [-1.1616445867579073, 4.56219858798149, 3.2800439365380027],
+                [-0.8805933869418084, 4.890487707885293, 3.325435628220098],
+                [-0.7520476588954708, 4.69794229976112, 3.38523841342203],
+            ],
+        ),
+        (
+            2.0,
+            -1.0,
+            0.1822517018656115,
+            TorsionType::One,
+            [
+                [-4.123385313620144, -1.1674479167420673, 4.213382981103715],
+                [-5.2270002653653655, -5.784428151126061, 6.680455829314085],
+                [4.759444933340005, -6.858727940513, 1.2800879271324561],
+                [-1.7956472215109107, -11.48515876117612, -0.7745569467139344],
+            ],
+        ),
+        (
+            2.0,
+            -1.0,
+            0.2194752495109898,
+            TorsionType::Two,
+            [
+                [9.81098301201163, 3.863257491614762, 2.277454579902903],
+                [5.777221247355678, 3.345945979981524, 2.308931533509147],
+                [
+                    4.6744912721333565,
+                    -0.012784908053850685,
+                    0.34048691912400936,
+                ],
+                [2.1815947506101487, 3.203158143919289, 0.5852808729800429],
+            ],
+        ),
+        (
+            2.0,
+            -1.0,
+            0.3691045607601698,
+            TorsionType::Two,
+            [
+                [-2.9568651402718804, -0.7661126900318627, 1.805196657879087],
+                [-2.9812246717368764, 0.19799453522525762, 1.6926895188027338],
+                [-2.7047454280456225, 0.10237752147335943, 1.1195224494584233],
+                [-2.966855331297399, 0.4838917533161249, 1.3750837763429038],
+            ],
+        ),
+    ];
+    for (alpha, beta, omega, torsion, p) in cases {
+        let p = points(p);
+        let seg = SpaceSegment::from_control_points(p, shape(alpha, beta, omega, torsion))
+            .unwrap_or_else(|e| panic!("alpha {alpha} beta {beta} omega {omega}: {e}"));
+        let (pos, tan) = check_ends(&seg, p);
+        assert!(
+            pos < 1e-9 && tan < 1e-9,
+            "alpha {alpha} beta {beta} omega {omega}: {pos:e} {tan:e}"
+        );
+    }
 }
 
 mod never_panics {

@@ -10,6 +10,7 @@
 //! rotation, a scale 0.1–10 (log-uniform) and a shift. One case in four is put near the
 //! cone's edge: `s_end` where |θ2| is within 0.05 rad of π/2, where the end's crossing of the
 //! cone about the start tangent changes from outward (first) to inward (second).
+//! [`generate_with`] takes other cells and ranges of the end ([`Recipe`]).
 
 #![allow(dead_code)] // the benchmark uses the generator only
 
@@ -47,11 +48,14 @@ pub(crate) struct Case {
     pub(crate) edge: bool,
     /// Which crossing of the cone about the start tangent the end is (1 = the first).
     pub(crate) crossing: u32,
+    /// The chord makes the larger angle with the tangent at the form's end (θ0 < θ1 on the
+    /// piece), where a planar spiral has it at its start.
+    pub(crate) larger_angle_at_end: bool,
 }
 
 /// `(θ0, θ1, θ2)` of the standard-form piece from 0 to `s`: the angles of the chord with the
 /// two end tangents and the dihedral about it (docs/math.md §6), written out here.
-fn angles(form: &SpaceForm, s: f64) -> Option<(f64, f64, f64)> {
+pub(crate) fn angles(form: &SpaceForm, s: f64) -> Option<(f64, f64, f64)> {
     let f = form.frame_at_s(s).ok()?;
     let c = f.point.normalize();
     let u0 = Vec3::X - c * c.x;
@@ -175,20 +179,55 @@ fn edge_end(form: &SpaceForm, s_hi: f64, rng: &mut Rng) -> Option<f64> {
     Some(0.5 * (lo + hi))
 }
 
-/// `n` cases from `seed`, deterministic.
+/// What [`generate_with`] draws: which (α, β, type) cells, cycled so that each is equally
+/// represented, and the ranges of the piece's end.
+#[derive(Clone, Debug)]
+pub(crate) struct Recipe {
+    /// The cells (α, β, torsion type), taken in turn.
+    pub(crate) cells: Vec<(f64, f64, TorsionType)>,
+    /// The end `s_end` is drawn uniformly in this range of the standard form's arc length
+    /// (cut to 98% of its valid range; rejected when the piece is not acceptable there), and
+    /// a near-edge end searched up to its upper bound.
+    pub(crate) s_end: (f64, f64),
+    /// Ends shorter than this are rejected (the default set keeps short near-edge ends).
+    pub(crate) min_s_end: f64,
+    /// The least |θ2| and π − |θ2| (radians): how clearly the points are not coplanar.
+    pub(crate) min_dihedral: f64,
+}
+
+impl Recipe {
+    /// The default set: α, β ∈ [`SLOPES`] (α fastest), type 1 for the first 36 cells,
+    /// type 2 for the next; ends at 0.1–6.
+    pub(crate) fn all_slopes() -> Recipe {
+        let mut cells = Vec::new();
+        for torsion in [TorsionType::One, TorsionType::Two] {
+            for beta in SLOPES {
+                for alpha in SLOPES {
+                    cells.push((alpha, beta, torsion));
+                }
+            }
+        }
+        Recipe {
+            cells,
+            s_end: (0.1, 6.0),
+            min_s_end: 0.0,
+            min_dihedral: 1e-3,
+        }
+    }
+}
+
+/// `n` cases from `seed` by [`Recipe::all_slopes`], deterministic.
 pub(crate) fn generate(seed: u64, n: usize) -> Vec<Case> {
+    generate_with(seed, n, &Recipe::all_slopes())
+}
+
+/// `n` cases from `seed` by `recipe`, deterministic.
+pub(crate) fn generate_with(seed: u64, n: usize, recipe: &Recipe) -> Vec<Case> {
     let mut rng = Rng(seed);
     let mut cases = Vec::with_capacity(n);
     let mut k = 0usize;
     while cases.len() < n {
-        let slot = cases.len();
-        let alpha = SLOPES[slot % 6];
-        let beta = SLOPES[(slot / 6) % 6];
-        let torsion = if (slot / 36) % 2 == 0 {
-            TorsionType::One
-        } else {
-            TorsionType::Two
-        };
+        let (alpha, beta, torsion) = recipe.cells[cases.len() % recipe.cells.len()];
         k += 1;
         let lambda = 0.05 + 0.55 * rng.next();
         let omega = if k % 4 == 0 { 0.0 } else { 0.4 * rng.next() };
@@ -203,7 +242,8 @@ pub(crate) fn generate(seed: u64, n: usize) -> Vec<Case> {
         }) else {
             continue;
         };
-        let s_hi = 6.0f64.min(0.98 * form.s_range().1);
+        let (s_lo, s_hi) = recipe.s_end;
+        let s_hi = s_hi.min(0.98 * form.s_range().1);
         let edge = rng.next() < 0.25;
         let s_end = if edge {
             match edge_end(&form, s_hi, &mut rng) {
@@ -211,11 +251,17 @@ pub(crate) fn generate(seed: u64, n: usize) -> Vec<Case> {
                 None => continue,
             }
         } else {
-            0.1 + (s_hi - 0.1) * rng.next()
+            s_lo + (s_hi - s_lo) * rng.next()
         };
-        let Some((theta0, _, _)) = acceptable(&form, s_end) else {
+        if s_end < recipe.min_s_end {
+            continue;
+        }
+        let Some((theta0, theta1, theta2)) = acceptable(&form, s_end) else {
             continue;
         };
+        if theta2.abs().min(std::f64::consts::PI - theta2.abs()) <= recipe.min_dihedral {
+            continue;
+        }
         let end = form.frame_at_s(s_end).unwrap();
         let chord = end.point.length();
         let (a, b) = (
@@ -255,6 +301,7 @@ pub(crate) fn generate(seed: u64, n: usize) -> Vec<Case> {
             s_end,
             edge,
             crossing: crossing_number(&form, s_end, theta0),
+            larger_angle_at_end: theta0 < theta1,
         });
     }
     cases

@@ -268,8 +268,30 @@ impl Fit {
             let failed = Error::NumericalFailure {
                 what: "the first guess of the fit",
             };
+            // Should the profile's pieces describe no chain (a law the range of α does not
+            // have, a piece winding round), start from circles of each piece's mean
+            // curvature, and failing that from a nearly straight line.
+            let circles = |straight: bool| {
+                let alpha = input.alpha_range.0.max(0.0).min(input.alpha_range.1);
+                pieces
+                    .iter()
+                    .map(|&(ka, kb, len, _)| {
+                        let k = if straight { 1e-6 } else { 0.5 * (ka + kb) };
+                        let k = if k == 0.0 { 1e-6 } else { k };
+                        (k, k, len, alpha)
+                    })
+                    .collect::<Vec<_>>()
+            };
             let state = problem(layout_of(n))
                 .state(x, &profile.s)
+                .or_else(|| {
+                    let x = layout_of(n).pack(start, &circles(false));
+                    problem(layout_of(n)).state(x, &profile.s)
+                })
+                .or_else(|| {
+                    let x = layout_of(n).pack(start, &circles(true));
+                    problem(layout_of(n)).state(x, &profile.s)
+                })
                 .ok_or(failed.clone())?;
             if n == 1 && !matches!(input.alpha_mode, AlphaMode::Fixed(_)) {
                 sweep_alpha(&problem(layout_of(1)), state, input.alpha_range).ok_or(failed)
@@ -381,6 +403,14 @@ impl Fit {
             split_long_turns(&problem(layout_of(n)), state).ok_or(Error::NumericalFailure {
                 what: "the split of a fitted segment that turns by more than pi",
             })?;
+        if n > target {
+            return Err(Error::OutOfRange {
+                name: "max_segments",
+                value: target as f64,
+                expected: "enough segments for every one to turn by less than pi (the fit \
+                           turns more: allow more segments)",
+            });
+        }
         build::build(&input, &layout_of(n), state, options)
     }
 
@@ -490,14 +520,22 @@ const ALPHA_SWEEP: [f64; 12] = [
 /// starts the free fit.
 fn sweep_alpha(problem: &Problem, state: State, range: (f64, f64)) -> Option<State> {
     let (lo, hi) = range;
-    let fixed = |alpha: f64| Layout {
-        alpha: AlphaMode::Fixed(alpha),
-        ..problem.layout
+    // The sweep looks for the valley, not its floor: about a hundred of the points (every
+    // k-th, each weighing for the k) are enough, and the free fit then uses them all.
+    let k = problem.data.len().div_ceil(SWEEP_POINTS).max(1);
+    let data: Vec<Complex> = problem.data.iter().step_by(k).copied().collect();
+    let weights: Vec<f64> = problem.weights.iter().step_by(k).copied().collect();
+    let thin = |s: &State| -> Vec<f64> { s.feet.iter().step_by(k).copied().collect() };
+    let fixed = |alpha: f64| Problem {
+        layout: Layout {
+            alpha: AlphaMode::Fixed(alpha),
+            ..problem.layout
+        },
+        data: &data,
+        weights: &weights,
+        ..*problem
     };
-    let free = problem.layout;
     let mut best: Option<State> = None;
-    let first = state;
-    let mut from = first.clone();
     let mut slopes: Vec<f64> = ALPHA_SWEEP
         .iter()
         .copied()
@@ -506,33 +544,45 @@ fn sweep_alpha(problem: &Problem, state: State, range: (f64, f64)) -> Option<Sta
     if slopes.is_empty() {
         slopes.push(0.5 * (lo + hi));
     }
+    let first_feet = thin(&state);
+    let first = (
+        (state.chain.start, state.chain.theta0),
+        state.chain.numbers.clone(),
+        first_feet,
+    );
+    let mut from = first.clone();
     for alpha in slopes {
-        let layout = fixed(alpha);
-        let one = Problem { layout, ..*problem };
+        let one = fixed(alpha);
         // From the first guess and from the neighbouring slope's answer: the better one.
         let mut answer: Option<State> = None;
-        for start_state in [&first, &from] {
-            let start = (start_state.chain.start, start_state.chain.theta0);
-            let mut numbers = start_state.chain.numbers.clone();
+        for (start, numbers, feet) in [&first, &from] {
+            let mut numbers = numbers.clone();
             numbers[0].3 = alpha;
-            let Some(s) = one.state(layout.pack(start, &numbers), &start_state.feet) else {
+            let Some(s) = one.state(one.layout.pack(*start, &numbers), feet) else {
                 continue;
             };
-            let s = one.minimize(s, 30);
+            let s = one.minimize(s, 12);
             if answer.as_ref().is_none_or(|a| s.cost < a.cost) {
                 answer = Some(s);
             }
         }
         let Some(s) = answer else { continue };
+        from = (
+            (s.chain.start, s.chain.theta0),
+            s.chain.numbers.clone(),
+            s.feet.clone(),
+        );
         if best.as_ref().is_none_or(|b| s.cost < b.cost) {
-            best = Some(s.clone());
+            best = Some(s);
         }
-        from = s;
     }
     let best = best?;
     let start = (best.chain.start, best.chain.theta0);
-    problem.state(free.pack(start, &best.chain.numbers), &best.feet)
+    problem.state(problem.layout.pack(start, &best.chain.numbers), &state.feet)
 }
+
+/// About how many points the α sweep of a single segment looks at.
+const SWEEP_POINTS: usize = 100;
 
 /// The chain with every piece that turns by 0.9π or more cut into equal parts that turn by
 /// less (the same curve), and its number of pieces.

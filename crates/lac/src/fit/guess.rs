@@ -277,20 +277,6 @@ pub(super) fn pieces(
     alpha: AlphaMode,
     range: (f64, f64),
 ) -> Vec<(f64, f64, f64, f64)> {
-    pieces_and_misfits(profile, cuts, alpha, range)
-        .into_iter()
-        .map(|(p, _)| p)
-        .collect()
-}
-
-/// [`pieces`], each with the largest difference between its law's curvature and the
-/// smoothed curvature of the data.
-fn pieces_and_misfits(
-    profile: &Profile,
-    cuts: &[f64],
-    alpha: AlphaMode,
-    range: (f64, f64),
-) -> Vec<((f64, f64, f64, f64), f64)> {
     let mut bounds = vec![0.0];
     bounds.extend_from_slice(cuts);
     bounds.push(profile.total);
@@ -324,7 +310,7 @@ fn pieces_and_misfits(
                 .collect(),
         };
         let opposite = ka.signum() != kb.signum();
-        let mut best = (f64::INFINITY, candidates[0], f64::INFINITY);
+        let mut best = (f64::INFINITY, candidates[0]);
         for &alpha in &candidates {
             if opposite && alpha < INFLECTION_ALPHA_MIN && alpha != candidates[0] {
                 continue;
@@ -332,14 +318,12 @@ fn pieces_and_misfits(
             let Some(law) = Law::new(ka, kb, len, alpha) else {
                 continue;
             };
-            let (mut err, mut largest) = (0.0, 0.0f64);
-            for &(t, k) in &samples {
-                let d = (law.at(t).1 - k).abs();
-                err += d * d;
-                largest = largest.max(d);
-            }
+            let err: f64 = samples
+                .iter()
+                .map(|&(t, k)| (law.at(t).1 - k).powi(2))
+                .sum();
             if err < best.0 {
-                best = (err, alpha, largest);
+                best = (err, alpha);
             }
         }
         let mut alpha_guess = best.1;
@@ -356,7 +340,7 @@ fn pieces_and_misfits(
             (ka, kb) = (mean, mean);
             alpha_guess = candidates[candidates.len() / 2];
         }
-        out.push(((ka, kb, len, alpha_guess), best.2));
+        out.push((ka, kb, len, alpha_guess));
     }
     out
 }

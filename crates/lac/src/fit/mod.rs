@@ -355,13 +355,6 @@ impl Fit {
             }
             let worst = worst_index(&state.distances);
             let reached = state.distances[worst];
-            if std::env::var("LAC_FIT_DEBUG").is_ok() {
-                eprintln!(
-                    "n {n}: worst {reached:e} at {worst}; joints {:?} alphas {:?}",
-                    state.chain.starts,
-                    state.chain.numbers.iter().map(|p| p.3).collect::<Vec<_>>()
-                );
-            }
             let done = match tolerance {
                 Some(tol) => reached <= tol,
                 None => true,
@@ -386,11 +379,10 @@ impl Fit {
                 state = first_state(&cuts)?;
                 continue;
             }
-            state = split(&layout_of(n), &problem(layout_of(n + 1)), state, worst).ok_or(
-                Error::NumericalFailure {
+            state =
+                split(&problem(layout_of(n + 1)), state, worst).ok_or(Error::NumericalFailure {
                     what: "the split of a fitted segment",
-                },
-            )?;
+                })?;
             n += 1;
         }
         if !closed && !options.pin_ends {
@@ -494,7 +486,7 @@ fn stretch(distances: &[f64], worst: usize, tolerance: f64) -> (usize, usize) {
 
 /// The chain with the piece nearest the worst point split in two at that point (its
 /// middle half), both halves on the same curve.
-fn split(layout: &Layout, problem: &Problem, state: State, worst: usize) -> Option<State> {
+fn split(problem: &Problem, state: State, worst: usize) -> Option<State> {
     let chain = &state.chain;
     let (i, t) = chain.locate(state.feet[worst], 0);
     let t = t.clamp(0.4, 0.6);
@@ -503,7 +495,6 @@ fn split(layout: &Layout, problem: &Problem, state: State, worst: usize) -> Opti
     let kt = chain.pieces[i].law.at(t).1;
     pieces[i] = (ka, kt, t * len, alpha);
     pieces.insert(i + 1, (kt, kb, (1.0 - t) * len, alpha));
-    let _ = layout;
     let start = (Complex::new(state.x[0], state.x[1]), state.x[2]);
     let x = problem.layout.pack(start, &pieces);
     problem.state(x, &state.feet)

@@ -400,7 +400,8 @@ impl Chain {
             // A fit has no use for a piece that winds round more than once (a solver step
             // that makes one is refused); pieces that turn by π or more are split before
             // they are placed as segments.
-            if !(law.at(1.0).0.abs() < MAX_PIECE_TURN) {
+            let turn = law.at(1.0).0.abs();
+            if turn.is_nan() || turn >= MAX_PIECE_TURN {
                 return None;
             }
             let table = Table::new(law, len, start, theta, None)?;

@@ -76,18 +76,6 @@ pub(super) struct Contact {
     at_end: bool,
 }
 
-pub(crate) static COUNTS: [std::sync::atomic::AtomicUsize; 6] = [
-    std::sync::atomic::AtomicUsize::new(0),
-    std::sync::atomic::AtomicUsize::new(0),
-    std::sync::atomic::AtomicUsize::new(0),
-    std::sync::atomic::AtomicUsize::new(0),
-    std::sync::atomic::AtomicUsize::new(0),
-    std::sync::atomic::AtomicUsize::new(0),
-];
-fn count(i: usize, n: usize) {
-    COUNTS[i].fetch_add(n, std::sync::atomic::Ordering::Relaxed);
-}
-
 fn sub(a: Complex, b: Complex) -> Complex {
     Complex::new(a.re - b.re, a.im - b.im)
 }
@@ -117,7 +105,6 @@ fn contact(chain: &Chain, d: Complex, s: &mut f64, hint: &mut usize, closed: boo
         let moved = (next - x).abs();
         x = next;
         frame = chain.frame(x, *hint);
-        count(0, 1);
         // Newton's error after a step of size h is about κh²: below 1e-7 of the length the
         // point just found is the foot to rounding.
         if moved <= 1e-7 * total {
@@ -165,10 +152,7 @@ impl Problem<'_> {
     /// The state of the numbers `x`, the feet found from `feet`; `None` where `x`
     /// describes no chain.
     pub(super) fn state(&self, x: Vec<f64>, feet: &[f64]) -> Option<State> {
-        count(1, 1);
-        let t0 = std::time::Instant::now();
         let chain = Chain::new(&self.layout, &x)?;
-        count(4, t0.elapsed().as_nanos() as usize);
         let closed = self.layout.closed;
         let mut feet = feet.to_vec();
         let mut distances = Vec::with_capacity(self.data.len());
@@ -281,11 +265,9 @@ impl Problem<'_> {
     ) -> (Vec<f64>, Vec<f64>, Vec<[Option<Sensitivity>; 4]>) {
         let np = self.layout.len();
         let chain = &state.chain;
-        let t0 = std::time::Instant::now();
         let sens: Vec<_> = (0..self.layout.n)
             .map(|i| chain.sensitivities(&self.layout, &state.x, i))
             .collect();
-        count(3, t0.elapsed().as_nanos() as usize);
         // Each piece's end shift and turn per number.
         let ends: Vec<Vec<(usize, Complex, f64)>> = sens
             .iter()
@@ -370,10 +352,7 @@ impl Problem<'_> {
         let mut lambda = 1e-3;
         let mut merit_weight = 0.0;
         for _ in 0..iterations {
-            count(2, 1);
-            let t0 = std::time::Instant::now();
             let (a, g, sens) = self.normal_equations(&state);
-            count(5, t0.elapsed().as_nanos() as usize);
             let (c, crow) = self.constraints(&state, &sens);
             let nc = c.len();
 

@@ -92,13 +92,6 @@ fn noisy_g2_paths_are_fitted_within_the_tolerance_and_three_sigma_of_the_truth()
             continue;
         };
         let truth_segments = path.segments().len();
-        if std::env::var("LAC_FIT_DEBUG").is_ok() {
-            eprintln!(
-                "case {case} α {alpha}: truth joints {:?} length {}",
-                path.joint_arc_lengths(),
-                path.arc_length()
-            );
-        }
         let len = path.arc_length();
         let sigma = 1e-4 * len;
         let (points, clean) = noisy(&path, 1000, sigma, &mut rng);

@@ -217,6 +217,30 @@ fn hair(alpha: f64) -> f64 {
     1e-10f64.powf(alpha.abs()).clamp(1e-15, 1e-12)
 }
 
+/// The span [a, b] of a piece cut into parts that each turn by less than 0.9π.
+fn cut_by_turning(law: &super::law::Law, a: f64, b: f64) -> Vec<(f64, f64)> {
+    let (ta, tb) = (law.at(a).0, law.at(b).0);
+    let turn = (tb - ta).abs();
+    let parts = (turn / (0.9 * std::f64::consts::PI)).floor() as usize + 1;
+    let mut cuts = vec![a];
+    for j in 1..parts {
+        let target = ta + (tb - ta) * j as f64 / parts as f64;
+        let rising = tb > ta;
+        let (mut lo, mut hi) = (a, b);
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            if (law.at(mid).0 < target) == rising {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        cuts.push(0.5 * (lo + hi));
+    }
+    cuts.push(b);
+    cuts.windows(2).map(|w| (w[0], w[1])).collect()
+}
+
 /// Place the fitted chain of `state` as segments, measure it and check it.
 pub(super) fn build(
     input: &Input,
@@ -228,6 +252,8 @@ pub(super) fn build(
     let chain = &state.chain;
     let mut segments: Vec<Segment> = Vec::new();
     let mut segment_s: Vec<f64> = Vec::new();
+    // The segments that start just after an inflection.
+    let mut inflections: Vec<usize> = Vec::new();
     let mut pieces = Vec::with_capacity(layout.n);
     let mut start = input.caller(chain.start);
     let mut theta = chain.theta0;
@@ -250,9 +276,17 @@ pub(super) fn build(
             }
             None => spans.push((lo, hi)),
         }
+        // A segment turns by less than π: a piece that turns more is several segments, cut
+        // where equal shares of its turning are reached (on one side of an inflection the
+        // turning is monotone).
+        let spans: Vec<(f64, f64)> = spans
+            .into_iter()
+            .flat_map(|(a, b)| cut_by_turning(&law, a, b))
+            .collect();
         let first = segments.len();
         let piece_s = s;
         let mut inflection = None;
+        let mut after_inflection = None;
         let mut pos = 0.0;
         for (a, b) in spans {
             if b.is_nan() || a.is_nan() || b <= a {
@@ -265,6 +299,7 @@ pub(super) fn build(
                 let gap = (a - pos) * len * scale;
                 if pos > 0.0 {
                     inflection = Some(s + 0.5 * gap);
+                    after_inflection = Some(segments.len());
                 }
                 start += gap * Vec2::from_angle(theta);
                 s += gap;
@@ -285,6 +320,7 @@ pub(super) fn build(
             s += gap;
         }
         let last = segments.len() - 1;
+        inflections.extend(after_inflection);
         pieces.push(FitPiece {
             alpha,
             curvatures: [
@@ -359,15 +395,13 @@ pub(super) fn build(
             });
         }
     }
-    for piece in &pieces {
-        if piece.inflection.is_some() || piece.segments[0] != piece.segments[1] {
-            let a = segments[piece.segments[0]].signed_curvature_end().abs();
-            let b = segments[piece.segments[1]].signed_curvature_start().abs();
-            if a.max(b) > INFLECTION_LIMIT * 10.0 * largest_kappa / scale {
-                return Err(Error::NumericalFailure {
-                    what: "an inflection of the fit (its curvature does not reach zero)",
-                });
-            }
+    for &k in &inflections {
+        let a = segments[k - 1].signed_curvature_end().abs();
+        let b = segments[k].signed_curvature_start().abs();
+        if a.max(b) > INFLECTION_LIMIT * 10.0 * largest_kappa / scale {
+            return Err(Error::NumericalFailure {
+                what: "an inflection of the fit (its curvature does not reach zero)",
+            });
         }
     }
     let distances: Vec<f64> = state.distances.iter().map(|d| d * scale).collect();

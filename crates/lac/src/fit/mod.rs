@@ -137,7 +137,8 @@ pub struct FitPiece {
     pub s: f64,
     /// Arc length (from the fit's start) of its point of zero curvature, for an S.
     pub inflection: Option<f64>,
-    /// The [`Segment`]s it is made of: `segments[0]` and, for an S, `segments[1]`.
+    /// The first and the last of the [`Segment`]s it is made of (more than one for an S,
+    /// and for a piece that turns by π or more: a segment turns by less).
     pub segments: [usize; 2],
 }
 
@@ -390,19 +391,6 @@ impl Fit {
                 what: "the trimmed fit",
             })?;
         }
-        // Pieces that turn by π or more become several segments (the same curve).
-        (state, n) =
-            split_long_turns(&problem(layout_of(n)), state).ok_or(Error::NumericalFailure {
-                what: "the split of a fitted segment that turns by more than pi",
-            })?;
-        if n > target {
-            return Err(Error::OutOfRange {
-                name: "max_segments",
-                value: target as f64,
-                expected: "enough segments for every one to turn by less than pi (the fit \
-                           turns more: allow more segments)",
-            });
-        }
         build::build(&input, &layout_of(n), state, options)
     }
 
@@ -574,52 +562,6 @@ fn sweep_alpha(problem: &Problem, state: State, range: (f64, f64)) -> Option<Sta
 
 /// About how many points the α sweep of a single segment looks at.
 const SWEEP_POINTS: usize = 100;
-
-/// The chain with every piece that turns by 0.9π or more cut into equal parts that turn by
-/// less (the same curve), and its number of pieces.
-fn split_long_turns(problem: &Problem, state: State) -> Option<(State, usize)> {
-    let chain = &state.chain;
-    let mut pieces = Vec::new();
-    for (table, &(ka, kb, len, alpha)) in chain.pieces.iter().zip(&chain.numbers) {
-        let turn = table.law.at(1.0).0.abs();
-        let parts = (turn / (0.9 * std::f64::consts::PI)).floor() as usize + 1;
-        if parts == 1 {
-            pieces.push((ka, kb, len, alpha));
-            continue;
-        }
-        // Equal shares of the turning: the share where the turning reaches j/parts of it.
-        let mut cuts = vec![0.0];
-        for j in 1..parts {
-            let target = turn * j as f64 / parts as f64;
-            let (mut lo, mut hi) = (0.0, 1.0);
-            for _ in 0..60 {
-                let mid = 0.5 * (lo + hi);
-                if table.law.at(mid).0.abs() < target {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
-            }
-            cuts.push(0.5 * (lo + hi));
-        }
-        cuts.push(1.0);
-        for w in cuts.windows(2) {
-            let (a, b) = (w[0], w[1]);
-            pieces.push((table.law.at(a).1, table.law.at(b).1, (b - a) * len, alpha));
-        }
-    }
-    if pieces.len() == chain.pieces.len() {
-        let n = pieces.len();
-        return Some((state, n));
-    }
-    let layout = Layout {
-        n: pieces.len(),
-        ..problem.layout
-    };
-    let longer = Problem { layout, ..*problem };
-    let x = layout.pack((chain.start, chain.theta0), &pieces);
-    Some((longer.state(x, &state.feet)?, layout.n))
-}
 
 /// The open chain cut to the stretch between the first and the last foot of a point: the
 /// data say nothing of the curve beyond, where it would otherwise run on at no cost. The

@@ -398,8 +398,8 @@ impl Chain {
             let (ka, kb, len, alpha) = layout.piece(x, i);
             let law = Law::new(ka, kb, len, alpha)?;
             // A fit has no use for a piece that winds round more than once (a solver step
-            // that makes one is refused); pieces that turn by π or more are split before
-            // they are placed as segments.
+            // that makes one is refused); a piece that turns by π or more is placed as
+            // several segments.
             let turn = law.at(1.0).0.abs();
             if turn.is_nan() || turn >= MAX_PIECE_TURN {
                 return None;

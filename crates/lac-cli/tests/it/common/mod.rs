@@ -34,7 +34,11 @@ pub(crate) fn lac_with_env(args: &[&str], stdin: &[u8], env: &[(&str, &str)]) ->
     let input = stdin.to_vec();
     let feeder = std::thread::spawn(move || pipe.write_all(&input));
     let out = child.wait_with_output().unwrap();
-    feeder.join().unwrap().unwrap();
+    // lac may exit before reading its input (a usage error): a broken pipe is its answer.
+    match feeder.join().unwrap() {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {}
+        other => other.unwrap(),
+    }
     Run {
         code: out.status.code().expect("lac exits normally"),
         stdout: String::from_utf8_lossy(&out.stdout).into_owned(),

@@ -17,6 +17,8 @@ pub struct Limits {
     pub max_samples: usize,
     /// Most curvature-plot points and Bézier samples over all the pieces of a chain.
     pub max_piece_points: usize,
+    /// Most points of one fit (`/api/fit`).
+    pub max_fit_points: usize,
     /// Pixels per side of a region map when the request gives none.
     pub default_region_size: usize,
     /// Most pixels per side of the canonical region map (`/api/region`).
@@ -43,6 +45,7 @@ impl Default for Limits {
             default_samples: 201,
             max_samples: 10_000,
             max_piece_points: 20_000,
+            max_fit_points: 20_000,
             default_region_size: 128,
             max_region_size: 256,
             max_point_region_size: 128,

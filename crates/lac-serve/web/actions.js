@@ -62,7 +62,7 @@ export function wire() {
     e.target.value = '';
     if (!format) return;
     if (isStale()) return toast('Fix the curve first: this design has no curve to export');
-    const result = await postFile('/api/export', cadRequest(mode(), design(), format));
+    const result = await postFile('/api/export', cadRequest(mode(), design(), format, state.answer));
     if (result.error) return toast(`Export failed: ${result.error.message}`);
     const { text, type, name, report } = result.ok;
     download(name, text, type);

@@ -92,8 +92,9 @@ export function download(name, text, type) {
 
 /** The /api/export request for `design` in `mode` (a mode object, modes/): the exact
  * curve's fields (the mode's `cad`: quasi mode exports its exact segment, not its Bézier
- * pieces, so its relative `tolerance` and `cubic` go), the format, and 1e-6 model units. */
-export function cadRequest(mode, design, format) {
-  const body = mode.cad(JSON.parse(JSON.stringify(design)));
+ * pieces, so its relative `tolerance` and `cubic` go; a fit sends its result, `answer`), the
+ * format, and 1e-6 model units. */
+export function cadRequest(mode, design, format, answer) {
+  const body = mode.cad(JSON.parse(JSON.stringify(design)), answer);
   return { ...body, format, tolerance: 1e-6, name: `lac-${mode.name}` };
 }

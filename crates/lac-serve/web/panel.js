@@ -81,6 +81,20 @@ export function buildPanel() {
   const params = $('params');
   params.replaceChildren(params.querySelector('legend'), ...m.params.map(paramRow));
   const points = $('points');
+  points.querySelector('legend').textContent = m.pointsLegend || 'Control points';
+  if (m.pointsPanel) {
+    const apply = (list) => {
+      design().points = list;
+      state.fitPending = true;
+      commit();
+      solve();
+      render();
+    };
+    points.replaceChildren(points.querySelector('legend'), ...m.pointsPanel({ points: design().points, apply }));
+    for (const button of $('modes').children) button.setAttribute('aria-pressed', String(button.dataset.mode === state.mode));
+    syncPanel();
+    return;
+  }
   const rows = design().points.map((p, i) => {
     const row = document.createElement('div');
     row.className = 'point';

@@ -211,13 +211,17 @@ pub struct FitReport {
     pub worst_point: usize,
     /// The farthest points, farthest first (at most [`FARTHEST_LISTED`]).
     pub farthest: Vec<FarPointRow>,
-    /// The fitted pieces in order.
+    /// The fitted pieces in order (none when a result is read back without them, as
+    /// `/api/export` must, whose option `pieces` it would be: its segments place it).
+    #[serde(default)]
     pub pieces: Vec<FitPieceRow>,
     /// The log-aesthetic segments in order (an S's two halves are two).
     pub segments: Vec<FitSegmentRow>,
     /// The joints between pieces in order (a closed fit's last one closes it).
     pub joints: Vec<FitJointRow>,
-    /// Samples equally spaced in arc length over the whole fit.
+    /// Samples equally spaced in arc length over the whole fit (none when a result is read
+    /// back without them, as `/api/export` must: its segments place it).
+    #[serde(default)]
     pub samples: Vec<SampleRow>,
 }
 

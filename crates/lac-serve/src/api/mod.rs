@@ -7,6 +7,7 @@
 
 mod curve;
 mod export;
+mod fit;
 mod quasi;
 mod region;
 mod request;
@@ -57,6 +58,7 @@ pub(crate) const ENDPOINTS: &[(&str, Endpoint)] = &[
     ("/api/region", region::region),
     ("/api/region/point", region::point_region),
     ("/api/space", space::space),
+    ("/api/fit", fit::fit),
 ];
 
 /// Read the body, wait for a compute slot, run `endpoint` on the blocking pool (holding the
@@ -131,6 +133,7 @@ struct LimitsRow {
     default_samples: usize,
     max_samples: usize,
     max_piece_points: usize,
+    max_fit_points: usize,
     default_region_size: usize,
     max_region_size: usize,
     max_point_region_size: usize,
@@ -149,6 +152,7 @@ pub(crate) async fn version(State(app): State<Arc<App>>) -> Response {
             default_samples: l.default_samples,
             max_samples: l.max_samples,
             max_piece_points: l.max_piece_points,
+            max_fit_points: l.max_fit_points,
             default_region_size: l.default_region_size,
             max_region_size: l.max_region_size,
             max_point_region_size: l.max_point_region_size,

@@ -6,4 +6,5 @@
 mod api;
 mod common;
 mod concurrency;
+mod fit;
 mod fuzz;

@@ -21,7 +21,8 @@
 // Its functions (a plane mode takes them from ./plane.js and overrides what differs):
 //   init(input)        once at start: a mode with views of its own wires them to `input`
 //   request(body)      the API request from a copy of the design (with `samples`)
-//   cad(body)          the exact curve's fields of the /api/export request, from a copy
+//   cad(body, answer)  the exact curve's fields of the /api/export request, from a copy
+//                      of the design (and the answer it has now)
 //   samples(answer)    the curve's samples {s, x, y, [z], theta, kappa, ...}, or []
 //   draw(frame)        draw the design and the answer on its stage; returns {evolute: 'off' |
 //                      'visible' | 'outside'}, what the page says of the evolute
@@ -29,6 +30,8 @@
 //   screenOf(frame, i, view)  where control point i is in the window (tests)
 //   readout(answer, add, design)  the panel's numbers: add(label, key, value, text?)
 //   table(answer, design)  an element under them (or null)
+//   pointsPanel({points, apply})  the points' fieldset instead of a field per point (a
+//                      fit's hundreds of points): its elements; apply(points) sets them
 //   plots(answer, {hover, error})  {kplot, lcg}: the options of the two plots (plots.js)
 //   fix(error)         a button for a refusal: {label, apply(design)}, or null
 //   combLimit(frame)   the largest comb scale at which the teeth stay in view (while dragging)
@@ -43,8 +46,9 @@ import compound4 from './compound4.js';
 import path from './path.js';
 import quasi from './quasi.js';
 import space from './space.js';
+import fit from './fit.js';
 
-const LIST = [segment, compound, compound4, path, quasi, space];
+const LIST = [segment, compound, compound4, path, quasi, space, fit];
 
 /** What a mode need not say. */
 const DEFAULTS = {

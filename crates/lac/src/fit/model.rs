@@ -264,30 +264,13 @@ impl Table {
         (j, ((t - self.ts[j]) / width).clamp(0.0, 1.0))
     }
 
-    /// Point, tangent angle and curvature at the share `t` ∈ [0, 1].
+    /// Point, tangent angle and curvature at the share `t` ∈ [0, 1] (the angle and the
+    /// curvature from the law itself).
     #[inline]
     pub(super) fn at(&self, t: f64) -> (Complex, f64, f64) {
-        let (j, u) = self.locate(t);
-        let h = self.len * (self.ts[j + 1] - self.ts[j]);
-        let (p0, p1) = (self.points[j], self.points[j + 1]);
-        let (k0, k1) = (self.kappas[j], self.kappas[j + 1]);
-        let (t0, t1) = (self.tangents[j], self.tangents[j + 1]);
-        // Quintic Hermite: values, first (h·T) and second (h²·κ·iT) derivatives in u.
-        let (u2, u3) = (u * u, u * u * u);
-        let (u4, u5) = (u3 * u, u3 * u2);
-        let h0 = 1.0 - 10.0 * u3 + 15.0 * u4 - 6.0 * u5;
-        let h1 = u - 6.0 * u3 + 8.0 * u4 - 3.0 * u5;
-        let h2 = 0.5 * (u2 - 3.0 * u3 + 3.0 * u4 - u5);
-        let h3 = 0.5 * (u3 - 2.0 * u4 + u5);
-        let h4 = -4.0 * u3 + 7.0 * u4 - 3.0 * u5;
-        let h5 = 1.0 - h0;
-        let (d0, d1) = (h1 * h, h4 * h);
-        let (e0, e1) = (h2 * h * h * k0, h3 * h * h * k1);
-        let re = h0 * p0.re + h5 * p1.re + d0 * t0.re + d1 * t1.re - e0 * t0.im - e1 * t1.im;
-        let im = h0 * p0.im + h5 * p1.im + d0 * t0.im + d1 * t1.im + e0 * t0.re + e1 * t1.re;
-        // Tangent angle and curvature from the law itself.
+        let (point, _, _) = self.frame(t);
         let (turn, kappa) = self.law.at(t.clamp(0.0, 1.0));
-        (Complex::new(re, im), self.thetas[0] + turn, kappa)
+        (point, self.thetas[0] + turn, kappa)
     }
 }
 

@@ -9,9 +9,8 @@
 
 use crate::foundation::numeric::Complex;
 
-use super::law::Law;
+use super::law::{Law, INFLECTION_ALPHA_MIN};
 use super::model::AlphaMode;
-use super::solve::INFLECTION_ALPHA_MIN;
 
 /// The data's smoothed profiles along their chord length.
 #[derive(Clone, Debug)]

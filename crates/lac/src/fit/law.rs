@@ -18,6 +18,10 @@
 
 use crate::foundation::numeric::expm1_ratio;
 
+/// The slope below which a piece may not pass through zero curvature: its halves could not
+/// reach zero curvature to the precision a joint is checked to (see `build.rs`).
+pub(super) const INFLECTION_ALPHA_MIN: f64 = -1.5;
+
 /// One piece's law; see the module documentation.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Law {

@@ -283,19 +283,25 @@ impl Fit {
                     })
                     .collect::<Vec<_>>()
             };
-            let state = problem(layout_of(n))
-                .state(x, &profile.s)
-                .or_else(|| {
-                    let x = layout_of(n).pack(start, &circles(false));
-                    problem(layout_of(n)).state(x, &profile.s)
-                })
-                .or_else(|| {
-                    let x = layout_of(n).pack(start, &circles(true));
-                    problem(layout_of(n)).state(x, &profile.s)
-                })
-                .ok_or(failed.clone())?;
-            if n == 1 && !matches!(input.alpha_mode, AlphaMode::Fixed(_)) {
-                sweep_alpha(&problem(layout_of(1)), state, input.alpha_range).ok_or(failed)
+            let one = problem(layout_of(n));
+            let starts = [
+                one.state(x, &profile.s),
+                one.state(layout_of(n).pack(start, &circles(false)), &profile.s),
+                one.state(layout_of(n).pack(start, &circles(true)), &profile.s),
+            ];
+            if n == 1 && matches!(input.alpha_mode, AlphaMode::Fixed(_)) {
+                // One segment of a given α: the best of the three starts, each fitted a
+                // little (the profile's start can lie in another valley than the circle's).
+                return starts
+                    .into_iter()
+                    .flatten()
+                    .map(|s| one.minimize(s, 30))
+                    .min_by(|a, b| a.cost.total_cmp(&b.cost))
+                    .ok_or(failed);
+            }
+            let state = starts.into_iter().flatten().next().ok_or(failed.clone())?;
+            if n == 1 {
+                sweep_alpha(&one, state, input.alpha_range).ok_or(failed)
             } else {
                 Ok(state)
             }
@@ -386,12 +392,29 @@ impl Fit {
                 })?;
             n += 1;
         }
-        if !closed && !options.pin_ends {
-            (state, n) = trim(&problem(layout_of(n)), state).ok_or(Error::NumericalFailure {
-                what: "the trimmed fit",
-            })?;
+        let finish = |state: State, n: usize| -> Result<Fit> {
+            let (state, n) = if !closed && !options.pin_ends {
+                trim(&problem(layout_of(n)), state).ok_or(Error::NumericalFailure {
+                    what: "the trimmed fit",
+                })?
+            } else {
+                (state, n)
+            };
+            build::build(&input, &layout_of(n), state, options)
+        };
+        // The fewest segments: joints whose two pieces can become one within the tolerance
+        // are taken out (a start from the data's noisy curvature runs may have too many).
+        // Should the merged chain not pass the final check, the chain before merging is
+        // the answer.
+        if let (Some(tol), false) = (tolerance, options.pin_ends) {
+            let (merged, m) = merge(&|n| problem(layout_of(n)), state.clone(), n, tol);
+            if m < n {
+                if let Ok(fit) = finish(merged, m) {
+                    return Ok(fit);
+                }
+            }
         }
-        build::build(&input, &layout_of(n), state, options)
+        finish(state, n)
     }
 
     /// The fitted pieces in order.
@@ -562,6 +585,49 @@ fn sweep_alpha(problem: &Problem, state: State, range: (f64, f64)) -> Option<Sta
 
 /// About how many points the α sweep of a single segment looks at.
 const SWEEP_POINTS: usize = 100;
+
+/// The chain with pieces merged pairwise while the fit stays within `tolerance`: each
+/// joint in turn (the shortest pair first) is taken out, the two pieces becoming one with
+/// their outer curvatures and α the mean, and the chain refitted; kept when every point is
+/// still within the tolerance.
+fn merge<'a>(
+    problem: &dyn Fn(usize) -> Problem<'a>,
+    mut state: State,
+    mut n: usize,
+    tolerance: f64,
+) -> (State, usize) {
+    let closed = problem(n).layout.closed;
+    let least = if closed { 2 } else { 1 };
+    'again: while n > least {
+        let numbers = state.chain.numbers.clone();
+        let mut order: Vec<usize> = (0..n - 1).collect();
+        order.sort_by(|&a, &b| {
+            let la = numbers[a].2 + numbers[a + 1].2;
+            let lb = numbers[b].2 + numbers[b + 1].2;
+            la.total_cmp(&lb)
+        });
+        for j in order {
+            let mut pieces = numbers.clone();
+            let (ka, _, la, aa) = pieces[j];
+            let (_, kb, lb, ab) = pieces[j + 1];
+            pieces[j] = (ka, kb, la + lb, 0.5 * (aa + ab));
+            pieces.remove(j + 1);
+            let fewer = problem(n - 1);
+            let start = (state.chain.start, state.chain.theta0);
+            let Some(trial) = fewer.state(fewer.layout.pack(start, &pieces), &state.feet) else {
+                continue;
+            };
+            let trial = fewer.minimize(trial, 100);
+            if trial.distances.iter().all(|d| *d <= tolerance) {
+                state = trial;
+                n -= 1;
+                continue 'again;
+            }
+        }
+        break;
+    }
+    (state, n)
+}
 
 /// The open chain cut to the stretch between the first and the last foot of a point: the
 /// data say nothing of the curve beyond, where it would otherwise run on at no cost. The

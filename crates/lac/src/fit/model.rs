@@ -17,7 +17,7 @@ use crate::foundation::gauss::GAUSS_4;
 use crate::foundation::numeric::Complex;
 use crate::path::Continuity;
 
-use super::law::Law;
+use super::law::{Law, INFLECTION_ALPHA_MIN};
 
 /// Largest turning of one station interval, radians.
 const STATION_TURN: f64 = 0.05;
@@ -383,6 +383,17 @@ impl Chain {
             // A fit has no use for a piece that winds round more than once (a solver step
             // that makes one is refused); a piece that turns by π or more is placed as
             // several segments.
+            // Nor for end curvatures a million apart (no segment places such a piece's points
+            // to the accuracy it is checked to).
+            let ratio = (kb / ka).abs();
+            let one_sign = ka != 0.0 && kb != 0.0 && ka.signum() == kb.signum();
+            if one_sign && !(1e-6..=1e6).contains(&ratio) {
+                return None;
+            }
+            // Nor for a piece through zero curvature whose halves cannot reach it.
+            if !one_sign && alpha < INFLECTION_ALPHA_MIN {
+                return None;
+            }
             let turn = law.at(1.0).0.abs();
             if turn.is_nan() || turn >= MAX_PIECE_TURN {
                 return None;

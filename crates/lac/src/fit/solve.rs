@@ -12,11 +12,8 @@
 
 use crate::foundation::numeric::Complex;
 
+use super::law::INFLECTION_ALPHA_MIN;
 use super::model::{Chain, Layout, Sensitivity};
-
-/// The slope below which a piece may not pass through zero curvature: its halves could not
-/// reach zero curvature to the precision a joint is checked to (see `build.rs`).
-pub(super) const INFLECTION_ALPHA_MIN: f64 = -1.5;
 
 /// The loss applied to each distance.
 #[derive(Clone, Copy, Debug, PartialEq)]

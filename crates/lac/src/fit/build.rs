@@ -384,12 +384,17 @@ pub(super) fn build(
             },
         });
     }
-    for j in &joints {
+    for (k, j) in joints.iter().enumerate() {
+        let closing = closed && k + 1 == joints.len();
         let flat = j.curvature_before.abs().max(j.curvature_after.abs())
             <= INFLECTION_LIMIT * largest_kappa / scale;
         let g2_ok =
             options.continuity == Continuity::G1 || j.curvature_jump <= G2_JUMP_LIMIT || flat;
         if !(j.gap <= JOINT_LIMIT * fit_size && j.tangent_jump <= JOINT_LIMIT && g2_ok) {
+            // The closing joint is where the solver's closure constraints were not met.
+            if closing {
+                return Err(Error::FitNotClosed { segments: n });
+            }
             return Err(Error::NumericalFailure {
                 what: "a joint of the fit (it is not continuous)",
             });

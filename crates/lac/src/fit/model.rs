@@ -172,7 +172,7 @@ pub(super) struct Table {
 const STATION_CHANGE: f64 = 0.05;
 
 /// The stations of a piece; see [`Table`].
-fn stations(law: &Law, len: f64) -> Vec<f64> {
+fn stations(law: &Law, len: f64) -> Option<Vec<f64>> {
     let mut ts = vec![0.0];
     let mut t = 0.0;
     let largest = law.at(0.0).1.abs().max(law.at(1.0).1.abs());
@@ -181,13 +181,21 @@ fn stations(law: &Law, len: f64) -> Vec<f64> {
         let floor = k.abs().max(1e-3 * largest);
         let by_turn = STATION_TURN / (floor * len);
         let by_change = STATION_CHANGE * floor / law.slope(t, k).abs();
-        by_turn.min(by_change).min(0.25)
+        (by_turn.min(by_change).min(0.25), k)
     };
+    let shortest = 1.0 / MAX_STATIONS as f64;
     // Each step bounded where it starts and, once, where it would land.
-    let mut h = bound(0.0);
-    while t < 1.0 && ts.len() <= MAX_STATIONS {
-        let there = bound((t + h).min(1.0));
-        let step = h.min(there).max(1.0 / MAX_STATIONS as f64);
+    let (mut h, _) = bound(0.0);
+    while t < 1.0 {
+        let (there, k) = bound((t + h).min(1.0));
+        let wanted = h.min(there);
+        // A piece whose curvature changes faster than the most stations can follow (a
+        // curl of a radius far below the piece's length) away from zero curvature (where
+        // the relative change means nothing) cannot be tabulated to its accuracy.
+        if wanted < shortest && k.abs() > 1e-2 * largest {
+            return None;
+        }
+        let step = wanted.max(shortest);
         t = if t + step > 1.0 - 1e-3 * step {
             1.0
         } else {
@@ -195,11 +203,11 @@ fn stations(law: &Law, len: f64) -> Vec<f64> {
         };
         ts.push(t);
         h = there;
+        if ts.len() > MAX_STATIONS + 1 {
+            return None;
+        }
     }
-    if t < 1.0 {
-        ts.push(1.0);
-    }
-    ts
+    Some(ts)
 }
 
 impl Table {
@@ -208,7 +216,7 @@ impl Table {
     fn new(law: Law, len: f64, start: Complex, theta0: f64, ts: Option<&[f64]>) -> Option<Table> {
         let ts = match ts {
             Some(ts) => ts.to_vec(),
-            None => stations(&law, len),
+            None => stations(&law, len)?,
         };
         let m = ts.len() - 1;
         let mut points = Vec::with_capacity(m + 1);

@@ -192,6 +192,16 @@ pub enum Error {
         /// Its last point.
         to: usize,
     },
+    /// A closed fit did not close: no closed chain of that many segments was found near the
+    /// points.
+    #[error(
+        "no closed log-aesthetic path of {segments} segments was found near these points (the \
+         fitted chain does not close up); allow more segments, or fit the points open"
+    )]
+    FitNotClosed {
+        /// The segments of the chain that did not close.
+        segments: usize,
+    },
     /// A computation that should succeed for a solved curve did not (an overflow, or a
     /// bound of the family reached through rounding). This is a defect: please report the
     /// input that caused it.
@@ -242,6 +252,8 @@ pub enum ErrorKind {
     TooFewPoints,
     /// [`Error::FitToleranceNotMet`].
     FitToleranceNotMet,
+    /// [`Error::FitNotClosed`].
+    FitNotClosed,
 }
 
 /// A number for a message: plain where that is short, in exponent form otherwise (a plain
@@ -285,6 +297,7 @@ impl Error {
             Error::NumericalFailure { .. } => ErrorKind::NumericalFailure,
             Error::TooFewPoints { .. } => ErrorKind::TooFewPoints,
             Error::FitToleranceNotMet { .. } => ErrorKind::FitToleranceNotMet,
+            Error::FitNotClosed { .. } => ErrorKind::FitNotClosed,
             Error::PathSegment { source, .. } => source.kind(),
             Error::NoG2Path { .. } | Error::NoG2Spline { .. } => ErrorKind::NoG2Path,
             Error::SplineSpan { source, .. } => source.kind(),

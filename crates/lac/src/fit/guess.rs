@@ -89,25 +89,11 @@ impl Profile {
         }
         // Unwrap.
         for k in 1..raw.len() {
-            let mut d = raw[k].1 - raw[k - 1].1;
-            while d > std::f64::consts::PI {
-                d -= std::f64::consts::TAU;
-            }
-            while d < -std::f64::consts::PI {
-                d += std::f64::consts::TAU;
-            }
-            raw[k].1 = raw[k - 1].1 + d;
+            raw[k].1 = raw[k - 1].1 + principal(raw[k].1 - raw[k - 1].1);
         }
         let closed_turn = closed.then(|| {
             let (first, last) = (raw[0].1, raw[raw.len() - 1].1);
-            let mut d = first - last;
-            while d > std::f64::consts::PI {
-                d -= std::f64::consts::TAU;
-            }
-            while d < -std::f64::consts::PI {
-                d += std::f64::consts::TAU;
-            }
-            let turned = last + d - first;
+            let turned = last + principal(first - last) - first;
             std::f64::consts::TAU * (turned / std::f64::consts::TAU).round()
         });
         let turn_after = closed_turn.unwrap_or(0.0);
@@ -248,6 +234,11 @@ fn quadratic_value_and_slope(m: [[f64; 3]; 3], v: [f64; 3]) -> Option<(f64, f64)
         return Some((a, b));
     }
     (m[0][0] > 0.0).then(|| (v[0] / m[0][0], 0.0))
+}
+
+/// An angle difference brought into [−π, π].
+fn principal(d: f64) -> f64 {
+    d - std::f64::consts::TAU * (d / std::f64::consts::TAU).round()
 }
 
 fn interpolate(xs: &[f64], ys: &[f64], x: f64) -> f64 {

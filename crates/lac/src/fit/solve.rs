@@ -174,6 +174,26 @@ impl Problem<'_> {
     }
 
     /// The constraint values at a state, and their derivatives in every number.
+    /// The constraint values alone (closing gap and turn, gap to a pinned end).
+    fn constraint_values(&self, state: &State) -> Vec<f64> {
+        let chain = &state.chain;
+        let (end, theta_end) = chain.end();
+        let start = chain.start;
+        let mut values = Vec::new();
+        if let Some(turn) = self.constraints.closed_turn {
+            values.extend([
+                end.re - start.re,
+                end.im - start.im,
+                theta_end - chain.theta0 - turn,
+            ]);
+        }
+        if let Some(p) = self.constraints.end {
+            values.extend([end.re - p.re, end.im - p.im]);
+        }
+        values
+    }
+
+    /// The constraint values and their derivatives in every number.
     fn constraints(
         &self,
         state: &State,
@@ -181,7 +201,7 @@ impl Problem<'_> {
     ) -> (Vec<f64>, Vec<Vec<f64>>) {
         let np = self.layout.len();
         let chain = &state.chain;
-        let (end, theta_end) = chain.end();
+        let (end, _) = chain.end();
         let start = chain.start;
         // ∂E/∂x and ∂θ_end/∂x.
         let mut de = vec![Complex::ZERO; np];
@@ -205,14 +225,9 @@ impl Problem<'_> {
                 dtheta[*b] += turn;
             }
         }
-        let mut values = Vec::new();
+        let values = self.constraint_values(state);
         let mut rows = Vec::new();
-        if let Some(turn) = self.constraints.closed_turn {
-            values.extend([
-                end.re - start.re,
-                end.im - start.im,
-                theta_end - chain.theta0 - turn,
-            ]);
+        if self.constraints.closed_turn.is_some() {
             let mut rx: Vec<f64> = de.iter().map(|d| d.re).collect();
             let mut ry: Vec<f64> = de.iter().map(|d| d.im).collect();
             rx[0] -= 1.0;
@@ -221,8 +236,7 @@ impl Problem<'_> {
             rt[2] -= 1.0;
             rows.extend([rx, ry, rt]);
         }
-        if let Some(p) = self.constraints.end {
-            values.extend([end.re - p.re, end.im - p.im]);
+        if self.constraints.end.is_some() {
             rows.push(de.iter().map(|d| d.re).collect());
             rows.push(de.iter().map(|d| d.im).collect());
         }
@@ -406,14 +420,7 @@ impl Problem<'_> {
                 self.clamp(&mut x);
                 let before = merit(&state, &c, merit_weight);
                 if let Some(trial) = self.state(x, &state.feet) {
-                    let (tc, _) = if nc > 0 {
-                        let sens_t: Vec<_> = (0..self.layout.n)
-                            .map(|_| [None, None, None, None])
-                            .collect();
-                        self.constraints(&trial, &sens_t)
-                    } else {
-                        (Vec::new(), Vec::new())
-                    };
+                    let tc = self.constraint_values(&trial);
                     let after = merit(&trial, &tc, merit_weight);
                     if after < before {
                         let gain = (before - after) / before.max(1e-300);

@@ -173,9 +173,10 @@ pub enum Error {
     /// No log-aesthetic path of the allowed number of segments stays within the tolerance of
     /// the points.
     #[error(
-        "no log-aesthetic path of at most {segments} segments stays within {} of the points: \
+        "no log-aesthetic path of at most {segments} segment{} stays within {} of the points: \
          the best fit found is {} from them at worst, between points {from} and {to}; raise \
          the tolerance or allow more segments",
+        if *segments == 1 { "" } else { "s" },
         Num(*tolerance),
         Num(*reached)
     )]

@@ -4,9 +4,11 @@
 //!
 //! A piece through zero curvature (an S, α < 0) becomes two segments, each stopping a hair
 //! short of the inflection (`Segment` has no station at ρ = ∞): a share η of the piece's
-//! length on either side, chosen so that the curvature there is below 1e-10 of the piece's
-//! (η = 1e-10^|α|, at most 1e-12 and at least 1e-15 of the length), the two halves joined
-//! across the 2η gap along their common tangent.
+//! length on either side, where the curvature is [`HAIR_CURVATURE`] of the piece's largest
+//! (as the paths' segments that end at an inflection do), at least 1e-15 and at most 1e-12
+//! of the length (so that the segments meet to rounding; for α near 0 the curvature there
+//! is then far below); the two halves are joined across the 2η gap along their common
+//! tangent.
 
 use kurbo::{Point, Vec2};
 
@@ -212,9 +214,15 @@ fn collinear(data: &[Complex]) -> bool {
     (small.max(0.0) / n).sqrt() <= 1e-12
 }
 
-/// The share of a piece's length left out on either side of an inflection.
-fn hair(alpha: f64) -> f64 {
-    1e-10f64.powf(alpha.abs()).clamp(1e-15, 1e-12)
+/// The curvature at the ends of the segments on either side of an inflection, relative to
+/// the piece's largest.
+const HAIR_CURVATURE: f64 = 1e-12;
+
+/// The share of a piece's length left out on either side of a point of zero curvature.
+fn hair(law: &super::law::Law, largest: f64) -> f64 {
+    law.within(HAIR_CURVATURE * largest)
+        .unwrap_or(0.0)
+        .clamp(1e-15, 1e-12)
 }
 
 /// The span [a, b] of a piece cut into parts that each turn by less than 0.9π.
@@ -264,7 +272,7 @@ pub(super) fn build(
         let law = table.law;
         let (k0, k1) = (law.at(0.0).1, law.at(1.0).1);
         largest_kappa = largest_kappa.max(k0.abs()).max(k1.abs());
-        let eta = hair(alpha);
+        let eta = hair(&law, k0.abs().max(k1.abs()));
         // The shares [a, b] of each segment of the piece.
         let mut spans: Vec<(f64, f64)> = Vec::new();
         let lo = if k0 == 0.0 { eta } else { 0.0 };
@@ -349,7 +357,12 @@ pub(super) fn build(
             }
         }
     }
-    if model_error.is_nan() || model_error > MODEL_LIMIT * fit_size {
+    // Far from the origin the caller's coordinates themselves round: their last bits are
+    // allowed on top (a fit of points 1e7 from the origin and 1e-4 apart).
+    let magnitude = input.center.x.abs().max(input.center.y.abs()) + fit_size;
+    if model_error.is_nan()
+        || model_error > MODEL_LIMIT * fit_size + 64.0 * f64::EPSILON * magnitude
+    {
         return Err(Error::NumericalFailure {
             what: "the placed segments of the fit (they differ from the solver's chain)",
         });

@@ -9,7 +9,7 @@
 
 use crate::foundation::numeric::Complex;
 
-use super::law::{Law, INFLECTION_ALPHA_MIN};
+use super::law::{inflects_with, Law};
 use super::model::AlphaMode;
 
 /// The data's smoothed profiles along their chord length.
@@ -302,7 +302,7 @@ pub(super) fn pieces(
         let opposite = ka.signum() != kb.signum();
         let mut best = (f64::INFINITY, candidates[0]);
         for &alpha in &candidates {
-            if opposite && alpha < INFLECTION_ALPHA_MIN && alpha != candidates[0] {
+            if opposite && !inflects_with(alpha) && alpha != candidates[0] {
                 continue;
             }
             let Some(law) = Law::new(ka, kb, len, alpha) else {

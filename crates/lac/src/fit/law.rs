@@ -22,12 +22,25 @@ use crate::foundation::numeric::expm1_ratio;
 /// reach zero curvature to the precision a joint is checked to (see `build.rs`).
 pub(super) const INFLECTION_ALPHA_MIN: f64 = -1.5;
 
+/// The slope above which a piece may not pass through zero curvature: its curvature falls
+/// to zero like |t − t₀|^(1/|α|), so that a hair (1e-12 of its length, see `build.rs`) from
+/// its inflection the curvature is below 1e-24 of the piece's for α > −0.5, and no
+/// [`Segment`](crate::Segment) places a half that ends there to the accuracy a fit is
+/// checked to.
+pub(super) const INFLECTION_ALPHA_MAX: f64 = -0.5;
+
+/// Whether a piece through zero curvature may have the slope `alpha`.
+pub(super) fn inflects_with(alpha: f64) -> bool {
+    (INFLECTION_ALPHA_MIN..=INFLECTION_ALPHA_MAX).contains(&alpha)
+}
+
 /// One piece's law; see the module documentation.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Law {
     form: Form,
     ka: f64,
     len: f64,
+    alpha: f64,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -65,7 +78,17 @@ impl Law {
         } else {
             return None;
         };
-        Some(Law { form, ka, len })
+        Some(Law {
+            form,
+            ka,
+            len,
+            alpha,
+        })
+    }
+
+    /// The slope α.
+    pub(super) fn alpha(&self) -> f64 {
+        self.alpha
     }
 
     /// (θ(t) − θ_a, κ(t)) at the share `t` ∈ [0, 1] of the piece.
@@ -111,6 +134,16 @@ impl Law {
                 let q = qa + dq * t;
                 p * q.abs().powf(p - 1.0) * dq
             }
+        }
+    }
+
+    /// The share of the piece within which, on either side of its point of zero curvature,
+    /// |κ| stays below `limit` (|q| = limit^(1/p), a share |q|/|q_b − q_a|); `None` for a
+    /// piece whose curvature keeps one sign.
+    pub(super) fn within(&self, limit: f64) -> Option<f64> {
+        match self.form {
+            Form::Power { dq, p, .. } if dq != 0.0 => Some(limit.powf(1.0 / p) / dq.abs()),
+            _ => None,
         }
     }
 

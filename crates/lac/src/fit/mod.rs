@@ -18,15 +18,22 @@
 //! its end curvatures (`law.rs`), and for α < 0 may pass through zero (an S): such a segment
 //! becomes two [`Segment`]s meeting at the inflection. The solver is Levenberg–Marquardt
 //! over those numbers with each point's foot found again at every step (`solve.rs`), from a
-//! start read off the data's smoothed tangent and curvature (`guess.rs`). Every result is
-//! checked before it is returned (`build.rs`): finite, G2 (or G1) at every joint, closed
-//! when asked, and each point within the tolerance when one was asked.
+//! start read off the data's smoothed tangent and curvature (`guess.rs`; a single segment's
+//! α by a sweep of fixed slopes, `sweep.rs`).
+//!
+//! The search for the segmentation looks at about [`SEARCH_POINTS`] of the points with
+//! coarse tables (`Layout::coarse`); each chain it settles on is measured against every
+//! point (the points it missed join it), and the answer is polished on every point with
+//! fine tables. Every result is checked before it is returned (`build.rs`): finite, G2 (or
+//! G1) at every joint, closed when asked, and each point within the tolerance when one was
+//! asked.
 
 mod build;
 mod guess;
 mod law;
 mod model;
 mod solve;
+mod sweep;
 
 use kurbo::Point;
 
@@ -37,8 +44,10 @@ use crate::path::{Closure, Continuity};
 use crate::segment::Segment;
 
 use guess::Profile;
+use model::every;
 use model::{AlphaMode, Layout};
 use solve::{Constraints, Problem, State};
+use sweep::sweep_alpha;
 
 /// The most segments a fit may use.
 pub const MAX_FIT_SEGMENTS: usize = 64;
@@ -210,6 +219,7 @@ impl Fit {
             continuity: options.continuity,
             alpha: input.alpha_mode,
             closed,
+            coarse: false,
         };
         // Pinned ends are held from the free fit's answer: a first guess read off noisy data
         // can miss the last point by a tenth of the length, which the KKT steps then fight.
@@ -261,14 +271,22 @@ impl Fit {
             alpha_range: input.alpha_range,
             constraints,
         };
-        let first_state = |cuts: &[f64]| -> Result<State> {
+        // The search (the first chains, splits, merges) looks at about [`SEARCH_POINTS`]
+        // of the points, with coarse tables; each chain it settles on is measured against
+        // all the points, and the answer polished on all of them with fine tables.
+        let mut sample = Sample::new(&input.data, &input.weights, SEARCH_POINTS);
+        let failed = |what: &'static str| Error::NumericalFailure { what };
+        // A searched chain against all the points, the feet found from the searched ones.
+        let measure = |sample: &Sample, s: &State, n: usize| -> Result<State> {
+            problem(layout_of(n))
+                .state(s.x.clone(), &sample.spread(&s.feet))
+                .ok_or(failed("the fit measured against every point"))
+        };
+        let first_state = |sample: &Sample, cuts: &[f64]| -> Result<State> {
             let n = cuts.len() + 1;
             let pieces = guess::pieces(&profile, cuts, input.alpha_mode, input.alpha_range);
             let start = (input.data[0], profile.theta_at(0.0));
             let x = layout_of(n).pack(start, &pieces);
-            let failed = Error::NumericalFailure {
-                what: "the first guess of the fit",
-            };
             // Should the profile's pieces describe no chain (a law the range of α does not
             // have, a piece winding round), start from circles of each piece's mean
             // curvature, and failing that from a nearly straight line.
@@ -283,12 +301,14 @@ impl Fit {
                     })
                     .collect::<Vec<_>>()
             };
-            let one = problem(layout_of(n));
+            let one = sample.problem(problem(layout_of(n)));
+            let feet = sample.pick(&profile.s);
             let starts = [
-                one.state(x, &profile.s),
-                one.state(layout_of(n).pack(start, &circles(false)), &profile.s),
-                one.state(layout_of(n).pack(start, &circles(true)), &profile.s),
+                one.state(x, &feet),
+                one.state(layout_of(n).pack(start, &circles(false)), &feet),
+                one.state(layout_of(n).pack(start, &circles(true)), &feet),
             ];
+            let failed = failed("the first guess of the fit");
             if n == 1 && matches!(input.alpha_mode, AlphaMode::Fixed(_)) {
                 // One segment of a given α: the best of the three starts, each fitted a
                 // little (the profile's start can lie in another valley than the circle's).
@@ -307,96 +327,99 @@ impl Fit {
             }
         };
         let mut n = cuts.len() + 1;
-        let mut state = first_state(&cuts)?;
-        loop {
+        let mut state = first_state(&sample, &cuts)?;
+        let measured = loop {
+            let search = |layout: Layout| sample.problem(problem(layout));
             // With a slope per segment, one slope for all first: from a rough start, free
             // slopes fall into minima where a segment bends hard at the range's end.
             if input.alpha_mode == AlphaMode::Each && n > 1 {
-                let shared = Layout {
-                    alpha: AlphaMode::Shared,
-                    ..layout_of(n)
-                };
-                let mut numbers = state.chain.numbers.clone();
-                let mean = numbers.iter().map(|p| p.3).sum::<f64>() / n as f64;
-                let mean = mean.clamp(input.alpha_range.0.max(-1.0), input.alpha_range.1.min(2.0));
-                let mean = mean.clamp(input.alpha_range.0, input.alpha_range.1);
-                for p in numbers.iter_mut() {
-                    p.3 = mean;
-                }
-                let start = (state.chain.start, state.chain.theta0);
-                let one = Problem {
-                    layout: shared,
-                    ..problem(shared)
-                };
-                if let Some(s1) = one.state(shared.pack(start, &numbers), &state.feet) {
-                    let s1 = one.minimize(s1, 100);
-                    let start = (s1.chain.start, s1.chain.theta0);
-                    let x = layout_of(n).pack(start, &s1.chain.numbers);
-                    if let Some(s2) = problem(layout_of(n)).state(x, &s1.feet) {
-                        if s2.cost < state.cost || state.cost.is_nan() {
-                            state = s2;
-                        } else {
-                            state = problem(layout_of(n)).minimize(state, 100);
-                            let alternative = problem(layout_of(n)).minimize(s2, 100);
-                            if alternative.cost < state.cost {
-                                state = alternative;
-                            }
-                        }
-                    }
-                }
+                state = shared_slope_first(&search, layout_of(n), state, input.alpha_range);
             }
-            state = problem(layout_of(n)).minimize(state, 100);
+            state = search(layout_of(n)).minimize(state, 100);
+            // A piece the descent shrank to nothing holds its neighbours (its length's
+            // derivatives vanish with it): it goes, and the rest are fitted again.
+            if let Some((fewer, m)) = without_collapsed(&search, layout_of(n), &state) {
+                state = search(layout_of(m)).minimize(fewer, 100);
+                n = m;
+            }
             if options.pin_ends && !closed {
                 let pinned = Problem {
                     constraints: pins,
-                    ..problem(layout_of(n))
+                    ..search(layout_of(n))
                 };
                 let mut x = state.x.clone();
                 (x[0], x[1]) = (input.data[0].re, input.data[0].im);
                 state = pinned
                     .state(x, &state.feet)
-                    .ok_or(Error::NumericalFailure {
-                        what: "the fit with pinned ends",
-                    })?;
+                    .ok_or(failed("the fit with pinned ends"))?;
                 state = pinned.minimize(state, 100);
             }
-            let worst = worst_index(&state.distances);
-            let reached = state.distances[worst];
-            let done = match tolerance {
-                Some(tol) => reached <= tol,
-                None => true,
-            };
-            if done {
-                break;
+            let mut full = measure(&sample, &state, n)?;
+            let mut worst = worst_index(&full.distances);
+            if let Some(tol) = tolerance {
+                // Just beyond the tolerance: the polish on every point may bring it within.
+                if full.distances[worst] > tol && full.distances[worst] <= POLISH_NEAR * tol {
+                    full = polish(
+                        &problem(layout_of(n)),
+                        options.pin_ends && !closed,
+                        pins,
+                        full,
+                    );
+                    worst = worst_index(&full.distances);
+                }
             }
+            let reached = full.distances[worst];
+            let Some(tol) = tolerance.filter(|tol| reached > *tol) else {
+                break full;
+            };
+            let (from, to) = stretch(&full.distances, worst, tol);
+            let not_met = |segments: usize| Error::FitToleranceNotMet {
+                tolerance: tol * input.scale,
+                reached: reached * input.scale,
+                segments,
+                from,
+                to,
+            };
             if n >= target {
-                let tol = tolerance.unwrap_or(0.0);
-                let (from, to) = stretch(&state.distances, worst, tol);
-                return Err(Error::FitToleranceNotMet {
-                    tolerance: tol * input.scale,
-                    reached: reached * input.scale,
-                    segments: target,
-                    from,
-                    to,
-                });
+                return Err(not_met(target));
             }
             if let Some(cuts) = extrema.take().filter(|c| !c.is_empty()) {
                 // One segment is not enough: start again from the runs of the data.
                 n = cuts.len() + 1;
-                state = first_state(&cuts)?;
+                state = first_state(&sample, &cuts)?;
                 continue;
             }
-            state =
-                split(&problem(layout_of(n + 1)), state, worst).ok_or(Error::NumericalFailure {
-                    what: "the split of a fitted segment",
-                })?;
+            // The points beyond the tolerance join the search, which would not see them
+            // otherwise, and the piece at the worst is split.
+            let beyond = (0..input.data.len()).filter(|&i| full.distances[i] > tol);
+            if sample.add(beyond, &input.data, &input.weights) {
+                state = sample
+                    .problem(problem(layout_of(n)))
+                    .state(full.x.clone(), &sample.pick(&full.feet))
+                    .ok_or(failed("the fit measured against every point"))?;
+            }
+            // A piece that cannot be split (no share gives halves the tables can follow)
+            // ends the search with what it reached.
+            state = split(
+                &sample.problem(problem(layout_of(n + 1))),
+                state,
+                full.feet[worst],
+            )
+            .ok_or(not_met(n))?;
             n += 1;
-        }
+        };
+        let pin = options.pin_ends && !closed;
+        // The polish on every point; kept when it stays within the tolerance.
+        let polished = |full: State, n: usize| -> State {
+            let fine = polish(&problem(layout_of(n)), pin, pins, full.clone());
+            match tolerance {
+                Some(tol) if fine.distances.iter().any(|d| *d > tol) => full,
+                _ => fine,
+            }
+        };
         let finish = |state: State, n: usize| -> Result<Fit> {
             let (state, n) = if !closed && !options.pin_ends {
-                trim(&problem(layout_of(n)), state).ok_or(Error::NumericalFailure {
-                    what: "the trimmed fit",
-                })?
+                trim(&problem(layout_of(n)), state)
             } else {
                 (state, n)
             };
@@ -407,14 +430,19 @@ impl Fit {
         // Should the merged chain not pass the final check, the chain before merging is
         // the answer.
         if let (Some(tol), false) = (tolerance, options.pin_ends) {
-            let (merged, m) = merge(&|n| problem(layout_of(n)), state.clone(), n, tol);
-            if m < n {
-                if let Ok(fit) = finish(merged, m) {
+            let within = |s: &State, m: usize| {
+                measure(&sample, s, m)
+                    .ok()
+                    .filter(|full| full.distances.iter().all(|d| *d <= tol))
+            };
+            let search = |n: usize| sample.problem(problem(layout_of(n)));
+            if let Some((merged, m)) = merge(&search, &within, state, n) {
+                if let Ok(fit) = finish(polished(merged, m), m) {
                     return Ok(fit);
                 }
             }
         }
-        finish(state, n)
+        finish(polished(measured, n), n)
     }
 
     /// The fitted pieces in order.
@@ -495,109 +523,213 @@ fn stretch(distances: &[f64], worst: usize, tolerance: f64) -> (usize, usize) {
     (from, to)
 }
 
-/// The chain with the piece nearest the worst point split in two at that point (its
-/// middle half), both halves on the same curve.
-fn split(problem: &Problem, state: State, worst: usize) -> Option<State> {
+/// The chain with the piece at the arc length `foot` (the worst point's) split in two
+/// there (within its middle half), both halves on the same curve.
+fn split(problem: &Problem, state: State, foot: f64) -> Option<State> {
     let chain = &state.chain;
-    let (i, t) = chain.locate(state.feet[worst], 0);
-    let t = t.clamp(0.4, 0.6);
-    let mut pieces = chain.numbers.clone();
-    let (ka, kb, len, alpha) = pieces[i];
-    let kt = chain.pieces[i].law.at(t).1;
-    pieces[i] = (ka, kt, t * len, alpha);
-    pieces.insert(i + 1, (kt, kb, (1.0 - t) * len, alpha));
+    let (i, t) = chain.locate(foot, 0);
     let start = (Complex::new(state.x[0], state.x[1]), state.x[2]);
-    let x = problem.layout.pack(start, &pieces);
-    problem.state(x, &state.feet)
+    // Where the halves describe no chain the tables can follow (a half whose curvature
+    // changes too fast), other shares of the piece.
+    [t.clamp(0.4, 0.6), 0.5, 0.3, 0.7]
+        .into_iter()
+        .find_map(|t| {
+            let mut pieces = chain.numbers.clone();
+            let (ka, kb, len, alpha) = pieces[i];
+            let kt = chain.pieces[i].law.at(t).1;
+            pieces[i] = (ka, kt, t * len, alpha);
+            pieces.insert(i + 1, (kt, kb, (1.0 - t) * len, alpha));
+            problem.state(problem.layout.pack(start, &pieces), &state.feet)
+        })
 }
 
-/// The slopes a single segment is first fitted with, each from the last one's answer.
-const ALPHA_SWEEP: [f64; 12] = [
-    0.0, 0.5, 1.0, 1.5, 2.0, 3.0, 5.0, 8.0, -0.5, -1.0, -2.0, -3.5,
-];
-
-/// A single segment whose α is free: the surface of the distances over α is flat and has
-/// several valleys for curves that bend little, so the segment is first fitted with fixed
-/// slopes across the range, each started from its neighbour's answer, and the best one
-/// starts the free fit.
-fn sweep_alpha(problem: &Problem, state: State, range: (f64, f64)) -> Option<State> {
-    let (lo, hi) = range;
-    // The sweep looks for the valley, not its floor: about a hundred of the points (every
-    // k-th, each weighing for the k) are enough, and the free fit then uses them all.
-    let k = problem.data.len().div_ceil(SWEEP_POINTS).max(1);
-    let data: Vec<Complex> = problem.data.iter().step_by(k).copied().collect();
-    let weights: Vec<f64> = problem.weights.iter().step_by(k).copied().collect();
-    let thin = |s: &State| -> Vec<f64> { s.feet.iter().step_by(k).copied().collect() };
-    let fixed = |alpha: f64| Problem {
-        layout: Layout {
-            alpha: AlphaMode::Fixed(alpha),
-            ..problem.layout
-        },
-        data: &data,
-        weights: &weights,
-        ..*problem
+/// The chain with one slope for all its pieces fitted first (their mean, within −1 and 2),
+/// then each its own from there: from a rough start, free slopes fall into minima where a
+/// segment bends hard at the range's end. The better of that and the chain fitted as it is.
+fn shared_slope_first<'a>(
+    problem: &dyn Fn(Layout) -> Problem<'a>,
+    layout: Layout,
+    state: State,
+    range: (f64, f64),
+) -> State {
+    let shared = Layout {
+        alpha: AlphaMode::Shared,
+        ..layout
     };
-    let mut best: Option<State> = None;
-    let mut slopes: Vec<f64> = ALPHA_SWEEP
+    let mut numbers = state.chain.numbers.clone();
+    let mean = numbers.iter().map(|p| p.3).sum::<f64>() / numbers.len() as f64;
+    let mean = mean
+        .clamp(range.0.max(-1.0), range.1.min(2.0))
+        .clamp(range.0, range.1);
+    for p in numbers.iter_mut() {
+        p.3 = mean;
+    }
+    let one = problem(shared);
+    let start = (state.chain.start, state.chain.theta0);
+    let Some(s1) = one.state(shared.pack(start, &numbers), &state.feet) else {
+        return state;
+    };
+    let s1 = one.minimize(s1, 100);
+    let each = problem(layout);
+    let x = layout.pack((s1.chain.start, s1.chain.theta0), &s1.chain.numbers);
+    let Some(s2) = each.state(x, &s1.feet) else {
+        return state;
+    };
+    if s2.cost < state.cost || state.cost.is_nan() {
+        return s2;
+    }
+    let state = each.minimize(state, 100);
+    let alternative = each.minimize(s2, 100);
+    if alternative.cost < state.cost {
+        alternative
+    } else {
+        state
+    }
+}
+
+/// The chain without its pieces shorter than [`COLLAPSED`] of it, and their number;
+/// `None` when there are none (or only such pieces).
+fn without_collapsed<'a>(
+    problem: &dyn Fn(Layout) -> Problem<'a>,
+    layout: Layout,
+    state: &State,
+) -> Option<(State, usize)> {
+    let chain = &state.chain;
+    let least = if layout.closed { 2 } else { 1 };
+    let total = chain.length();
+    let kept: Vec<_> = chain
+        .numbers
         .iter()
         .copied()
-        .filter(|a| *a >= lo && *a <= hi)
+        .filter(|p| p.2 > COLLAPSED * total)
         .collect();
-    if slopes.is_empty() {
-        slopes.push(0.5 * (lo + hi));
+    if kept.len() == chain.numbers.len() || kept.len() < least {
+        return None;
     }
-    let first_feet = thin(&state);
-    let first = (
-        (state.chain.start, state.chain.theta0),
-        state.chain.numbers.clone(),
-        first_feet,
-    );
-    let mut from = first.clone();
-    for alpha in slopes {
-        let one = fixed(alpha);
-        // From the first guess and from the neighbouring slope's answer: the better one.
-        let mut answer: Option<State> = None;
-        for (start, numbers, feet) in [&first, &from] {
-            let mut numbers = numbers.clone();
-            numbers[0].3 = alpha;
-            let Some(s) = one.state(one.layout.pack(*start, &numbers), feet) else {
-                continue;
-            };
-            let s = one.minimize(s, 12);
-            if answer.as_ref().is_none_or(|a| s.cost < a.cost) {
-                answer = Some(s);
-            }
-        }
-        let Some(s) = answer else { continue };
-        from = (
-            (s.chain.start, s.chain.theta0),
-            s.chain.numbers.clone(),
-            s.feet.clone(),
-        );
-        if best.as_ref().is_none_or(|b| s.cost < b.cost) {
-            best = Some(s);
-        }
-    }
-    let best = best?;
-    let start = (best.chain.start, best.chain.theta0);
-    problem.state(problem.layout.pack(start, &best.chain.numbers), &state.feet)
+    // The chain starts where its first kept piece does.
+    let first = chain.numbers.iter().position(|p| p.2 > COLLAPSED * total)?;
+    let start = (chain.pieces[first].points[0], chain.pieces[first].thetas[0]);
+    let fewer = Layout {
+        n: kept.len(),
+        ..layout
+    };
+    let s = problem(fewer).state(fewer.pack(start, &kept), &state.feet)?;
+    Some((s, fewer.n))
 }
 
-/// About how many points the α sweep of a single segment looks at.
-const SWEEP_POINTS: usize = 100;
+/// The share of a chain's length below which a piece has collapsed.
+const COLLAPSED: f64 = 1e-6;
 
-/// The chain with pieces merged pairwise while the fit stays within `tolerance`: each
+/// A chain fitted to every point with fine tables from `state` (its ends held on the first
+/// and last points when `pin`).
+fn polish(problem: &Problem, pin: bool, pins: Constraints, state: State) -> State {
+    if pin {
+        let pinned = Problem {
+            constraints: pins,
+            ..*problem
+        };
+        pinned.minimize(state, 100)
+    } else {
+        problem.minimize(state, 100)
+    }
+}
+
+/// About how many points the search for a path's segments looks at.
+const SEARCH_POINTS: usize = 200;
+
+/// A searched chain this close to the tolerance (times it) is polished on every point
+/// before it is split.
+const POLISH_NEAR: f64 = 1.5;
+
+/// The points a search looks at: every k-th and the last, and those it was found to miss.
+struct Sample {
+    /// Their indices, increasing.
+    indices: Vec<usize>,
+    data: Vec<Complex>,
+    weights: Vec<f64>,
+    /// How many points there are in all.
+    all: usize,
+}
+
+impl Sample {
+    /// About `count` of the points, evenly spread.
+    fn new(data: &[Complex], weights: &[f64], count: usize) -> Sample {
+        let k = data.len().div_ceil(count).max(1);
+        let indices = every(&(0..data.len()).collect::<Vec<_>>(), k);
+        Sample {
+            data: indices.iter().map(|&i| data[i]).collect(),
+            weights: indices.iter().map(|&i| weights[i]).collect(),
+            indices,
+            all: data.len(),
+        }
+    }
+
+    /// Add the points `extra`; whether any was new.
+    fn add(
+        &mut self,
+        extra: impl Iterator<Item = usize>,
+        data: &[Complex],
+        weights: &[f64],
+    ) -> bool {
+        let before = self.indices.len();
+        self.indices.extend(extra);
+        self.indices.sort_unstable();
+        self.indices.dedup();
+        if self.indices.len() == before {
+            return false;
+        }
+        self.data = self.indices.iter().map(|&i| data[i]).collect();
+        self.weights = self.indices.iter().map(|&i| weights[i]).collect();
+        true
+    }
+
+    /// The problem over these points with coarse tables.
+    fn problem<'a>(&'a self, base: Problem<'a>) -> Problem<'a> {
+        Problem {
+            layout: Layout {
+                coarse: true,
+                ..base.layout
+            },
+            data: &self.data,
+            weights: &self.weights,
+            ..base
+        }
+    }
+
+    /// These points' entries of a value for every point.
+    fn pick(&self, every: &[f64]) -> Vec<f64> {
+        self.indices.iter().map(|&i| every[i]).collect()
+    }
+
+    /// Feet for every point from these points' feet, by linear interpolation in the
+    /// points' order.
+    fn spread(&self, feet: &[f64]) -> Vec<f64> {
+        let mut out = Vec::with_capacity(self.all);
+        for (w, f) in self.indices.windows(2).zip(feet.windows(2)) {
+            let (ia, ib) = (w[0], w[1]);
+            for i in ia..ib {
+                out.push(f[0] + (f[1] - f[0]) * (i - ia) as f64 / (ib - ia) as f64);
+            }
+        }
+        out.push(feet[feet.len() - 1]);
+        out
+    }
+}
+
+/// The chain with pieces merged pairwise while the fit stays within the tolerance: each
 /// joint in turn (the shortest pair first) is taken out, the two pieces becoming one with
-/// their outer curvatures and α the mean, and the chain refitted; kept when every point is
-/// still within the tolerance.
+/// their outer curvatures and α the mean, and the chain refitted; kept when `within` (the
+/// chain measured against every point, when every point lies within the tolerance) says
+/// so. The last chain kept, measured, and its number of pieces; `None` when no joint goes.
 fn merge<'a>(
     problem: &dyn Fn(usize) -> Problem<'a>,
+    within: &dyn Fn(&State, usize) -> Option<State>,
     mut state: State,
     mut n: usize,
-    tolerance: f64,
-) -> (State, usize) {
+) -> Option<(State, usize)> {
     let closed = problem(n).layout.closed;
     let least = if closed { 2 } else { 1 };
+    let mut measured = None;
     'again: while n > least {
         let numbers = state.chain.numbers.clone();
         let mut order: Vec<usize> = (0..n - 1).collect();
@@ -618,21 +750,22 @@ fn merge<'a>(
                 continue;
             };
             let trial = fewer.minimize(trial, 100);
-            if trial.distances.iter().all(|d| *d <= tolerance) {
+            if let Some(full) = within(&trial, n - 1) {
                 state = trial;
+                measured = Some(full);
                 n -= 1;
                 continue 'again;
             }
         }
         break;
     }
-    (state, n)
+    measured.map(|m| (m, n))
 }
 
 /// The open chain cut to the stretch between the first and the last foot of a point: the
 /// data say nothing of the curve beyond, where it would otherwise run on at no cost. The
-/// state and its number of pieces.
-fn trim(problem: &Problem, state: State) -> Option<(State, usize)> {
+/// state and its number of pieces (the chain as it is when it cannot be cut).
+fn trim(problem: &Problem, state: State) -> (State, usize) {
     let chain = &state.chain;
     let n = chain.pieces.len();
     let lo = state.feet.iter().copied().fold(f64::INFINITY, f64::min);
@@ -646,7 +779,7 @@ fn trim(problem: &Problem, state: State) -> Option<(State, usize)> {
         let b = if i == i1 { t1 } else { 1.0 };
         if (b - a).is_nan() || b - a <= 1e-9 {
             // A piece that would be cut to (almost) nothing: keep the chain as it is.
-            return Some((state, n));
+            return (state, n);
         }
         let law = chain.pieces[i].law;
         pieces.push((law.at(a).1, law.at(b).1, (b - a) * len, alpha));
@@ -660,7 +793,12 @@ fn trim(problem: &Problem, state: State) -> Option<(State, usize)> {
     let trimmed = Problem { layout, ..*problem };
     let x = layout.pack((p, theta), &pieces);
     let feet: Vec<f64> = state.feet.iter().map(|f| f - lo).collect();
-    Some((trimmed.state(x, &feet)?, layout.n))
+    // Should the trimmed chain describe no chain the tables can follow (a piece cut where
+    // its curvature changes too fast), the chain is kept as it is.
+    match trimmed.state(x, &feet) {
+        Some(t) => (t, layout.n),
+        None => (state, n),
+    }
 }
 
 #[cfg(test)]

@@ -12,7 +12,7 @@
 
 use crate::foundation::numeric::Complex;
 
-use super::law::INFLECTION_ALPHA_MIN;
+use super::law::{INFLECTION_ALPHA_MAX, INFLECTION_ALPHA_MIN};
 use super::model::{Chain, Layout, Sensitivity};
 
 /// The loss applied to each distance.
@@ -66,7 +66,9 @@ pub(super) struct Contact {
     t: f64,
     point: Complex,
     tangent: Complex,
-    /// Normal and tangential components of data − foot.
+    /// Normal and tangential components of data − foot (the tangential one is zero at a
+    /// foot inside the chain, to the foot search's accuracy; the distance is both's, so
+    /// that a search that did not converge never reports a point nearer than it is).
     rn: f64,
     rt: f64,
     /// At an open chain's end.
@@ -96,8 +98,15 @@ fn contact(chain: &Chain, d: Complex, s: &mut f64, hint: &mut usize, closed: boo
         let f = diff.re * tangent.re + diff.im * tangent.im;
         let across = -diff.re * tangent.im + diff.im * tangent.re;
         let slope = 1.0 + kappa * across;
-        let step = if slope > 0.2 { -f / slope } else { -f };
+        let newton = slope > 0.2;
+        let step = if newton { -f / slope } else { -f };
         let step = step.clamp(-0.1 * total, 0.1 * total);
+        // A Newton step this short leaves the distance as it is to rounding (the normal
+        // distance changes by about κh²/2 across it): the frame at hand is the foot's.
+        if newton && step.abs() <= 1e-9 * total {
+            x = wrap(x + step);
+            break;
+        }
         let next = wrap(x + step);
         let moved = (next - x).abs();
         x = next;
@@ -120,7 +129,7 @@ fn contact(chain: &Chain, d: Complex, s: &mut f64, hint: &mut usize, closed: boo
         point,
         tangent,
         rn,
-        rt: if at_end { rt } else { 0.0 },
+        rt,
         at_end,
     }
 }
@@ -251,8 +260,9 @@ impl Problem<'_> {
             .collect()
     }
 
-    /// Keep the numbers in range: each α within the range (and above
-    /// [`INFLECTION_ALPHA_MIN`] on a piece through zero curvature), lengths positive.
+    /// Keep the numbers in range: each α within the range (and between
+    /// [`INFLECTION_ALPHA_MIN`] and [`INFLECTION_ALPHA_MAX`] on a piece through zero
+    /// curvature, where the range reaches there), lengths positive.
     fn clamp(&self, x: &mut [f64]) {
         let (lo, hi) = self.alpha_range;
         for i in 0..self.layout.n {
@@ -260,8 +270,8 @@ impl Problem<'_> {
                 x[j] = x[j].clamp(lo, hi);
                 let (ka, kb, _, _) = self.layout.piece(x, i);
                 let inflects = !(ka != 0.0 && kb != 0.0 && ka.signum() == kb.signum());
-                if inflects && x[j] < INFLECTION_ALPHA_MIN && hi >= INFLECTION_ALPHA_MIN {
-                    x[j] = INFLECTION_ALPHA_MIN;
+                if inflects && hi >= INFLECTION_ALPHA_MIN && lo <= INFLECTION_ALPHA_MAX {
+                    x[j] = x[j].clamp(INFLECTION_ALPHA_MIN.max(lo), INFLECTION_ALPHA_MAX.min(hi));
                 }
             }
             let l = self.layout.length_slot(i);
@@ -355,6 +365,32 @@ impl Problem<'_> {
         (a, g, sens)
     }
 
+    /// The share of the cost below which a step's foretold decrease ends the descent: the
+    /// floor of rounding, or for coarse tables (see [`Layout::coarse`]) of their accuracy.
+    fn settled(&self) -> f64 {
+        if self.layout.coarse {
+            1e-4
+        } else {
+            1e-9
+        }
+    }
+
+    /// The share of the cost that four steps must gain for the descent to go on.
+    fn crawl(&self) -> f64 {
+        if self.layout.coarse {
+            1e-3
+        } else {
+            1e-5
+        }
+    }
+
+    /// Whether the constraints hold at `state` (to rounding).
+    fn constraints_hold(&self, state: &State) -> bool {
+        self.constraint_values(state)
+            .iter()
+            .all(|v| v.abs() <= 1e-14)
+    }
+
     /// Levenberg–Marquardt from `state` for at most `iterations` steps; the best state seen.
     pub(super) fn minimize(&self, mut state: State, iterations: usize) -> State {
         let free = self.free();
@@ -362,7 +398,17 @@ impl Problem<'_> {
         let np = self.layout.len();
         let mut lambda = 1e-3;
         let mut merit_weight = 0.0;
+        // The costs after the last accepted steps, for the crawl test.
+        let mut recent: Vec<f64> = Vec::with_capacity(iterations);
         for _ in 0..iterations {
+            // A descent that crawls (a long, curved, nearly flat valley: the slope of a
+            // piece that bends evenly) is ended: what it would still gain is below what the
+            // fit can tell.
+            if let [.., before, _, _, _, now] = recent[..] {
+                if before - now <= self.crawl() * now && self.constraints_hold(&state) {
+                    return state;
+                }
+            }
             let (a, g, sens) = self.normal_equations(&state);
             let (c, crow) = self.constraints(&state, &sens);
             let nc = c.len();
@@ -410,7 +456,7 @@ impl Problem<'_> {
                     }
                     predicted -= sol[ii] * (2.0 * g[p] + ad);
                 }
-                if predicted <= 1e-11 * state.cost && violation(&c) <= 1e-14 {
+                if predicted <= self.settled() * state.cost && violation(&c) <= 1e-14 {
                     return state;
                 }
                 let mut x = state.x.clone();
@@ -425,8 +471,24 @@ impl Problem<'_> {
                     if after < before {
                         let gain = (before - after) / before.max(1e-300);
                         let step: f64 = sol[..nf].iter().map(|v| v * v).sum::<f64>().sqrt();
+                        // The model's worth (the decrease seen over the decrease foretold)
+                        // sets the damping: the valley along α is long and flat, and a
+                        // model borne out step after step has its damping lifted fast.
+                        let worth = if nc == 0 && predicted > 0.0 {
+                            (before - after) / predicted
+                        } else {
+                            0.5
+                        };
+                        lambda = if worth > 0.75 {
+                            lambda / 10.0
+                        } else if worth > 0.25 {
+                            lambda / 3.0
+                        } else {
+                            lambda * 2.0
+                        }
+                        .max(1e-12);
                         state = trial;
-                        lambda = (lambda / 3.0).max(1e-12);
+                        recent.push(state.cost);
                         improved = true;
                         if gain < 1e-12 || step < 1e-13 {
                             return state;
@@ -484,4 +546,78 @@ fn solve_dense(m: &mut [f64], rhs: &mut [f64], n: usize) -> Option<Vec<f64>> {
         x[row] = v / m[row * n + row];
     }
     x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fit::model::AlphaMode;
+    use crate::path::Continuity;
+
+    /// Points near a clothoid-like piece, a little off it (as noisy data are).
+    fn data() -> Vec<Complex> {
+        let layout = Layout {
+            n: 1,
+            continuity: Continuity::G2,
+            alpha: AlphaMode::Each,
+            closed: false,
+            coarse: false,
+        };
+        let x = layout.pack((Complex::ZERO, 0.0), &[(1.0, 3.0, 1.0, -1.0)]);
+        let chain = Chain::new(&layout, &x).unwrap();
+        (0..200)
+            .map(|k| {
+                let s = 1.2 * k as f64 / 199.0 - 0.1;
+                let (_, _, p, t, _) = chain.frame(s.clamp(0.0, 1.0), 0);
+                let off = 1e-3 * ((k * 7919) % 13) as f64 / 13.0 - 5e-4;
+                p + t.mul_i().scale(off)
+            })
+            .collect()
+    }
+
+    /// The normal equations' gradient Jᵀr is half the cost's gradient, number by number,
+    /// checked by central differences of the cost itself (feet found again each time).
+    #[test]
+    fn the_gradient_is_the_cost_gradient() {
+        let data = data();
+        let weights = vec![1.0; data.len()];
+        for alpha in [-1.0, 0.5, 2.0] {
+            let layout = Layout {
+                n: 1,
+                continuity: Continuity::G2,
+                alpha: AlphaMode::Each,
+                closed: false,
+                coarse: false,
+            };
+            let problem = Problem {
+                layout,
+                data: &data,
+                weights: &weights,
+                loss: Loss::Squares,
+                alpha_range: (-5.0, 10.0),
+                constraints: Constraints::default(),
+            };
+            let x = layout.pack(
+                (Complex::new(0.01, -0.02), 0.05),
+                &[(1.1, 2.8, 1.05, alpha)],
+            );
+            let feet: Vec<f64> = (0..data.len()).map(|k| k as f64 / 200.0).collect();
+            let state = problem.state(x.clone(), &feet).unwrap();
+            let (_, g, _) = problem.normal_equations(&state);
+            for j in 0..layout.len() {
+                let h = 1e-6 * x[j].abs().max(1e-2);
+                let cost = |sign: f64| {
+                    let mut y = x.clone();
+                    y[j] += sign * h;
+                    problem.state(y, &state.feet).unwrap().cost
+                };
+                let numeric = (cost(1.0) - cost(-1.0)) / (2.0 * h);
+                let model = 2.0 * g[j];
+                assert!(
+                    (model - numeric).abs() <= 1e-5 * numeric.abs().max(1e-6),
+                    "α {alpha}, number {j}: {model:e} against {numeric:e}"
+                );
+            }
+        }
+    }
 }

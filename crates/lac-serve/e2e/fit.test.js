@@ -1,15 +1,16 @@
 // The Fit mode in a real browser: points pasted and imported (an SVG path gives its nodes and
 // points along it), the fit drawn with its points coloured by their distance, the points' box
 // following drags and undo, the fit's options (G1, the most segments, α's range, one α, a fixed
-// α) followed as they change, the tolerance slider dragged over 1,000 points with the frames
+// α) followed as they change (the fit the page draws is lac fit's, bit for bit), the tolerance slider dragged over 1,000 points with the frames
 // the page keeps and the time to the last fit printed, and the fit exported for CAD.
 // Screenshots go to $LAC_ARTIFACTS.
 
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { startServer, startBrowser, openEditor, editorState, settled, ARTIFACTS } from './harness.js';
+import { startServer, startBrowser, openEditor, editorState, settled, LAC_BIN, ARTIFACTS } from './harness.js';
 
 let server;
 let chrome;
@@ -252,7 +253,7 @@ test('fit: the points\' box shows the points as they are after a drag, and after
   assert.deepEqual(errors, []);
 });
 
-test('fit: G1, the most segments, α\'s range, one α and a fixed α are followed as they change; refusals say what to do', async () => {
+test('fit: G1, the most segments, α\'s range, one α and a fixed α are followed as they change, as lac fit gives them; refusals say what to do', async () => {
   const { page, context, errors } = await openFit();
   let state = await paste(page, sinePoints(300));
   assert.equal(state.error, null, JSON.stringify(state.error));
@@ -314,6 +315,12 @@ test('fit: G1, the most segments, α\'s range, one α and a fixed α are followe
   state = await typeParam(page, 'alpha', -0.5);
   assert.equal(state.error, null, JSON.stringify(state.error));
   assert.ok(state.answer.pieces.every((p) => p.alpha === -0.5));
+  // The fit the page draws is lac fit's, to the last bit.
+  const file = join(ARTIFACTS, 'fit-sine.txt');
+  writeFileSync(file, text(state.design.points) + '\n');
+  const cli = JSON.parse(execFileSync(LAC_BIN, ['fit', file, '--tolerance', '0.01', '--max-segments', '16', '--alpha', '-0.5', '--samples', '257'], { encoding: 'utf8' }));
+  const { distances, ...report } = state.answer;
+  assert.deepEqual(report, cli);
 
   // The link carries every option (written when a field is left).
   await page.press('#param-alpha', 'Tab');

@@ -9,7 +9,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { startServer, startBrowser, servePage, ARTIFACTS } from './harness.js';
+import { startServer, startBrowser, openEditor as open, editorState, ARTIFACTS } from './harness.js';
 
 let server;
 let chrome;
@@ -49,22 +49,7 @@ function recordTexts() {
   };
 }
 
-async function openEditor(fragment = '', options = {}) {
-  const context = await chrome.browser.newContext({ viewport: { width: 1280, height: 800 }, ...options });
-  await servePage(context);
-  await context.addInitScript(recordTexts);
-  const page = await context.newPage();
-  const errors = [];
-  page.on('pageerror', (e) => errors.push(e.message));
-  page.on('console', (m) => {
-    if (m.type() === 'error' && !/status of 4\d\d/.test(m.text())) errors.push(m.text());
-  });
-  await page.goto(server.url + fragment);
-  await page.waitForFunction(() => window.lacEditor && window.lacEditor.probe.updates >= 1 && window.lacEditor.idle());
-  return { page, context, errors };
-}
-
-const editorState = (page) => page.evaluate(() => window.lacEditor.state());
+const openEditor = (fragment = '', options = {}) => open(chrome.browser, server.url + fragment, { init: recordTexts, ...options });
 
 /** Let the page settle: its update out and drawn, and (`region`) a region map that was asked. */
 async function settle(page, { region = false } = {}) {

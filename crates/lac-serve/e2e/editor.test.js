@@ -13,7 +13,7 @@ import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { writeFileSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { startServer, startBrowser, servePage, LAC_BIN, ARTIFACTS } from './harness.js';
+import { startServer, startBrowser, openEditor as open, editorState, settled, LAC_BIN, ARTIFACTS } from './harness.js';
 
 const STEPS = 220;
 const SAMPLES = 257;
@@ -53,27 +53,7 @@ const pointsArg = (points) => `--points=${points.map((p) => p.map(String).join('
 /** The page's formatting of a readout number. */
 const shown = (x) => String(+x.toPrecision(8));
 
-async function openEditor(fragment = '', options = {}) {
-  const context = await chrome.browser.newContext({ viewport: { width: 1280, height: 800 }, ...options });
-  await servePage(context);
-  const page = await context.newPage();
-  const errors = [];
-  page.on('pageerror', (e) => errors.push(e.message));
-  // A 422 answer is the browser's "failed to load resource" in the console: expected.
-  page.on('console', (m) => {
-    if (m.type() === 'error' && !/status of 4\d\d/.test(m.text())) errors.push(m.text());
-  });
-  await page.goto(server.url + fragment);
-  await page.waitForFunction(() => window.lacEditor && window.lacEditor.probe.updates >= 1 && window.lacEditor.idle());
-  return { page, context, errors };
-}
-
-const editorState = (page) => page.evaluate(() => window.lacEditor.state());
-
-/** Wait until the page has drawn an answer newer than `updates` and has nothing in flight. */
-async function settled(page, updates) {
-  await page.waitForFunction((n) => window.lacEditor.probe.updates > n && window.lacEditor.idle(), updates);
-}
+const openEditor = (fragment = '', options = {}) => open(chrome.browser, server.url + fragment, options);
 
 /**
  * Drag control point `index` along `STEPS` moves (an outward spiral of `radius` pixels ending

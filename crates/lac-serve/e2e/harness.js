@@ -1,5 +1,6 @@
 // Shared by the browser tests: start the real `lac serve` binary on a free port, and Debian's
-// Chromium headless through playwright-core (never a downloaded browser).
+// Chromium headless through playwright-core (never a downloaded browser); open the editor in
+// it, read its state, wait for its answers.
 
 import { spawn } from 'node:child_process';
 import { mkdtempSync, mkdirSync, readFileSync } from 'node:fs';
@@ -94,4 +95,33 @@ export async function servePage(context) {
       route.fulfill({ status: 404, body: 'not found' });
     }
   });
+}
+
+/**
+ * Open the editor at `url` in a fresh context of `browser` (1280 × 800 unless `options`, the
+ * context's, say otherwise; `init`: a function the page runs before its own scripts), once it
+ * has drawn its first answer: {page, context, errors}. `errors` collects the page's errors; a
+ * 4xx answer (the browser's "failed to load resource" in the console) is expected, not one.
+ */
+export async function openEditor(browser, url, { init = null, ...options } = {}) {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, ...options });
+  await servePage(context);
+  if (init) await context.addInitScript(init);
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  page.on('console', (m) => {
+    if (m.type() === 'error' && !/status of 4\d\d/.test(m.text())) errors.push(m.text());
+  });
+  await page.goto(url);
+  await page.waitForFunction(() => window.lacEditor && window.lacEditor.probe.updates >= 1 && window.lacEditor.idle());
+  return { page, context, errors };
+}
+
+/** The page's state (main.js: `lacEditor.state()`). */
+export const editorState = (page) => page.evaluate(() => window.lacEditor.state());
+
+/** Wait until the page has drawn an answer newer than `updates` and has nothing in flight. */
+export async function settled(page, updates, timeout = 30000) {
+  await page.waitForFunction((n) => window.lacEditor.probe.updates > n && window.lacEditor.idle(), updates, { timeout });
 }

@@ -2,13 +2,14 @@
 // Failures never throw: a request that cannot reach the server becomes an error like any other.
 
 /** POST `body` as JSON to `path`: {response}, or {error, status: 0} when the server cannot
- * be reached. */
-async function send(path, body) {
+ * be reached (or `signal` aborted the request). */
+async function send(path, body, signal) {
   try {
     const response = await fetch(path, {
       method: 'POST',
       headers: { 'Content-Type': 'application/json' },
       body: JSON.stringify(body),
+      signal,
     });
     return { response };
   } catch (e) {
@@ -22,9 +23,10 @@ async function send(path, body) {
   }
 }
 
-/** POST `body` as JSON to `path`: {ok: answer} or {error: {kind, message}, status}. */
-export async function post(path, body) {
-  const { response, error, status } = await send(path, body);
+/** POST `body` as JSON to `path`: {ok: answer} or {error: {kind, message}, status}.
+ * `signal` (an AbortController's) may abort it. */
+export async function post(path, body, signal) {
+  const { response, error, status } = await send(path, body, signal);
   if (!response) return { error, status };
   let json = null;
   try {

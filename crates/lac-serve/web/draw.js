@@ -163,9 +163,11 @@ function grid(ctx, view, width, height) {
  * {points, samples, stale, show, combScale,
  *  region: {image, size, extent, toWorld, wide: {image, size, extent} | null} | null,
  *  joint, joints: [[x, y]] | null, lines: [[[x, y], [x, y]]] | null, closed,
- *  pieces: [{points, weights, monotone, proven}] | null, pieceSamples, active, hover}.
+ *  pieces: [{points, weights, monotone, proven}] | null, pieceSamples, active, hover,
+ *  underlay, curveWidth}.
  * `joints` are a path's joints (dots), `lines` its straight pieces through inflections, and
- * `closed` closes its control polygon.
+ * `closed` closes its control polygon. `underlay(ctx)`, if given, draws under the curve (a
+ * fit's data points); `curveWidth` is the curve's width in pixels (default 2.4).
  * `samples` are the last good curve's; `stale` draws them faintly (the input is not drawable).
  * Returns what the page tells of the drawing: {evolute: 'off' | 'visible' | 'outside'}.
  */
@@ -210,6 +212,7 @@ export function drawPlane(ctx, view, width, height, scene) {
   }
 
   if (scene.region && scene.region.label) legend(ctx, height, scene.region.label);
+  if (scene.underlay) scene.underlay(ctx);
 
   const samples = scene.samples;
   if (samples && samples.length) {
@@ -246,7 +249,7 @@ export function drawPlane(ctx, view, width, height, scene) {
         ctx.setLineDash([]);
       }
       ctx.strokeStyle = COLORS.curve;
-      ctx.lineWidth = scene.pieces ? 1.4 : 2.4;
+      ctx.lineWidth = scene.curveWidth ?? (scene.pieces ? 1.4 : 2.4);
       ctx.lineJoin = 'round';
       polyline(ctx, view, g.curve);
     }

@@ -7,22 +7,24 @@ const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
 /** The same with a decimal comma instead of the point (1,5 or -0,25e3), and nothing else. */
 const COMMA = /^[+-]?(\d+,\d*|,\d+)([eE][+-]?\d+)?$/;
 
-/** The words of a field's range {above, from, below, to} (above and below exclusive, from
- * and to inclusive), e.g. "> 0 and < 1". */
-export function rangeWords({ above, from, below, to }) {
+/** The words of a field's range {above, from, below, to, whole} (above and below exclusive,
+ * from and to inclusive, whole: integers only), e.g. "> 0 and < 1", "a whole number ≥ 1". */
+export function rangeWords({ above, from, below, to, whole }) {
   const lo = above !== undefined ? `> ${above}` : from !== undefined ? `≥ ${from}` : '';
   const hi = below !== undefined ? `< ${below}` : to !== undefined ? `≤ ${to}` : '';
-  return [lo, hi].filter(Boolean).join(' and ');
+  const bounds = [lo, hi].filter(Boolean).join(' and ');
+  return whole ? `a whole number ${bounds}`.trim() : bounds;
 }
 
-const inRange = (x, { above, from, below, to }) =>
+const inRange = (x, { above, from, below, to, whole }) =>
   !(above !== undefined && !(x > above)) && !(from !== undefined && !(x >= from))
-  && !(below !== undefined && !(x < below)) && !(to !== undefined && !(x <= to));
+  && !(below !== undefined && !(x < below)) && !(to !== undefined && !(x <= to))
+  && !(whole && !Number.isInteger(x));
 
 /**
  * Read a field's text: {value} when it is a number the curve can use (with `note` when it was
  * read in a way to be told, a decimal comma), or {error} saying why not. `range`: the values
- * allowed ({above, from, below, to}, see rangeWords).
+ * allowed ({above, from, below, to, whole}, see rangeWords).
  */
 export function readNumber(text, range = {}) {
   const t = text.trim();

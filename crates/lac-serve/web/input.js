@@ -62,6 +62,8 @@ function showHover(found, clientX, clientY) {
 function endPointer(e) {
   if (state.drag && state.drag.pointerId === e.pointerId) {
     state.drag = null;
+    // The panel shows the points where the drag left them (its last answer may be out still).
+    syncPanel();
     commit();
     if (!busy()) autoCombScale();
     updateRegion();
@@ -174,6 +176,7 @@ export const stageInput = {
   },
   dragEnd() {
     state.drag = null;
+    syncPanel();
     commit();
     autoCombScale();
     render();

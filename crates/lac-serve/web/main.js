@@ -9,12 +9,12 @@
 //   input.js    pointer input
 //   actions.js  the header's buttons, keys, links, resizing
 // and the helpers they share: api.js, design.js, view.js, draw.js, plots.js, space.js,
-// export.js, format.js. Only this module does something when loaded.
+// export.js, format.js, points.js. Only this module does something when loaded.
 
 import { fromFragment, clone } from './design.js';
 import { MODES } from './modes/index.js';
 import { state, undo, probe, mode, design, isStale, frame } from './state.js';
-import { idle, solve } from './loop.js';
+import { idle, solve, latest } from './loop.js';
 import { render } from './render.js';
 import { enterMode, snapshot, writeFragment } from './edit.js';
 import { listen, stageInput } from './input.js';
@@ -24,9 +24,11 @@ wire();
 listen();
 for (const m of Object.values(MODES)) m.init(stageInput);
 
-// For tests: the state, the probe, and where a control point is on screen.
+// For tests: the state, the probe, the design's generation, and where a control point is on
+// screen.
 window.lacEditor = {
   probe,
+  generation: latest,
   state: () => ({ mode: state.mode, design: clone(design()), answer: state.answer, error: state.error, stale: isStale(), region: state.region ? { key: state.region.key, size: state.region.size } : null }),
   screenOf: (index, viewName) => mode().screenOf(frame(), index, viewName),
   idle,

@@ -1,16 +1,21 @@
-// The panel: a slider and a number field for every parameter of the mode, number fields for
-// the points (and, where the polygon grows, buttons to add and remove points); the display
-// options. A field's text that the curve cannot use is marked, not used (fields.js).
+// The panel: a slider and a number field for every parameter of the mode (greyed out where it
+// does not apply), number fields for the points (and, where the polygon grows, buttons to add
+// and remove points) or the mode's own points box; the display options the mode has. A field's
+// text that the curve cannot use is marked, not used (fields.js).
 
 import { state, $, mode, design } from './state.js';
 import { commit, insertPoint, removePoint, nextPoint } from './edit.js';
 import { solve } from './loop.js';
-import { render } from './render.js';
+import { render, fitView } from './render.js';
 import { numberField, fieldNote, showValue } from './fields.js';
+
+/** The points' fieldset of a mode that has its own (modes/: `pointsPanel`): what shows them. */
+let showPoints = null;
 
 function paramRow(param) {
   const row = document.createElement('div');
   row.className = 'param';
+  row.dataset.row = param.key;
   row.title = param.hint || '';
   const label = document.createElement('label');
   label.textContent = param.label;
@@ -23,6 +28,7 @@ function paramRow(param) {
     box.dataset.param = param.key;
     box.addEventListener('change', () => {
       design()[param.key] = box.checked;
+      syncPanel();
       commit();
       solve();
     });
@@ -82,15 +88,27 @@ export function buildPanel() {
   params.replaceChildren(params.querySelector('legend'), ...m.params.map(paramRow));
   const points = $('points');
   points.querySelector('legend').textContent = m.pointsLegend || 'Control points';
+  // The display options this mode has.
+  $('show-polygon').parentElement.hidden = !m.controlPolygon;
+  $('show-region').parentElement.hidden = !m.region;
+  showPoints = null;
   if (m.pointsPanel) {
-    const apply = (list) => {
-      design().points = list;
+    const apply = (list, more = {}) => {
+      Object.assign(design(), more, { points: list });
+      // A fit of other points is no fit of these, and its request is of no use: the new
+      // points are shown alone, in view, until their fit comes.
+      state.answer = null;
+      state.error = null;
       state.fitPending = true;
+      fitView();
+      syncPanel();
       commit();
-      solve();
+      solve(performance.now(), { supersede: true });
       render();
     };
-    points.replaceChildren(points.querySelector('legend'), ...m.pointsPanel({ points: design().points, apply }));
+    const { elements, show } = m.pointsPanel({ points: design().points, apply });
+    showPoints = show;
+    points.replaceChildren(points.querySelector('legend'), ...elements);
     for (const button of $('modes').children) button.setAttribute('aria-pressed', String(button.dataset.mode === state.mode));
     syncPanel();
     return;
@@ -160,8 +178,15 @@ export function syncPanel() {
   }
   for (const param of mode().params) {
     const range = document.querySelector(`[data-slider="${param.key}"]`);
+    if (range && param.bounds) Object.assign(range, param.bounds(d));
     if (range && range !== focused) range.value = String(param.log ? Math.log10(d[param.key]) : d[param.key]);
+    if (!param.enabled) continue;
+    const row = document.querySelector(`[data-row="${param.key}"]`);
+    const on = param.enabled(d);
+    row.classList.toggle('off', !on);
+    for (const input of row.querySelectorAll('input, select')) input.disabled = !on;
   }
+  if (showPoints) showPoints(d.points);
   for (const el of document.querySelectorAll('[data-point]')) {
     if (el === focused) continue;
     showValue(el, d.points[Number(el.dataset.point)][Number(el.dataset.axis)]);

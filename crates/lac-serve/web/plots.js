@@ -17,20 +17,28 @@ export function prepare(canvas) {
   return { ctx, width, height };
 }
 
-/** About `count` round tick values covering [lo, hi]. */
+/** About `count` round tick values covering [lo, hi], each with its label. */
 function ticks(lo, hi, count = 4) {
   const span = hi - lo;
-  if (!(span > 0)) return [lo];
+  if (!(span > 0)) return [[lo, label(lo, 0)]];
   const raw = span / count;
   const mag = 10 ** Math.floor(Math.log10(raw));
   const step = [1, 2, 5, 10].map((k) => k * mag).find((s) => s >= raw) || 10 * mag;
   const out = [];
-  for (let t = Math.ceil(lo / step) * step; t <= hi + step * 1e-9; t += step) out.push(Math.abs(t) < step * 1e-9 ? 0 : t);
+  for (let t = Math.ceil(lo / step) * step; t <= hi + step * 1e-9; t += step) {
+    const tick = Math.abs(t) < step * 1e-9 ? 0 : t;
+    out.push([tick, label(tick, step)]);
+  }
   return out;
 }
 
-/** A short label for a tick value. */
-const label = (t) => (Math.abs(t) >= 1e4 || (Math.abs(t) < 1e-3 && t !== 0) ? t.toExponential(0) : String(+t.toPrecision(3)));
+/** A short label for a tick value, with the decimals its ticks' `step` needs to tell them
+ * apart (10.402 beside 10.404, not 10.4 twice). */
+function label(t, step) {
+  if (Math.abs(t) >= 1e4 || (Math.abs(t) < 1e-3 && t !== 0)) return t.toExponential(0);
+  const decimals = step > 0 ? Math.min(12, Math.max(0, -Math.floor(Math.log10(step) + 1e-9))) : 3;
+  return String(+t.toFixed(decimals));
+}
 
 /**
  * Draw series of [x, y] points (null y: a gap) on `canvas`.
@@ -75,14 +83,14 @@ export function linePlot(canvas, options) {
   ctx.lineWidth = 1;
   ctx.fillStyle = '#555';
   ctx.textAlign = 'center';
-  for (const t of ticks(x0, x1)) {
+  for (const [t, text] of ticks(x0, x1)) {
     ctx.beginPath(); ctx.moveTo(toX(t), pad.top); ctx.lineTo(toX(t), pad.top + h); ctx.stroke();
-    ctx.fillText(label(t), toX(t), pad.top + h + 12);
+    ctx.fillText(text, toX(t), pad.top + h + 12);
   }
   ctx.textAlign = 'right';
-  for (const t of ticks(y0, y1)) {
+  for (const [t, text] of ticks(y0, y1)) {
     ctx.beginPath(); ctx.moveTo(pad.left, toY(t)); ctx.lineTo(pad.left + w, toY(t)); ctx.stroke();
-    ctx.fillText(label(t), pad.left - 4, toY(t) + 4);
+    ctx.fillText(text, pad.left - 4, toY(t) + 4);
   }
   ctx.strokeStyle = '#999';
   ctx.strokeRect(pad.left, pad.top, w, h);

@@ -35,6 +35,8 @@ const TITLES = {
   not_drawable: 'Not drawable:',
   network: 'No server:',
   timeout: 'Busy:',
+  fit_tolerance_not_met: 'Cannot fit:',
+  fit_not_closed: 'Cannot fit:',
 };
 
 function renderMessage() {
@@ -56,7 +58,7 @@ function fillMessage(problem) {
   if (state.error && state.answer) text += ' (the last good curve is drawn faintly).';
   $('message-text').textContent = text;
   // The mode's way out of a refusal, as a button.
-  const way = state.error && mode().fix(state.error);
+  const way = state.error && mode().fix(state.error, design());
   if (way) {
     fix.hidden = false;
     fix.textContent = way.label;

@@ -37,6 +37,7 @@ export const probe = {
   latencies: [], // input event (its timeStamp) to the end of the redraw of its answer
   work: [], // the page's handler to the end of that redraw: request, solve, response, redraw
   phases: [], // [handler to request sent, request to answer, answer to redrawn]
+  drawn: [], // {generation, at}: each answer drawn, the design's generation (loop.js) and when
   regionAnswers: 0,
 };
 

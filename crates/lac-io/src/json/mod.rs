@@ -152,7 +152,8 @@ impl ErrorBody {
             | "tolerance_not_met"
             | "too_many_pieces"
             | "no_g2_path"
-            | "fit_tolerance_not_met" => ErrorClass::Undrawable,
+            | "fit_tolerance_not_met"
+            | "fit_not_closed" => ErrorClass::Undrawable,
             "io" => ErrorClass::Io,
             "internal" | "numerical_failure" => ErrorClass::Internal,
             _ => ErrorClass::Invalid,
@@ -339,6 +340,22 @@ mod tests {
         assert!(err
             .to_json_line()
             .starts_with(r#"{"error":{"kind":"not_drawable","message":"#));
+    }
+
+    #[test]
+    fn a_fit_that_is_not_found_is_undrawable_not_invalid() {
+        for err in [
+            lac::Error::FitToleranceNotMet {
+                tolerance: 0.01,
+                reached: 0.02,
+                segments: 1,
+                from: 3,
+                to: 9,
+            },
+            lac::Error::FitNotClosed { segments: 3 },
+        ] {
+            assert_eq!(ErrorBody::from(err).class(), ErrorClass::Undrawable);
+        }
     }
 
     #[test]

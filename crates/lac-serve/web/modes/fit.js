@@ -1,24 +1,27 @@
-// A fit: the log-aesthetic path nearest measured points (pasted as "x y" lines, CSV or a JSON
-// array, or imported from a file, an SVG path sampled along its length), within a tolerance,
-// α fixed or fitted: /api/fit. The points are coloured by their distance to the fit.
+// A fit: the log-aesthetic path nearest measured points (pasted or imported, ../points.js),
+// the fewest segments within a tolerance, G2 or G1, open or closed, α fitted in a range (each
+// segment's, or one for all) or fixed: /api/fit (lac-io's FitInput, as `lac fit` takes it).
+// The points are coloured by their distance to the fit.
 
 import { plane, planePlots } from './plane.js';
-import { drawPlane, sizeCanvas } from '../draw.js';
+import { LCG_SPAN } from './path.js';
+import { drawPlane, sizeCanvas, COLORS } from '../draw.js';
 import { planeSvg } from '../export.js';
 import { fmt } from '../format.js';
+import { bounds } from '../view.js';
+import { readPoints, svgPoints, pointsText } from '../points.js';
 
-/** The most segments a fit may use. */
-const MAX_SEGMENTS = 16;
-
-/** Points taken along an imported SVG path. */
-const SVG_SAMPLES = 200;
+/** The most segments a fit may use (the library's MAX_FIT_SEGMENTS). */
+const MOST_SEGMENTS = 64;
 
 /** Point colours: within half the tolerance, green; from there to the tolerance through amber
- * to red; beyond it, dark red. */
+ * to red; beyond it, dark red. In between, in STEPS steps (a colour is one fill of the
+ * canvas, whatever the number of points). */
 export const NEAR = [30, 158, 58];
 const HALF = [240, 160, 0];
 const AT = [217, 48, 37];
 const BEYOND = [120, 0, 0];
+const STEPS = 16;
 
 const mix = (a, b, t) => a.map((x, i) => Math.round(x + (b[i] - x) * t));
 const rgb = ([r, g, b]) => `rgb(${r}, ${g}, ${b})`;
@@ -27,7 +30,7 @@ const rgb = ([r, g, b]) => `rgb(${r}, ${g}, ${b})`;
 export function distanceColor(share) {
   if (!(share <= 1)) return BEYOND;
   if (share <= 0.5) return NEAR;
-  const u = (share - 0.5) / 0.5;
+  const u = Math.round((STEPS * (share - 0.5)) / 0.5) / STEPS;
   return u < 0.5 ? mix(NEAR, HALF, 2 * u) : mix(HALF, AT, 2 * u - 1);
 }
 
@@ -43,87 +46,49 @@ function spiral(n = 80) {
   return points;
 }
 
-/** The points of a text: "x y" (or "x,y", "x;y", tabs) one a line, `#` comments, a header
- * line skipped; or a JSON array of [x, y]. {points} or {error}, naming the line. */
-export function readPoints(text) {
-  const t = text.trim();
-  if (t.startsWith('[')) {
-    let json;
-    try {
-      json = JSON.parse(t);
-    } catch (e) {
-      return { error: `not JSON: ${e.message}` };
-    }
-    const bad = json.findIndex((p) => !Array.isArray(p) || p.length < 2 || !p.slice(0, 2).every(Number.isFinite));
-    if (bad >= 0) return { error: `point ${bad} is not [x, y]` };
-    return { points: json.map((p) => [p[0], p[1]]) };
-  }
-  const points = [];
-  const lines = t.split(/\r?\n/);
-  for (const [i, raw] of lines.entries()) {
-    const line = raw.split('#')[0].trim();
-    if (!line) continue;
-    const fields = line.split(/[\s,;]+/).filter(Boolean);
-    const [x, y] = fields.slice(0, 2).map(Number);
-    if (fields.length < 2 || !Number.isFinite(x) || !Number.isFinite(y)) {
-      if (!points.length && i === lines.findIndex((l) => l.split('#')[0].trim())) continue; // a header
-      return { error: `line ${i + 1} is not "x y": ${raw.trim().slice(0, 40)}` };
-    }
-    points.push([x, y]);
-  }
-  return { points };
-}
-
-/** The points along the first path of an SVG document: SVG_SAMPLES at equal lengths (the
- * browser's own getPointAtLength), y turned up. {points} or {error}. */
-export function svgPoints(text) {
-  const doc = new DOMParser().parseFromString(text, 'image/svg+xml');
-  const source = doc.querySelector('path');
-  if (!source || !source.getAttribute('d')) return { error: 'the SVG has no path with a "d"' };
-  const ns = 'http://www.w3.org/2000/svg';
-  const svg = document.createElementNS(ns, 'svg');
-  svg.style.position = 'absolute';
-  svg.style.visibility = 'hidden';
-  const path = document.createElementNS(ns, 'path');
-  path.setAttribute('d', source.getAttribute('d'));
-  svg.append(path);
-  document.body.append(svg);
-  try {
-    const length = path.getTotalLength();
-    if (!(length > 0)) return { error: 'the SVG\'s first path has no length' };
-    const points = [];
-    for (let k = 0; k < SVG_SAMPLES; k++) {
-      const p = path.getPointAtLength((length * k) / (SVG_SAMPLES - 1));
-      points.push([+p.x.toPrecision(8), +(-p.y).toPrecision(8)]);
-    }
-    return { points };
-  } finally {
-    svg.remove();
-  }
-}
-
-const textOf = (points) => points.map(([x, y]) => `${x} ${y}`).join('\n');
-
 /** The graph ln(ρ ds/dρ) against ln ρ of each piece, from the samples by central differences
- * within the piece (a joint's curvature has no one derivative). */
+ * within the piece (a joint's curvature has no one derivative): an S's two halves apart (the
+ * slope changes sign at the inflection), each cut where ln ρ is LCG_SPAN beyond its least (as
+ * a path's, ./path.js). {series, cut}: cut when a half was. */
 function graphOf(a) {
   const series = [];
+  let cut = false;
   a.pieces.forEach((piece, k) => {
     // A circular arc (κ constant to rounding) has no graph.
     const [k0, k1] = piece.curvature;
     if (!(Math.abs(k1 - k0) > 1e-6 * Math.max(Math.abs(k0), Math.abs(k1)))) return;
-    const rows = a.samples.filter((r) => r.s > piece.s && r.s < piece.s + piece.arc_length);
-    const line = [];
-    for (let i = 1; i + 1 < rows.length; i++) {
-      const rho = (r) => 1 / Math.abs(r.kappa);
-      const slope = (rho(rows[i + 1]) - rho(rows[i - 1])) / (rows[i + 1].s - rows[i - 1].s);
-      const value = Math.log(rho(rows[i]) / Math.abs(slope));
-      if (Number.isFinite(value) && Number.isFinite(Math.log(rho(rows[i])))) line.push([Math.log(rho(rows[i])), value]);
+    const rows = a.samples.filter((r) => r.s > piece.s && r.s < piece.s + piece.arc_length && r.kappa !== 0);
+    for (const half of [rows.filter((r) => r.kappa > 0), rows.filter((r) => r.kappa < 0)]) {
+      const logRho = half.map((r) => -Math.log(Math.abs(r.kappa)));
+      const least = Math.min(...logRho);
+      const line = [];
+      for (let i = 1; i + 1 < half.length; i++) {
+        if (logRho[i] > least + LCG_SPAN) {
+          cut = true;
+          continue;
+        }
+        const slope = (Math.exp(logRho[i + 1]) - Math.exp(logRho[i - 1])) / (half[i + 1].s - half[i - 1].s);
+        const value = logRho[i] - Math.log(Math.abs(slope));
+        if (Number.isFinite(value) && Number.isFinite(logRho[i])) line.push([logRho[i], value]);
+      }
+      if (line.length > 1) series.push({ points: line, color: k % 2 ? '#e69138' : '#1f4e9c', width: 2, label: '' });
     }
-    if (line.length > 1) series.push({ points: line, color: k % 2 ? '#e69138' : '#1f4e9c', width: 2, label: '' });
   });
-  return series;
+  return { series, cut };
 }
+
+/** The tolerance slider's ends (log10): from a millionth to a tenth of the points' size, so
+ * that points in millimetres or in an SVG's pixels have a slider of use. */
+function toleranceBounds(d) {
+  const [x0, x1, y0, y1] = bounds(d.points);
+  const extent = Math.max(x1 - x0, y1 - y0);
+  const size = extent > 0 ? Math.log10(extent) : 0;
+  return { min: Math.floor(size) - 6, max: Math.ceil(size) - 1 };
+}
+
+/** Which of the α rows apply: the range's when α is fitted, else the fixed α's. */
+const fitted = (d) => d.free;
+const fixed = (d) => !d.free;
 
 export default {
   ...plane,
@@ -132,24 +97,67 @@ export default {
   endpoint: '/api/fit',
   count: null,
   minCount: 3,
+  controlPolygon: false,
   pointsLegend: 'Points',
   params: [
-    { key: 'tolerance', label: 'tolerance', min: -5, max: 0, step: 0.01, log: true, valid: { above: 0 },
+    { key: 'tolerance', label: 'tolerance', min: -6, max: 0, step: 0.01, log: true, valid: { above: 0 }, bounds: toleranceBounds,
       hint: 'largest distance of a point from the fit (the points\' units): the fewest segments that keep every point within it' },
-    { key: 'free', label: 'α free', boolean: true, hint: 'each segment\'s α fitted (in −5 … 10); off: every segment takes α below' },
-    { key: 'alpha', label: 'α', min: -3, max: 3, step: 0.01, hint: 'every segment\'s α, when not free' },
+    { key: 'max_segments', label: 'segments ≤', min: 1, max: MOST_SEGMENTS, step: 1, valid: { from: 1, to: MOST_SEGMENTS, whole: true },
+      hint: `the most segments the fit may use (1 to ${MOST_SEGMENTS}; lac fit --max-segments)` },
+    { key: 'g1', label: 'G1 joins', boolean: true,
+      hint: 'joints with continuous tangent only (lac fit --g1); off: continuous curvature too, G2' },
     { key: 'closed', label: 'closed', boolean: true, hint: 'the points go round once: a closed path' },
+    { key: 'free', label: 'α fitted', boolean: true,
+      hint: 'each segment\'s α fitted within the range below; off: every segment takes the fixed α' },
+    { key: 'alpha_min', label: 'α from', min: -5, max: 10, step: 0.1, enabled: fitted,
+      hint: 'the smallest α a fitted segment may take (lac fit --alpha-range)' },
+    { key: 'alpha_max', label: 'α to', min: -5, max: 10, step: 0.1, enabled: fitted,
+      hint: 'the largest α a fitted segment may take (lac fit --alpha-range)' },
+    { key: 'shared', label: 'one α', boolean: true, enabled: fitted,
+      hint: 'one fitted α for every segment (lac fit --shared-alpha)' },
+    { key: 'alpha', label: 'α fixed', min: -3, max: 3, step: 0.01, enabled: fixed,
+      hint: 'every segment\'s α, when α is not fitted (lac fit --alpha)' },
   ],
-  defaults: { points: spiral(), tolerance: 0.01, free: true, alpha: 1, closed: false },
+  defaults: {
+    points: spiral(), tolerance: 0.01, max_segments: 16, g1: false, closed: false,
+    free: true, alpha_min: -5, alpha_max: 10, shared: false, alpha: 1,
+  },
 
-  fileRank: 35,
-  recognises: (json) => 'free' in json || 'rms' in json || 'max_segments' in json,
+  // Before a path's: a lac fit input (one line of `lac fit --batch`) says closed too.
+  fileRank: 15,
+  recognises: (json) => ['free', 'rms', 'max_segments', 'alpha_range', 'shared_alpha', 'g1'].some((key) => key in json),
+  /** lac-io's FitInput in its own words: α's range as a pair, a fixed α as α alone. */
+  adopt(json, design) {
+    if (Array.isArray(json.alpha_range) && json.alpha_range.length === 2 && json.alpha_range.every(Number.isFinite)) {
+      [design.alpha_min, design.alpha_max] = json.alpha_range;
+    }
+    if (typeof json.shared_alpha === 'boolean') design.shared = json.shared_alpha;
+    if (!('free' in json) && typeof json.alpha === 'number') design.free = false;
+  },
 
-  /** lac-io's FitInput: α fixed, or fitted in the library's default range. */
+  /** lac-io's FitInput: α fixed, or fitted in the design's range. */
   request(body) {
-    const input = { points: body.points, tolerance: body.tolerance, max_segments: MAX_SEGMENTS, closed: body.closed, samples: body.samples };
-    if (!body.free) input.alpha = body.alpha;
+    const input = {
+      points: body.points, tolerance: body.tolerance, max_segments: body.max_segments,
+      g1: body.g1, closed: body.closed, samples: body.samples,
+    };
+    if (body.free) {
+      input.alpha_range = [body.alpha_min, body.alpha_max];
+      input.shared_alpha = body.shared;
+    } else {
+      input.alpha = body.alpha;
+    }
     return input;
+  },
+  /** A range the wrong way round, said in the panel's words (the library's words are the
+   * range's width). */
+  check(d) {
+    if (!d.free || d.alpha_min <= d.alpha_max) return null;
+    return {
+      kind: 'invalid_input',
+      title: 'Cannot fit:',
+      message: `α from (${fmt(d.alpha_min)}) is above α to (${fmt(d.alpha_max)}): lower α from or raise α to`,
+    };
   },
   /** The fit's result, which /api/export places again from its segments (lac-io's FitKind):
    * no refit. Its `tolerance`, `samples` and `pieces` would be the export's options. */
@@ -157,27 +165,50 @@ export default {
     const { distances, tolerance, samples, pieces, ...result } = answer;
     return result;
   },
+  /** Too few segments for the tolerance: twice as many (at most MOST_SEGMENTS). */
+  fix(error, design) {
+    if (error.kind !== 'fit_tolerance_not_met' || design.max_segments >= MOST_SEGMENTS) return null;
+    const more = Math.min(MOST_SEGMENTS, 2 * design.max_segments);
+    return { label: `Allow ${more} segments`, apply: (d) => { d.max_segments = more; } };
+  },
 
   region: null,
 
   draw(f) {
     const { ctx, width, height } = sizeCanvas(f.canvas);
     const a = f.answer;
+    const current = a && !f.stale;
+    const points = f.design.points;
+    // The colours are of the answer's own tolerance (the slider may have moved on since).
+    const distances = current && a.distances && a.distances.length === points.length ? a.distances : null;
+    const tolerance = a && (a.tolerance ?? f.design.tolerance);
+    // The points under the fitted path (which a thousand points would hide), one fill a colour.
+    const underlay = () => {
+      const groups = new Map();
+      points.forEach((p, i) => {
+        const color = distances ? rgb(distanceColor(distances[i] / tolerance)) : '#888';
+        if (!groups.has(color)) groups.set(color, []);
+        groups.get(color).push(i);
+      });
+      for (const [color, indices] of groups) {
+        ctx.fillStyle = color;
+        ctx.beginPath();
+        for (const i of indices) {
+          const [x, y] = f.view.toScreen(points[i]);
+          const r = i === f.active ? 5 : 2.5;
+          ctx.moveTo(x + r, y);
+          ctx.arc(x, y, r, 0, 2 * Math.PI);
+        }
+        ctx.fill();
+      }
+    };
     const drawn = drawPlane(ctx, f.view, width, height, {
       points: [], samples: this.samples(a), stale: f.stale, show: { ...f.show, polygon: false },
       combScale: f.combScale, region: null, joint: null,
-      joints: a && !f.stale ? a.joints.map((j) => j.point) : null,
+      joints: current ? a.joints.map((j) => j.point) : null,
       lines: null, closed: false, pieces: null, pieceSamples: null, active: null,
       hover: f.hover ? [f.hover.sample.x, f.hover.sample.y] : null,
-    });
-    const points = f.design.points;
-    const distances = a && !f.stale && a.distances && a.distances.length === points.length ? a.distances : null;
-    points.forEach((p, i) => {
-      const [x, y] = f.view.toScreen(p);
-      ctx.beginPath();
-      ctx.arc(x, y, i === f.active ? 5 : 2.2, 0, 2 * Math.PI);
-      ctx.fillStyle = distances ? rgb(distanceColor(distances[i] / f.design.tolerance)) : '#888';
-      ctx.fill();
+      underlay, curveWidth: 1.4,
     });
     if (distances) {
       const [x, y] = f.view.toScreen(points[a.worst_point]);
@@ -186,8 +217,12 @@ export default {
       ctx.beginPath();
       ctx.arc(x, y, 7, 0, 2 * Math.PI);
       ctx.stroke();
-      scale(ctx, height);
     }
+    key(ctx, height, {
+      distances: !!distances,
+      joints: current && a.joints.length > 0,
+      evolute: drawn.evolute === 'visible',
+    });
     return drawn;
   },
 
@@ -196,14 +231,19 @@ export default {
 
   readout(a, add, d) {
     add('points', 'point_count', a.point_count, String(a.point_count));
-    add('segments', 'fitted_segments', a.fitted_segments, String(a.fitted_segments));
+    add('segments', 'fitted_segments', a.fitted_segments, `${a.fitted_segments} (${a.continuity.toUpperCase()})`);
     const alphas = a.pieces.map((p) => p.alpha);
-    const alphaText = alphas.length > 3 ? `${fmt(Math.min(...alphas))} … ${fmt(Math.max(...alphas))}` : alphas.map(fmt).join(', ');
+    // Four digits a slope: three of them fit on the line.
+    const short = (x) => fmt(+x.toPrecision(4));
+    let alphaText = alphas.length > 3 ? `${short(Math.min(...alphas))} … ${short(Math.max(...alphas))}` : alphas.map(short).join(', ');
+    // α at an end of its range: the range, not the points, chose it.
+    if (d.free && alphas.some((x) => x === d.alpha_min || x === d.alpha_max)) alphaText += ' (range end)';
     add('α', 'alphas', alphas.join(','), alphaText);
     add('RMS distance', 'rms', a.rms, a.rms.toExponential(2));
-    const within = a.max_distance <= d.tolerance ? '≤' : '>';
-    add('largest distance', 'max_distance', a.max_distance,
-      `${a.max_distance.toExponential(2)} at point ${a.worst_point} (${within} tolerance)`);
+    // Against the answer's own tolerance (the slider may have moved on while it was out).
+    const within = a.max_distance <= a.tolerance ? '≤' : '>';
+    add('largest distance', 'max_distance', a.max_distance, `${a.max_distance.toExponential(2)} ${within} ${fmt(a.tolerance)}`);
+    add('farthest point', 'worst_point', a.worst_point, `${a.worst_point} (ringed)`);
     add('arc length', 'arc_length', a.arc_length);
     add('max κ jump', 'max_curvature_jump', a.max_curvature_jump, a.max_curvature_jump.toExponential(2));
   },
@@ -213,20 +253,28 @@ export default {
     const plot = a ? { points: a.samples.map((r) => ({ s: r.s, kappa: r.kappa, log_rho: null, log_lcg: null })), fit: null } : null;
     const series = plot ? [{ points: plot.points.map((p) => [p.s, p.kappa]), color: '#1f4e9c', label: '' }] : [];
     const vlines = a ? a.joints.map((j) => ({ x: j.s })) : [];
-    const graph = a ? graphOf(a) : [];
-    const title = a ? `LCG per segment (${a.pieces.length}, from the samples)` : 'logarithmic curvature graph';
-    return planePlots({ plot, series, graph, vlines, title }, where);
+    const { series: graph, cut } = a ? graphOf(a) : { series: [], cut: false };
+    const title = a && a.pieces.length > 1 ? 'LCG per segment' : 'logarithmic curvature graph';
+    const options = planePlots({ plot, series, graph, vlines, title: cut ? `${title} (cut where κ → 0)` : title }, where);
+    options.kplot.empty = where.error ? 'no fit' : options.kplot.empty;
+    options.lcg.empty = plot ? 'no segment whose curvature changes' : options.kplot.empty;
+    return options;
   },
 
-  /** A text area for the points (pasted or imported) and the button that fits them. */
+  /** A text area for the points (pasted or imported, and rewritten whenever they change) and
+   * the button that fits them. */
   pointsPanel({ points, apply }) {
     const area = document.createElement('textarea');
     area.id = 'fit-points';
     area.rows = 6;
     area.spellcheck = false;
-    area.value = textOf(points);
     area.setAttribute('aria-label', 'points: "x y" one a line, CSV, or a JSON array');
     area.title = 'x y one a line (or x,y; a header line and # comments are skipped), or a JSON array [[x, y], …]';
+    const show = (list) => {
+      const text = pointsText(list);
+      if (document.activeElement !== area && area.value !== text) area.value = text;
+    };
+    show(points);
     const note = document.createElement('div');
     note.className = 'field-note bad';
     note.id = 'fit-points-note';
@@ -237,7 +285,7 @@ export default {
       else if (reading.points.length < 3) {
         note.hidden = false;
         note.textContent = `${reading.points.length} points: a fit needs at least 3`;
-      } else apply(reading.points);
+      } else apply(reading.points, 'closed' in reading ? { closed: reading.closed } : {});
     };
     const fitButton = document.createElement('button');
     fitButton.type = 'button';
@@ -253,19 +301,17 @@ export default {
       if (!chosen) return;
       const text = await chosen.text();
       const svg = /\.svg$/i.test(chosen.name) || /^\s*(<\?xml[^>]*>\s*)?<svg/i.test(text);
-      const reading = svg ? svgPoints(text) : readPoints(text);
-      if (reading.points) area.value = textOf(reading.points);
-      use(reading);
+      use(svg ? svgPoints(text) : readPoints(text));
       file.value = '';
     });
     const label = document.createElement('label');
     label.className = 'button';
-    label.title = 'Points from a file: text, CSV, JSON, or an SVG (its first path, sampled along its length)';
+    label.title = 'Points from a file: text, CSV, JSON, or an SVG (its first path: its nodes, and 200 points along its length)';
     label.append('Import points…', file);
     const row = document.createElement('div');
     row.className = 'fit-actions';
     row.append(fitButton, label);
-    return [area, row, note];
+    return { elements: [area, row, note], show };
   },
 
   svg({ design, answer, combScale, show, title }) {
@@ -273,23 +319,65 @@ export default {
   },
 };
 
-/** The colour key, bottom left: a point's distance as a share of the tolerance. */
-function scale(ctx, height) {
+/** The key, bottom left: a point's colour (its distance as a share of the tolerance), and
+ * the marks that are drawn: joints, the farthest point's ring, the evolute. */
+function key(ctx, height, { distances, joints, evolute }) {
+  const marks = [
+    joints && ['joint', (x, y) => {
+      ctx.fillStyle = COLORS.joint;
+      ctx.beginPath();
+      ctx.moveTo(x, y - 5); ctx.lineTo(x + 5, y); ctx.lineTo(x, y + 5); ctx.lineTo(x - 5, y);
+      ctx.closePath();
+      ctx.fill();
+    }],
+    distances && ['farthest point', (x, y) => {
+      ctx.strokeStyle = '#333';
+      ctx.lineWidth = 1.2;
+      ctx.beginPath();
+      ctx.arc(x, y, 6, 0, 2 * Math.PI);
+      ctx.stroke();
+    }],
+    evolute && ['evolute (centres of curvature)', (x, y) => {
+      ctx.strokeStyle = COLORS.evolute;
+      ctx.lineWidth = 1.2;
+      ctx.setLineDash([5, 3]);
+      ctx.beginPath();
+      ctx.moveTo(x - 8, y); ctx.lineTo(x + 10, y);
+      ctx.stroke();
+      ctx.setLineDash([]);
+    }],
+  ].filter(Boolean);
+  if (!distances && !marks.length) return;
   ctx.font = '12px system-ui, sans-serif';
   const x0 = 8;
-  const y0 = height - 30;
-  ctx.fillStyle = 'rgba(255, 255, 255, 0.9)';
-  ctx.fillRect(x0, y0 - 12, 220, 34);
-  ctx.fillStyle = '#333';
-  ctx.fillText('distance:', x0 + 8, y0 + 3);
   const bar = 120;
-  const left = x0 + 70;
-  for (let i = 0; i < bar; i++) {
-    ctx.fillStyle = rgb(distanceColor((1.1 * i) / bar));
-    ctx.fillRect(left + i, y0 - 7, 1, 12);
+  const markWidth = marks.reduce((w, [text]) => w + 34 + ctx.measureText(text).width, 0);
+  const rows = (distances ? 2 : 0) + (marks.length ? 1 : 0);
+  const boxHeight = 8 + 17 * rows;
+  const top = height - 8 - boxHeight;
+  ctx.fillStyle = 'rgba(255, 255, 255, 0.9)';
+  ctx.fillRect(x0, top, Math.max(distances ? 262 : 0, markWidth + 12), boxHeight);
+  let y = top + 16;
+  if (distances) {
+    ctx.fillStyle = '#333';
+    ctx.fillText('distance', x0 + 8, y);
+    const left = x0 + 70;
+    for (let i = 0; i < bar; i++) {
+      ctx.fillStyle = rgb(distanceColor((1.1 * i) / bar));
+      ctx.fillRect(left + i, y - 10, 1, 12);
+    }
+    ctx.fillStyle = '#333';
+    ctx.textAlign = 'center';
+    for (const [share, text] of [[0, '0'], [0.5, '½ tol'], [1, 'tol']]) ctx.fillText(text, left + (share * bar) / 1.1, y + 15);
+    ctx.textAlign = 'start';
+    ctx.fillText('beyond', left + bar + 6, y);
+    y += 34;
   }
-  ctx.fillStyle = '#333';
-  ctx.textAlign = 'center';
-  for (const [share, text] of [[0, '0'], [0.5, '½ tol'], [1, 'tol']]) ctx.fillText(text, left + (share * bar) / 1.1, y0 + 18);
-  ctx.textAlign = 'start';
+  let x = x0 + 14;
+  for (const [text, draw] of marks) {
+    draw(x, y - 4);
+    ctx.fillStyle = '#333';
+    ctx.fillText(text, x + 14, y);
+    x += 34 + ctx.measureText(text).width;
+  }
 }

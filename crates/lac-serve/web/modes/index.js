@@ -9,8 +9,12 @@
 //   minCount           the polygon grows and shrinks; its design may say `closed`, whether
 //                      a clicked point may go on the closing leg, edit.js)
 //   params             the panel's fields: {key, label, min, max, step, log, boolean, choices, hint,
-//                      valid}: min and max are the slider's, `valid` the values the field
-//                      accepts ({above, from, below, to}, fields.js; any finite number if absent)
+//                      valid, enabled, bounds}: min and max are the slider's (log10 with `log`;
+//                      `bounds(design)`, {min, max} of this design, where they depend on it),
+//                      `valid` the values the field accepts ({above, from, below, to, whole},
+//                      fields.js; any finite number if absent), `enabled(design)` whether the
+//                      field applies (else it is greyed out)
+//   controlPolygon     whether it has a control polygon to show (the Show box's option)
 //   defaults           the starting design: {points, ...params}
 //   fileRank,          a file without "mode" is the design of the first mode, by fileRank,
 //   recognises(json)   that recognises it; adopt(json, design) reads what such a file says
@@ -21,6 +25,8 @@
 // Its functions (a plane mode takes them from ./plane.js and overrides what differs):
 //   init(input)        once at start: a mode with views of its own wires them to `input`
 //   request(body)      the API request from a copy of the design (with `samples`)
+//   check(design)      what the page can tell is wrong with a design without asking the
+//                      server, as an error {kind, message} (it is not sent), or null
 //   cad(body, answer)  the exact curve's fields of the /api/export request, from a copy
 //                      of the design (and the answer it has now)
 //   samples(answer)    the curve's samples {s, x, y, [z], theta, kappa, ...}, or []
@@ -31,9 +37,11 @@
 //   readout(answer, add, design)  the panel's numbers: add(label, key, value, text?)
 //   table(answer, design)  an element under them (or null)
 //   pointsPanel({points, apply})  the points' fieldset instead of a field per point (a
-//                      fit's hundreds of points): its elements; apply(points) sets them
+//                      fit's hundreds of points): {elements, show(points)}, show called
+//                      whenever the points change; apply(points, more) sets them (and the
+//                      design's fields in `more`)
 //   plots(answer, {hover, error})  {kplot, lcg}: the options of the two plots (plots.js)
-//   fix(error)         a button for a refusal: {label, apply(design)}, or null
+//   fix(error, design) a button for a refusal: {label, apply(design)}, or null
 //   combLimit(frame)   the largest comb scale at which the teeth stay in view (while dragging)
 //   placeMessage(box, frame)  put the message (#message, shown or hidden) where it covers no
 //                      control point (banner.js)
@@ -58,7 +66,9 @@ const DEFAULTS = {
   region: null,
   regionInView: false,
   init: () => {},
+  controlPolygon: true,
   request: (body) => body,
+  check: () => null,
   cad: (body) => body,
   samples: (answer) => (answer && answer.samples) || [],
   table: () => null,

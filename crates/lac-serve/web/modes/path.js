@@ -8,7 +8,7 @@ import { fmt } from '../format.js';
 /** How far a segment's line in the graph goes in ln ρ: until its curvature is a twentieth of
  * its largest. A segment that runs into an inflection has κ → 0 there, and ln ρ → ∞ (28 and
  * more in doubles): drawn whole, its line would squeeze every other segment's to a stub. */
-const LCG_SPAN = Math.log(20);
+export const LCG_SPAN = Math.log(20);
 
 export default {
   ...plane,

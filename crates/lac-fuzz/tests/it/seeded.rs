@@ -17,37 +17,8 @@ fn count() -> u64 {
 
 #[test]
 fn every_entry_point_survives_the_seeded_driver() {
-    let entries = EntryPoint::ALL
-        .into_iter()
-        .filter(|e| *e != EntryPoint::Fit);
-    let failures = survive(entries, count());
+    let failures = survive(EntryPoint::ALL.into_iter(), count());
     assert!(failures.is_empty(), "\n{}", failures.join("\n"));
-}
-
-/// The fit's entry point (`EntryPoint::count` draws a hundredth of the count for it), apart:
-/// `lac::Fit` does not meet its invariants yet (the inputs kept in
-/// `regressions/fit-open.jsonl`: a numerical failure where a typed error is due, a distance
-/// that is not the point's distance at its foot, calls of several seconds, calls that do not
-/// return). Run it with `cargo test -p lac-fuzz --release --test it fit -- --ignored`.
-#[test]
-#[ignore = "lac::Fit does not meet its fuzz invariants yet: regressions/fit-open.jsonl"]
-fn the_fit_survives_the_seeded_driver() {
-    let failures = survive([EntryPoint::Fit].into_iter(), count());
-    assert!(failures.is_empty(), "\n{}", failures.join("\n"));
-}
-
-/// The fits that once broke an invariant, until lac::Fit is mended (then they join
-/// `inputs.jsonl`).
-#[test]
-#[ignore = "lac::Fit does not meet its fuzz invariants yet: regressions/fit-open.jsonl"]
-fn every_fit_that_broke_an_invariant_passes() {
-    let corpus = include_str!("../../regressions/fit-open.jsonl");
-    let bad: Vec<String> = replay(corpus)
-        .iter()
-        .filter(|(_, o)| matches!(o, Outcome::Violation(_) | Outcome::Panic(_)))
-        .map(|(i, o)| format!("{o:?}\n  {}", serde_json::to_string(i).unwrap()))
-        .collect();
-    assert!(bad.is_empty(), "\n{}", bad.join("\n"));
 }
 
 /// Run `n` seeded inputs of each entry point; what went wrong.

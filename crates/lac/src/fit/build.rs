@@ -29,6 +29,9 @@ const JOINT_LIMIT: f64 = 1e-10;
 /// relative to the size of the points: the distances the fit reports are the solver's.
 const MODEL_LIMIT: f64 = 1e-9;
 
+/// The largest extent and distance from the origin of the points a fit takes.
+const LARGEST_COORDINATE: f64 = 1e150;
+
 /// The caller's points and options in the unit box.
 pub(super) struct Input {
     pub(super) data: Vec<Complex>,
@@ -99,6 +102,12 @@ impl Input {
         if !(half > 0.0 && half.is_finite()) {
             return Err(Error::Unrepresentable {
                 what: "extent of the points",
+            });
+        }
+        // A segment's own arithmetic squares lengths: beyond 1e150 it overflows.
+        if half > LARGEST_COORDINATE || center.x.abs().max(center.y.abs()) > LARGEST_COORDINATE {
+            return Err(Error::Unrepresentable {
+                what: "fit of points more than 1e150 apart or from the origin",
             });
         }
         let data: Vec<Complex> = points

@@ -269,6 +269,7 @@ impl Fit {
             weights: &input.weights,
             loss: input.loss,
             alpha_range: input.alpha_range,
+            longest: LONGEST * profile.total,
             constraints,
         };
         // The search (the first chains, splits, merges) looks at about [`SEARCH_POINTS`]
@@ -569,7 +570,7 @@ fn shared_slope_first<'a>(
     let Some(s1) = one.state(shared.pack(start, &numbers), &state.feet) else {
         return state;
     };
-    let s1 = one.minimize(s1, 100);
+    let s1 = one.minimize(s1, SHARED_STEPS);
     let each = problem(layout);
     let x = layout.pack((s1.chain.start, s1.chain.theta0), &s1.chain.numbers);
     let Some(s2) = each.state(x, &s1.feet) else {
@@ -578,8 +579,8 @@ fn shared_slope_first<'a>(
     if s2.cost < state.cost || state.cost.is_nan() {
         return s2;
     }
-    let state = each.minimize(state, 100);
-    let alternative = each.minimize(s2, 100);
+    let state = each.minimize(state, SHARED_STEPS);
+    let alternative = each.minimize(s2, SHARED_STEPS);
     if alternative.cost < state.cost {
         alternative
     } else {
@@ -619,6 +620,12 @@ fn without_collapsed<'a>(
 
 /// The share of a chain's length below which a piece has collapsed.
 const COLLAPSED: f64 = 1e-6;
+
+/// The longest a fitted piece may grow, times the length of the points' polyline.
+const LONGEST: f64 = 4.0;
+
+/// Most steps of each descent in [`shared_slope_first`] (the search's own descent follows).
+const SHARED_STEPS: usize = 30;
 
 /// A chain fitted to every point with fine tables from `state` (its ends held on the first
 /// and last points when `pin`).

@@ -194,9 +194,17 @@ fn stations(law: &Law, len: f64) -> Option<Vec<f64>> {
     let mut ts = vec![0.0];
     let mut t = 0.0;
     let largest = law.at(0.0).1.abs().max(law.at(1.0).1.abs());
+    // Near zero curvature the relative change means nothing: a piece that reaches zero is
+    // held to its change relative to a thousandth of its largest curvature there. (One whose
+    // curvature keeps its sign, up to a ratio of 1e6, is held to its own all along.)
+    let reaches_zero = !law.keeps_sign();
     let bound = |t: f64| {
         let (_, k) = law.at(t);
-        let floor = k.abs().max(1e-3 * largest);
+        let floor = if reaches_zero {
+            k.abs().max(1e-3 * largest)
+        } else {
+            k.abs()
+        };
         let by_turn = STATION_TURN / (floor * len);
         // The curvature's higher derivatives are larger than its first by a factor |α|
         // more than the first is by itself (κ ∝ (1 + te)^(−1/α): each derivative brings
@@ -603,6 +611,9 @@ mod tests {
             (1.0, 4.0, 0.8, -5.0),
             (3.0, 1.0, 0.8, 0.0),
             (1.0, 1.5, 2.0, 2.0),
+            // A ratio of 3e4 at α = 1: 1e-8 off at its flat end while the change per station
+            // was measured against a thousandth of the largest curvature there.
+            (263.6, 0.00917, 0.837, 1.0),
         ];
         for (ka, kb, len, alpha) in cases {
             let law = Law::new(ka, kb, len, alpha).unwrap();

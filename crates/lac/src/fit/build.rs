@@ -29,6 +29,9 @@ const JOINT_LIMIT: f64 = 1e-10;
 /// relative to the size of the points: the distances the fit reports are the solver's.
 const MODEL_LIMIT: f64 = 1e-9;
 
+/// The rounding of a joint's curvature, relative to the fit's largest.
+const CURVATURE_ROUNDING: f64 = 1e-12;
+
 /// The largest extent and distance from the origin of the points a fit takes.
 const LARGEST_COORDINATE: f64 = 1e150;
 
@@ -410,8 +413,14 @@ pub(super) fn build(
         let closing = closed && k + 1 == joints.len();
         let flat = j.curvature_before.abs().max(j.curvature_after.abs())
             <= INFLECTION_LIMIT * largest_kappa / scale;
-        let g2_ok =
-            options.continuity == Continuity::G1 || j.curvature_jump <= G2_JUMP_LIMIT || flat;
+        // Relative to the joint's own curvature, or where that is far below the fit's
+        // largest, to the rounding of the largest (a joint at 1e-7 of it carries the
+        // rounding of curvature ratios of 1e7 on both sides).
+        let rounding = CURVATURE_ROUNDING * largest_kappa / scale;
+        let g2_ok = options.continuity == Continuity::G1
+            || j.curvature_jump <= G2_JUMP_LIMIT
+            || (j.curvature_before - j.curvature_after).abs() <= rounding
+            || flat;
         if !(j.gap <= JOINT_LIMIT * fit_size && j.tangent_jump <= JOINT_LIMIT && g2_ok) {
             // The closing joint is where the solver's closure constraints were not met.
             if closing {

@@ -636,6 +636,50 @@ mod tests {
         }
     }
 
+    /// A piece through zero curvature against the two segments of its halves (as a fit
+    /// places it), for slopes across the window an S may have: the interpolant near the
+    /// inflection, where the curvature's second (α > −1) or first (α < −1) derivative is
+    /// singular, to 1e-11 of the length.
+    #[test]
+    fn s_pieces_agree_with_their_halves() {
+        use crate::curve::Curve;
+        use crate::segment::Segment;
+        use kurbo::Point;
+        let cases = [
+            (2.0, -3.0, 1.3, -0.5),
+            (2.0, -3.0, 1.3, -0.56),
+            (2.0, -3.0, 1.3, -0.75),
+            (2.0, -3.0, 1.3, -1.0),
+            (2.0, -3.0, 1.3, -1.3),
+            (2.0, -3.0, 1.3, -1.5),
+            (-0.9738, 6.649, 1.774, -0.5575),
+        ];
+        for (ka, kb, len, alpha) in cases {
+            let law = Law::new(ka, kb, len, alpha).unwrap();
+            let table = Table::new(law, len, Complex::ZERO, 0.0, false).unwrap();
+            let inflection = law.inflection().unwrap();
+            let eta = 1e-12;
+            let mut worst: f64 = 0.0;
+            // (The second half up to where it has turned by less than π.)
+            let rising_end = inflection + 0.8 * (1.0 - inflection);
+            for (a, b) in [(0.0, inflection - eta), (inflection + eta, rising_end)] {
+                let (p, theta, _) = table.at(a);
+                let start = Point::new(p.re, p.im);
+                let kappas = [law.at(a).1, law.at(b).1];
+                let half =
+                    Segment::from_curvatures(start, theta, kappas, (b - a) * len, alpha).unwrap();
+                for j in 0..=200 {
+                    let t = a + (b - a) * j as f64 / 200.0;
+                    let (p, _, _) = table.at(t);
+                    let q = half.point_at_s((t - a) * len).unwrap();
+                    worst = worst.max((p.re - q.x).hypot(p.im - q.y) / len);
+                }
+            }
+            eprintln!("S, α {alpha}: {worst:e} stations {}", table.ts.len());
+            assert!(worst < 1e-11, "S, α {alpha}: {worst:e}");
+        }
+    }
+
     /// The tabulated clothoid against its closed form (Fresnel integrals by a fine sum).
     #[test]
     fn stations_and_interpolation_place_points_to_1e_12() {

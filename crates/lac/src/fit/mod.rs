@@ -635,9 +635,9 @@ fn polish(problem: &Problem, pin: bool, pins: Constraints, state: State) -> Stat
             constraints: pins,
             ..*problem
         };
-        pinned.minimize(state, 100)
+        pinned.polish(state, 100)
     } else {
-        problem.minimize(state, 100)
+        problem.polish(state, 100)
     }
 }
 

@@ -396,11 +396,21 @@ impl Problem<'_> {
     }
 
     /// Levenberg–Marquardt from `state` for at most `iterations` steps; the best state seen.
-    pub(super) fn minimize(&self, mut state: State, iterations: usize) -> State {
+    pub(super) fn minimize(&self, state: State, iterations: usize) -> State {
+        self.descend(state, iterations, 1e-3)
+    }
+
+    /// [`Problem::minimize`] from a state near the minimum (another sampling's answer): the
+    /// damping starts low, so that the first steps are Gauss–Newton's.
+    pub(super) fn polish(&self, state: State, iterations: usize) -> State {
+        self.descend(state, iterations, 1e-8)
+    }
+
+    /// Levenberg–Marquardt from `state`, the damping starting at `lambda`.
+    fn descend(&self, mut state: State, iterations: usize, mut lambda: f64) -> State {
         let free = self.free();
         let nf = free.len();
         let np = self.layout.len();
-        let mut lambda = 1e-3;
         let mut merit_weight = 0.0;
         // The costs after the last accepted steps, for the crawl test.
         let mut recent: Vec<f64> = Vec::with_capacity(iterations);

@@ -120,15 +120,15 @@ impl SpaceSegment {
     /// binormal turn by at most 3π/2 is returned; (2) otherwise the free-end search (the end
     /// s a third unknown, starts from ν scans on the first three crossings' cones at Λ = 0,
     /// 0.15, 0.4, 1, best residual first, then where those scans come closest to the cone
-    /// without crossing it), and the segment that turns least among (1) and (2); (3) when
-    /// Ω itself is out of reach, the segment at Ω = 0 followed continuously in Ω; (4) when
-    /// none of these finds a segment, the free-end search (2) with the form starting at the
-    /// other end (torsion can put the larger angle at the end where the curvature is
-    /// smaller), and (3) in that order when the first has no segment at Ω = 0. The refusal
-    /// reports how far in Ω the branch of (3) got. Segments found
-    /// by (1) move continuously with the input while the
-    /// near-helix start stays in their basin; for dragging, where the answer should follow
-    /// the previous one, use [`SpaceSegment::from_control_points_near`].
+    /// without crossing it, then where seed 003's 2π guard cuts them off near it), and the
+    /// segment that turns least among (1) and (2); (3) when Ω itself is out of reach, the
+    /// segment at Ω = 0 followed continuously in Ω; (4) when none of these finds a segment,
+    /// the free-end search (2) with the form starting at the other end (torsion can put the
+    /// larger angle at the end where the curvature is smaller), and (3) in that order when
+    /// the first has no segment at Ω = 0. The refusal reports how far in Ω the branch of (3)
+    /// got. Segments found by (1) move continuously with the input while the near-helix
+    /// start stays in their basin; for dragging, where the answer should follow the previous
+    /// one, use [`SpaceSegment::from_control_points_near`].
     pub fn from_control_points(points: [Vec3; 4], shape: SpaceShape) -> Result<SpaceSegment> {
         Self::solve(points, shape, None)
     }

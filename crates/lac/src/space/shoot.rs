@@ -150,16 +150,26 @@ fn shoot_each(form: &SpaceForm, cone: &Cone, accuracy: Accuracy, budget: &Budget
     shoot_each_and_touches(form, cone, accuracy, budget, None)
 }
 
-/// [`shoot_each`], and with `touches` the points before its last crossing where the curve
-/// comes closest to the cone without crossing it, within [`TOUCH_ANGLE`] (at a probe, not
-/// refined): the ends where a nearby curve grazes the cone, crossing and recrossing between
-/// two probes, or misses it.
+/// Where a curve comes near the cone without crossing it ([`shoot_each_and_touches`]).
+#[derive(Debug, Default)]
+pub(crate) struct Touches {
+    /// The points before its last crossing where the curve comes closest to the cone without
+    /// crossing it, within [`TOUCH_ANGLE`] (at a probe, not refined): the ends where a nearby
+    /// curve grazes the cone, crossing and recrossing between two probes, or misses it.
+    pub(crate) approaches: Vec<Shot>,
+    /// Its end just inside seed 003's 2π guard, where the guard cuts it off before its last
+    /// crossing within [`TOUCH_ANGLE`] of the cone ([`guard_touch`]).
+    pub(crate) cut_off: Option<Shot>,
+}
+
+/// [`shoot_each`], and with `touches` where the curve comes near the cone without crossing
+/// it ([`Touches`]).
 pub(crate) fn shoot_each_and_touches(
     form: &SpaceForm,
     cone: &Cone,
     accuracy: Accuracy,
     budget: &Budget,
-    touches: Option<&mut Vec<Shot>>,
+    touches: Option<&mut Touches>,
 ) -> Vec<Shot> {
     let mut shots = Vec::new();
     crossings(
@@ -190,7 +200,7 @@ fn crossings(
     accuracy: Accuracy,
     track: Track,
     budget: &Budget,
-    mut touches: Option<&mut Vec<Shot>>,
+    mut touches: Option<&mut Touches>,
     mut each: impl FnMut(Shot, u32) -> bool,
 ) {
     let (_, s_max) = form.s_range();
@@ -242,7 +252,7 @@ fn crossings(
                     let near = expansion.state_at(prev);
                     let off = (Vec3::X.angle_to(near.x) - cone.half_angle).abs();
                     if off < TOUCH_ANGLE {
-                        touches.extend(shot_at(form, near, Vec::new()));
+                        touches.approaches.extend(shot_at(form, near, Vec::new()));
                     }
                 }
             }
@@ -258,7 +268,13 @@ fn crossings(
                         }
                         each(shot, crossings) && crossings < cone.crossing
                     }
-                    None => false,
+                    // Past the guard.
+                    None => {
+                        if let Some(touches) = touches.as_deref_mut() {
+                            touches.cut_off = guard_touch(form, cone, &expansion);
+                        }
+                        false
+                    }
                 };
                 if !go_on {
                     return;
@@ -275,11 +291,40 @@ fn crossings(
         }
         state = expansion.state_at(h);
         if !within_guard(form, state.s) {
+            if let Some(touches) = touches.as_deref_mut() {
+                touches.cut_off = guard_touch(form, cone, &expansion);
+            }
             return;
         }
         if crossings == 0 && never_leaves(form, cone, &state) {
             return;
         }
+    }
+}
+
+/// The end of a curve that seed 003's 2π guard cuts off inside the step of `expansion`,
+/// when it lies within [`TOUCH_ANGLE`] of the cone: the state just inside the guard
+/// ([`Touches::cut_off`]), whichever way the curve is heading there.
+///
+/// Where the torsion grows without bound toward the end of the valid range (type 2 with
+/// β > 0: μ falls to 0 at a finite s), the binormal's turning climbs steeply to the guard,
+/// and a segment may end at 85–99.5% of its guard. The scan's curves at the neighbouring ν
+/// (a quarter decade away) are cut off by their own guard short of the cone or just past
+/// it, so they have neither a crossing nor a touch near that end; their end at the guard,
+/// though, lies close to the segment's end (the tangent barely turns there while the frame
+/// twists fast), and the free-end search converges from it.
+fn guard_touch(form: &SpaceForm, cone: &Cone, expansion: &Expansion) -> Option<Shot> {
+    let s = guard_end(form);
+    let offset = expansion.offset_to(s);
+    if !offset.is_finite() || offset < 0.0 {
+        return None;
+    }
+    let end = expansion.state_at(offset);
+    let off = (Vec3::X.angle_to(end.x) - cone.half_angle).abs();
+    if off < TOUCH_ANGLE {
+        shot_at(form, end, Vec::new())
+    } else {
+        None
     }
 }
 
@@ -500,6 +545,18 @@ fn shot_at(form: &SpaceForm, end: State, checkpoints: Vec<State>) -> Option<Shot
         checkpoints,
         derivatives: None,
     })
+}
+
+/// The s just inside where seed 003's 2π guard ends `form` ([`within_guard`]; the guard's
+/// own s may round either way, so a billionth short of it): where its tangent or binormal
+/// has turned by 2π, ∞ where neither ever does.
+pub(crate) fn guard_end(form: &SpaceForm) -> f64 {
+    let tau = std::f64::consts::TAU;
+    let guard = form
+        .kappa_law()
+        .s_of_integral(tau)
+        .min(form.tau_law().s_of_integral(tau));
+    guard * (1.0 - 1e-9)
 }
 
 /// The seed's 2π guard: neither tangent nor binormal has turned by more than 2π from 0 to
@@ -804,5 +861,55 @@ mod tests {
             }
         }
         assert!(checked >= 10, "only {checked} cases reached their end");
+    }
+
+    /// A scan's curve that the 2π guard cuts off near the cone (α = 2, β = 1, type 2, Ω 0.39:
+    /// the torsion blows up at s = ν/Ω, 5.0 here, and the binormal turns by 2π at 4.6)
+    /// reports its end just inside the guard as [`Touches::cut_off`], the same state as an
+    /// integration to there; one whose end at the guard is far from the cone reports none,
+    /// and so does one that makes the crossings asked for before its guard.
+    #[test]
+    fn guard_cut_off_is_the_end_just_inside_the_guard() {
+        let theta0 = 1.1018;
+        let cone = Cone::new(theta0, 3);
+        let budget = Budget::new(SOLVE_STEPS);
+        let tau = std::f64::consts::TAU;
+        let mut cut = 0;
+        for (lambda, near) in [(0.4, true), (0.15, true), (1.0, false)] {
+            let f = form(2.0, 1.0, lambda, 0.6797, 0.3925, TorsionType::Two);
+            let mut touches = Touches::default();
+            let shots =
+                shoot_each_and_touches(&f, &cone, Accuracy::Scan, &budget, Some(&mut touches));
+            assert!(
+                shots.len() < 3,
+                "lambda {lambda}: cut off before its third crossing"
+            );
+            let Some(end) = touches.cut_off else {
+                assert!(!near, "lambda {lambda}: no cut-off");
+                continue;
+            };
+            assert!(near, "lambda {lambda}: a cut-off far from the cone");
+            let phi = f.tau_law().integral(end.end.s);
+            assert!(
+                phi <= tau && phi > tau * (1.0 - 1e-8),
+                "lambda {lambda}: phi {phi} at the cut-off"
+            );
+            let off = (Vec3::X.angle_to(end.end.x) - theta0).abs();
+            assert!(off < TOUCH_ANGLE, "lambda {lambda}: {off} off the cone");
+            let full = integrate_to(&f, end.end.s, Checkpoints::Discard, Accuracy::Full, &budget)
+                .expect("inside the guard");
+            let err = (full.end.x - end.end.x).length() / full.end.x.length()
+                + (full.end.t - end.end.t).length();
+            assert!(err < 1e-5, "lambda {lambda}: {err:e} from the integration");
+            cut += 1;
+        }
+        assert_eq!(cut, 2);
+        // Ω = 0: constant torsion, two crossings before the guard, all that is asked.
+        let f = form(2.0, 1.0, 0.4, 0.6797, 0.0, TorsionType::Two);
+        let mut touches = Touches::default();
+        let two = Cone::new(theta0, 2);
+        let shots = shoot_each_and_touches(&f, &two, Accuracy::Scan, &budget, Some(&mut touches));
+        assert_eq!(shots.len(), 2);
+        assert!(touches.cut_off.is_none());
     }
 }

@@ -195,8 +195,11 @@ fn warm_start_follows_a_drag_continuously() {
 /// Every (α, β) of {−1, −0.5, 0, 0.5, 1, 2} × {−1, 0, 1} with both types, on longer pieces
 /// (s 0.6–6 of the standard form, ν up to 4, |θ2| at least 0.05 rad off 0 and π): at least
 /// 99.5% solved in every cell, each solution verified as above; the shares per cell are
-/// printed. One cell is below that ([`KNOWN_SHORT`]). `LAC_SPACE_CELL_CASES` sets the cases
-/// per cell (default 400, one seed).
+/// printed. `LAC_SPACE_CELL_CASES` sets the cases per cell (default 400),
+/// `LAC_SPACE_CELL_SEED` the seed (default 33), and with `LAC_SPACE_TRACE` every miss is
+/// printed (else the first ten). At the default count no cell misses more than one input
+/// (99.75%) with seeds 1, 2, 3, 33, 34 and 35; at 2,000 per cell the least cell solves
+/// 99.85%.
 #[test]
 fn every_cell_solves_long_pieces() {
     let per_cell: usize = std::env::var("LAC_SPACE_CELL_CASES")
@@ -220,7 +223,11 @@ fn every_cell_solves_long_pieces() {
     let mut by_cell: BTreeMap<(i32, i32, u8), (usize, usize)> = BTreeMap::new();
     let mut by_end = Tally::default();
     let mut failures = Vec::new();
-    for case in space_inputs::generate_with(33, per_cell * cells.len(), &recipe) {
+    let seed: u64 = std::env::var("LAC_SPACE_CELL_SEED")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(33);
+    for case in space_inputs::generate_with(seed, per_cell * cells.len(), &recipe) {
         let ok = match SpaceSegment::from_control_points(case.points, case.shape) {
             Ok(seg) => {
                 let (pos, tan) = check_ends(&seg, case.points);
@@ -263,21 +270,18 @@ fn every_cell_solves_long_pieces() {
         );
     }
     by_end.print("where the standard form has the larger chord angle");
-    for f in failures.iter().take(10) {
+    // `LAC_SPACE_TRACE` prints every miss, not only the first ten.
+    let shown = if std::env::var_os("LAC_SPACE_TRACE").is_some() {
+        failures.len()
+    } else {
+        10
+    };
+    for f in failures.iter().take(shown) {
         eprintln!("unsolved: {f}");
     }
     let low: Vec<_> = by_cell
         .iter()
-        .filter(|(key, (solved, total))| {
-            let least = if **key == KNOWN_SHORT { 0.985 } else { 0.995 };
-            (*solved as f64) < least * *total as f64
-        })
+        .filter(|(_, (solved, total))| (*solved as f64) < 0.995 * *total as f64)
         .collect();
-    assert!(low.is_empty(), "cells below their share: {low:?}");
+    assert!(low.is_empty(), "cells below 99.5%: {low:?}");
 }
-
-/// The cell (2α, β, type) below 99.5% in [`every_cell_solves_long_pieces`]: α = 2, β = 1,
-/// type 2 solves 99.0% (396 of 400). Its misses end grazing the cone (|θ2| within 0.03 of
-/// π/2) where the binormal has turned by 95–99% of seed 003's 2π guard; the ν scans stop at
-/// the guard, so no scanned curve comes near that end. It is held to 98.5%.
-const KNOWN_SHORT: (i32, i32, u8) = (4, 1, 2);

@@ -29,8 +29,10 @@ const JOINT_LIMIT: f64 = 1e-10;
 /// relative to the size of the points: the distances the fit reports are the solver's.
 const MODEL_LIMIT: f64 = 1e-9;
 
-/// The rounding of a joint's curvature, relative to the fit's largest.
-const CURVATURE_ROUNDING: f64 = 1e-12;
+/// The rounding of a joint's curvature, relative to the fit's largest: a segment evaluates
+/// its end curvature to about 1e-9 of itself at curvature ratios of 1e4 (seen: a joint at
+/// 5e-4 of the largest, 3e-9 of itself apart), far below the fit's curvature scale.
+const CURVATURE_ROUNDING: f64 = 1e-10;
 
 /// The largest extent and distance from the origin of the points a fit takes.
 const LARGEST_COORDINATE: f64 = 1e150;
@@ -414,8 +416,8 @@ pub(super) fn build(
         let flat = j.curvature_before.abs().max(j.curvature_after.abs())
             <= INFLECTION_LIMIT * largest_kappa / scale;
         // Relative to the joint's own curvature, or where that is far below the fit's
-        // largest, to the rounding of the largest (a joint at 1e-7 of it carries the
-        // rounding of curvature ratios of 1e7 on both sides).
+        // largest, to the rounding of the largest (a joint far below it carries the
+        // rounding of its segments' curvature ratios on both sides).
         let rounding = CURVATURE_ROUNDING * largest_kappa / scale;
         let g2_ok = options.continuity == Continuity::G1
             || j.curvature_jump <= G2_JUMP_LIMIT

@@ -343,6 +343,19 @@ impl Fit {
                 state = search(layout_of(m)).minimize(fewer, 100);
                 n = m;
             }
+            // An open chain that runs on before the first point or after the last is cut
+            // there and fitted again: its ends then pull on the data's ends (a split of a
+            // piece that lies beyond them would gain nothing).
+            if !closed && !options.pin_ends {
+                let before = state.chain.length();
+                let (cut, m) = trim(&search(layout_of(n)), state);
+                state = if cut.chain.length() < before * (1.0 - 1e-9) {
+                    search(layout_of(m)).minimize(cut, 100)
+                } else {
+                    cut
+                };
+                n = m;
+            }
             if options.pin_ends && !closed {
                 let pinned = Problem {
                     constraints: pins,

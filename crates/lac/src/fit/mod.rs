@@ -637,6 +637,11 @@ const COLLAPSED: f64 = 1e-6;
 /// The longest a fitted piece may grow, times the length of the points' polyline.
 const LONGEST: f64 = 4.0;
 
+/// Most steps of a polish on every point: it starts a step or two from its answer, and a
+/// chain of several pieces can crawl along a flat valley for a hundred steps to gain a
+/// thousandth of its cost.
+const POLISH_STEPS: usize = 25;
+
 /// Most steps of each descent in [`shared_slope_first`] (the search's own descent follows).
 const SHARED_STEPS: usize = 30;
 
@@ -648,9 +653,9 @@ fn polish(problem: &Problem, pin: bool, pins: Constraints, state: State) -> Stat
             constraints: pins,
             ..*problem
         };
-        pinned.polish(state, 100)
+        pinned.polish(state, POLISH_STEPS)
     } else {
-        problem.polish(state, 100)
+        problem.polish(state, POLISH_STEPS)
     }
 }
 

@@ -10,7 +10,7 @@
 use crate::foundation::numeric::Complex;
 
 use super::law::{inflects_with, Law};
-use super::model::AlphaMode;
+use super::model::{every, AlphaMode};
 
 /// The data's smoothed profiles along their chord length.
 #[derive(Clone, Debug)]
@@ -34,8 +34,45 @@ fn sub(a: Complex, b: Complex) -> Complex {
     Complex::new(a.re - b.re, a.im - b.im)
 }
 
+/// The most points a profile smooths; more are thinned to about this many (every k-th and
+/// the last) and the profile read off them, each point's values interpolated between theirs.
+/// (The window, a fortieth of the points, then spans the same share of the curve however
+/// many points there are; over all of a million points the smoothing would cost a million
+/// times the window.)
+const PROFILE_POINTS: usize = 8000;
+
 impl Profile {
     pub(super) fn new(data: &[Complex], closed: bool) -> Profile {
+        let n = data.len();
+        if n <= PROFILE_POINTS {
+            return Profile::of_all(data, closed);
+        }
+        let k = n.div_ceil(PROFILE_POINTS);
+        let indices = every(&(0..n).collect::<Vec<_>>(), k);
+        let thin: Vec<Complex> = indices.iter().map(|&i| data[i]).collect();
+        let p = Profile::of_all(&thin, closed);
+        let spread = |values: &[f64]| -> Vec<f64> {
+            let mut out = Vec::with_capacity(n);
+            for (w, v) in indices.windows(2).zip(values.windows(2)) {
+                for i in w[0]..w[1] {
+                    out.push(v[0] + (v[1] - v[0]) * (i - w[0]) as f64 / (w[1] - w[0]) as f64);
+                }
+            }
+            out.push(values[values.len() - 1]);
+            out
+        };
+        Profile {
+            s: spread(&p.s),
+            total: p.total,
+            theta: spread(&p.theta),
+            kappa: spread(&p.kappa),
+            closed_turn: p.closed_turn,
+            window: p.window * k,
+        }
+    }
+
+    /// The profile smoothed over every point.
+    fn of_all(data: &[Complex], closed: bool) -> Profile {
         let n = data.len();
         let mut s = Vec::with_capacity(n);
         let mut acc = 0.0;

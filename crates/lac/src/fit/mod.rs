@@ -283,6 +283,21 @@ impl Fit {
                 .state(s.x.clone(), &sample.spread(&s.feet))
                 .ok_or(failed("the fit measured against every point"))
         };
+        // The polish looks at every point, or of more than [`POLISH_POINTS`] at that many
+        // (evenly spread: their least-squares answer is the same to a fraction of the noise),
+        // and is measured against every point.
+        let dense = Sample::new(&input.data, &input.weights, POLISH_POINTS);
+        let pin = options.pin_ends && !closed;
+        let polish_every = |full: State, n: usize| -> State {
+            if dense.indices.len() == input.data.len() {
+                return polish(&problem(layout_of(n)), pin, pins, full);
+            }
+            let fine = dense.fine(problem(layout_of(n)));
+            fine.state(full.x.clone(), &dense.pick(&full.feet))
+                .map(|s| polish(&fine, pin, pins, s))
+                .and_then(|s| measure(&dense, &s, n).ok())
+                .unwrap_or(full)
+        };
         let first_state = |sample: &Sample, cuts: &[f64]| -> Result<State> {
             let n = cuts.len() + 1;
             let pieces = guess::pieces(&profile, cuts, input.alpha_mode, input.alpha_range);
@@ -373,12 +388,7 @@ impl Fit {
             if let Some(tol) = tolerance {
                 // Just beyond the tolerance: the polish on every point may bring it within.
                 if full.distances[worst] > tol && full.distances[worst] <= POLISH_NEAR * tol {
-                    full = polish(
-                        &problem(layout_of(n)),
-                        options.pin_ends && !closed,
-                        pins,
-                        full,
-                    );
+                    full = polish_every(full, n);
                     worst = worst_index(&full.distances);
                 }
             }
@@ -404,9 +414,14 @@ impl Fit {
                 continue;
             }
             // The points beyond the tolerance join the search, which would not see them
-            // otherwise, and the piece at the worst is split.
-            let beyond = (0..input.data.len()).filter(|&i| full.distances[i] > tol);
-            if sample.add(beyond, &input.data, &input.weights) {
+            // otherwise (at most [`SEARCH_POINTS`] of them, evenly spread, and the worst),
+            // and the piece at the worst is split.
+            let beyond: Vec<usize> = (0..input.data.len())
+                .filter(|&i| full.distances[i] > tol)
+                .collect();
+            let step = beyond.len().div_ceil(SEARCH_POINTS).max(1);
+            let joining = beyond.iter().step_by(step).copied().chain([worst]);
+            if sample.add(joining, &input.data, &input.weights) {
                 state = sample
                     .problem(problem(layout_of(n)))
                     .state(full.x.clone(), &sample.pick(&full.feet))
@@ -422,10 +437,9 @@ impl Fit {
             .ok_or(not_met(n))?;
             n += 1;
         };
-        let pin = options.pin_ends && !closed;
         // The polish on every point; kept when it stays within the tolerance.
         let polished = |full: State, n: usize| -> State {
-            let fine = polish(&problem(layout_of(n)), pin, pins, full.clone());
+            let fine = polish_every(full.clone(), n);
             match tolerance {
                 Some(tol) if fine.distances.iter().any(|d| *d > tol) => full,
                 _ => fine,
@@ -659,6 +673,9 @@ fn polish(problem: &Problem, pin: bool, pins: Constraints, state: State) -> Stat
     }
 }
 
+/// The most points a polish looks at.
+const POLISH_POINTS: usize = 20_000;
+
 /// About how many points the search for a path's segments looks at.
 const SEARCH_POINTS: usize = 200;
 
@@ -715,6 +732,15 @@ impl Sample {
                 coarse: true,
                 ..base.layout
             },
+            data: &self.data,
+            weights: &self.weights,
+            ..base
+        }
+    }
+
+    /// The problem over these points with the base's (fine) tables.
+    fn fine<'a>(&'a self, base: Problem<'a>) -> Problem<'a> {
+        Problem {
             data: &self.data,
             weights: &self.weights,
             ..base

@@ -242,3 +242,49 @@ fn bad_points_are_refused_with_a_typed_error() {
     assert_eq!(err.kind(), ErrorKind::FitToleranceNotMet);
     eprintln!("{err}");
 }
+
+/// A hundred thousand points (the search looks at a few hundred, the polish at 20,000, and
+/// every point is measured): a noisy G2 path of three segments is fitted within 4σ, as near
+/// the noise-free curve and with as few segments as from a thousand.
+#[test]
+fn a_hundred_thousand_points_are_fitted_like_a_thousand() {
+    let polygon = ControlPolygon::from_points(
+        &[
+            Point::ORIGIN,
+            Point::new(1.0, 0.0),
+            Point::new(1.8, 0.5),
+            Point::new(2.3, 1.3),
+            Point::new(2.4, 2.2),
+        ],
+        Closure::Open,
+    )
+    .unwrap();
+    let path = Path::from_polygon_g2(&polygon, &Alphas::One(0.5)).unwrap();
+    let truth_segments = path.segments().len();
+    let sigma = 1e-4 * path.arc_length();
+    let mut rng = Rng(29);
+    let (points, clean) = noisy(&path, 100_000, sigma, &mut rng);
+    let options = FitOptions {
+        tolerance: Some(5.0 * sigma),
+        max_segments: 20,
+        ..FitOptions::default()
+    };
+    let fit = Fit::from_points(&points, &options).unwrap();
+    let every_hundredth: Vec<Point> = clean.iter().step_by(100).copied().collect();
+    let d = distance_to_truth(&fit, &every_hundredth);
+    eprintln!(
+        "100,000 points: truth {truth_segments} segments, fit {}, largest distance {:.2}σ, \
+         to the noise-free curve {:.2}σ",
+        fit.pieces().len(),
+        fit.max_distance() / sigma,
+        d / sigma
+    );
+    assert_eq!(fit.distances().len(), 100_000);
+    assert!(fit.max_distance() <= 5.0 * sigma);
+    assert!(
+        d <= 3.0 * sigma,
+        "{:.2}σ from the noise-free curve",
+        d / sigma
+    );
+    assert!(fit.pieces().len() <= truth_segments + 1);
+}

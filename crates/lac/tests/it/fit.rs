@@ -288,3 +288,64 @@ fn a_hundred_thousand_points_are_fitted_like_a_thousand() {
     );
     assert!(fit.pieces().len() <= truth_segments + 1);
 }
+
+/// Two segments meeting with a curvature jump (G1): a G1 fit keeps a jump, with at most one
+/// segment more than the truth, within 4σ and 3σ of the noise-free curve, its joints
+/// continuous in position and tangent. (The G2 fit of the same points, printed, rounds the
+/// jump off with a short piece.)
+#[test]
+fn a_g1_fit_keeps_a_curvature_jump() {
+    use lac::Continuity;
+    let a = Segment::from_curvatures(Point::ORIGIN, 0.0, [1.0, 1.5], 1.0, 1.0).unwrap();
+    let b = Segment::from_curvatures(
+        a.end_point(),
+        a.theta_at_s(a.arc_length()).unwrap(),
+        [3.0, 2.5],
+        0.8,
+        0.5,
+    )
+    .unwrap();
+    let sigma = 1e-4 * (a.arc_length() + b.arc_length());
+    let mut rng = Rng(41);
+    let (mut points, mut clean) = noisy(&a, 500, sigma, &mut rng);
+    let (more, more_clean) = noisy(&b, 400, sigma, &mut rng);
+    points.extend(more.into_iter().skip(1));
+    clean.extend(more_clean.into_iter().skip(1));
+    let fit_with = |continuity: Continuity| {
+        let options = FitOptions {
+            tolerance: Some(4.0 * sigma),
+            max_segments: 12,
+            continuity,
+            ..FitOptions::default()
+        };
+        Fit::from_points(&points, &options).unwrap()
+    };
+    let g1 = fit_with(Continuity::G1);
+    let g2 = fit_with(Continuity::G2);
+    let d = distance_to_truth(&g1, &clean);
+    let jump = g1
+        .joints()
+        .iter()
+        .map(|j| j.curvature_jump)
+        .fold(0.0, f64::max);
+    eprintln!(
+        "G1: {} segments (G2: {}), largest distance {:.2}σ, to the noise-free curve {:.2}σ, \
+         largest curvature jump {jump:.2}",
+        g1.pieces().len(),
+        g2.pieces().len(),
+        g1.max_distance() / sigma,
+        d / sigma
+    );
+    assert!(g1.max_distance() <= 4.0 * sigma);
+    assert!(
+        d <= 3.0 * sigma,
+        "{:.2}σ from the noise-free curve",
+        d / sigma
+    );
+    assert!(g1.pieces().len() <= 3);
+    assert!(jump > 0.3, "the jump from 1.5 to 3 is kept: {jump}");
+    assert!(g1
+        .joints()
+        .iter()
+        .all(|j| j.gap < 1e-9 && j.tangent_jump < 1e-9));
+}

@@ -614,6 +614,7 @@ mod tests {
             // A ratio of 3e4 at α = 1: 1e-8 off at its flat end while the change per station
             // was measured against a thousandth of the largest curvature there.
             (263.6, 0.00917, 0.837, 1.0),
+            (-3.0097003358782537, -2.0, 1.2, 5.31812856974461),
         ];
         for (ka, kb, len, alpha) in cases {
             let law = Law::new(ka, kb, len, alpha).unwrap();

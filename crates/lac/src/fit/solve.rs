@@ -263,11 +263,14 @@ impl Problem<'_> {
             .collect()
     }
 
-    /// Keep the numbers in range: each α within the range (and between
+    /// Keep the numbers in range: the start's angle within a turn of zero, each α within the range (and between
     /// [`INFLECTION_ALPHA_MIN`] and [`INFLECTION_ALPHA_MAX`] on a piece through zero
     /// curvature, where the range reaches there), lengths positive and at most
     /// [`Problem::longest`].
     fn clamp(&self, x: &mut [f64]) {
+        // The start's tangent angle within a turn of zero: a step that turned it by many
+        // turns (geometrically nothing) would leave its sine and cosine rounded to 1e-3.
+        x[2] -= std::f64::consts::TAU * (x[2] / std::f64::consts::TAU).round();
         let (lo, hi) = self.alpha_range;
         for i in 0..self.layout.n {
             if let Some(j) = self.layout.alpha_slot(i) {
@@ -284,18 +287,99 @@ impl Problem<'_> {
     }
 
     /// Normal equations (JᵀWJ, JᵀWr) over all numbers at `state`, and the sensitivities.
+    ///
+    /// A number of piece j moves every point after piece j rigidly, so that the row of a
+    /// point on piece c, for every number but c's own, is a fixed combination of three of the
+    /// point's features f = (ν_x, ν_y, ν·iX), ν the normal at its foot X: −(u_b·f), u_b summed
+    /// over the pieces before c. The points of each piece are therefore gathered into the
+    /// moments of f and of their own rows (3 + 4 numbers a point), and the equations
+    /// assembled piece by piece: a point costs a few dozen products, not the square of the
+    /// numbers. The points at an open chain's end (a tangential residual too) are added one
+    /// by one ([`Problem::normal_equations_by_point`]).
     fn normal_equations(
         &self,
         state: &State,
     ) -> (Vec<f64>, Vec<f64>, Vec<[Option<Sensitivity>; 4]>) {
         let np = self.layout.len();
+        let n = self.layout.n;
         let chain = &state.chain;
-        let sens: Vec<_> = (0..self.layout.n)
+        let sens: Vec<_> = (0..n)
             .map(|i| chain.sensitivities(&self.layout, &state.x, i))
             .collect();
-        // Each piece's end shift and turn per number.
-        let ends: Vec<Vec<(usize, Complex, f64)>> = sens
-            .iter()
+        let ends = self.end_moves(&sens);
+        let (mut a, mut g) = self.normal_equations_by_point(state, &sens, &ends, true);
+        let mut moments = vec![Moments::default(); n];
+        for (k, c) in state.contacts.iter().enumerate() {
+            if c.at_end {
+                continue;
+            }
+            let w = self.weights[k] * self.irls_weight(c.rn.hypot(c.rt));
+            if w == 0.0 {
+                continue;
+            }
+            let nu = c.tangent.mul_i();
+            let f = [nu.re, nu.im, nu.im * c.point.re - nu.re * c.point.im];
+            let mut own = [0.0; 4];
+            for (q, s) in sens[c.piece].iter().enumerate() {
+                if let Some(s) = s {
+                    let shift = s.shift_at(&chain.pieces[c.piece], c.t);
+                    own[q] = nu.re * shift.re + nu.im * shift.im;
+                }
+            }
+            moments[c.piece].add(w, f, own, c.rn);
+        }
+        // The rigid coefficients u_b of every number for the points of the piece at hand:
+        // the start's pose first, then each piece's end moves as the chain is walked.
+        let mut u = vec![[0.0f64; 3]; np];
+        let start = chain.start;
+        u[0] = [1.0, 0.0, 0.0];
+        u[1] = [0.0, 1.0, 0.0];
+        u[2] = [start.im, -start.re, 1.0];
+        let mut moving: Vec<usize> = vec![0, 1, 2];
+        let dot = |x: [f64; 3], y: [f64; 3]| x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+        for (c, m) in moments.iter().enumerate() {
+            if m.points > 0 {
+                for &p in &moving {
+                    let uf = [dot(u[p], m.ff[0]), dot(u[p], m.ff[1]), dot(u[p], m.ff[2])];
+                    g[p] -= dot(u[p], m.fr);
+                    for &q in &moving {
+                        a[p * np + q] += dot(uf, u[q]);
+                    }
+                }
+                let slots = self.layout.slots(c);
+                for q in 0..4 {
+                    let (Some(bq), Some(_)) = (slots[q], &sens[c][q]) else {
+                        continue;
+                    };
+                    g[bq] -= m.or[q];
+                    for &p in &moving {
+                        let v = dot(u[p], [m.fo[0][q], m.fo[1][q], m.fo[2][q]]);
+                        a[p * np + bq] += v;
+                        a[bq * np + p] += v;
+                    }
+                    for r in 0..4 {
+                        if let (Some(br), Some(_)) = (slots[r], &sens[c][r]) {
+                            a[bq * np + br] += m.oo[q][r];
+                        }
+                    }
+                }
+            }
+            let (e, _) = chain.pieces[c].end();
+            for &(b, shift, turn) in &ends[c] {
+                u[b][0] += shift.re + turn * e.im;
+                u[b][1] += shift.im - turn * e.re;
+                u[b][2] += turn;
+                if !moving.contains(&b) {
+                    moving.push(b);
+                }
+            }
+        }
+        (a, g, sens)
+    }
+
+    /// Each piece's end shift and turn per number.
+    fn end_moves(&self, sens: &[[Option<Sensitivity>; 4]]) -> Vec<Vec<(usize, Complex, f64)>> {
+        sens.iter()
             .enumerate()
             .map(|(j, s)| {
                 self.layout
@@ -308,13 +392,29 @@ impl Problem<'_> {
                     })
                     .collect()
             })
-            .collect();
+            .collect()
+    }
+
+    /// The normal equations point by point (each point's row over every number): for the
+    /// points at an open chain's end, or (`only_ends` false) for all, as a reference.
+    fn normal_equations_by_point(
+        &self,
+        state: &State,
+        sens: &[[Option<Sensitivity>; 4]],
+        ends: &[Vec<(usize, Complex, f64)>],
+        only_ends: bool,
+    ) -> (Vec<f64>, Vec<f64>) {
+        let np = self.layout.len();
+        let chain = &state.chain;
         let mut a = vec![0.0; np * np];
         let mut g = vec![0.0; np];
         let mut dn = vec![0.0; np];
         let mut dt = vec![0.0; np];
         let mut touched: Vec<usize> = Vec::with_capacity(np);
         for (k, c) in state.contacts.iter().enumerate() {
+            if only_ends && !c.at_end {
+                continue;
+            }
             let w = self.weights[k] * self.irls_weight(c.rn.hypot(c.rt));
             if w == 0.0 {
                 continue;
@@ -366,7 +466,7 @@ impl Problem<'_> {
                 dt[p] = 0.0;
             }
         }
-        (a, g, sens)
+        (a, g)
     }
 
     /// The share of the cost below which a step's foretold decrease ends the descent: the
@@ -520,6 +620,41 @@ impl Problem<'_> {
     }
 }
 
+/// The moments of a piece's inner points: their features f (see
+/// [`Problem::normal_equations`]), their own rows o and residuals r, weighted.
+#[derive(Clone, Copy, Debug, Default)]
+struct Moments {
+    points: usize,
+    ff: [[f64; 3]; 3],
+    fo: [[f64; 4]; 3],
+    oo: [[f64; 4]; 4],
+    fr: [f64; 3],
+    or: [f64; 4],
+}
+
+impl Moments {
+    fn add(&mut self, w: f64, f: [f64; 3], o: [f64; 4], r: f64) {
+        self.points += 1;
+        for (i, &fi) in f.iter().enumerate() {
+            let wf = w * fi;
+            for (cell, &fj) in self.ff[i].iter_mut().zip(&f) {
+                *cell += wf * fj;
+            }
+            for (cell, &oj) in self.fo[i].iter_mut().zip(&o) {
+                *cell += wf * oj;
+            }
+            self.fr[i] += wf * r;
+        }
+        for (i, &oi) in o.iter().enumerate() {
+            let wo = w * oi;
+            for (cell, &oj) in self.oo[i].iter_mut().zip(&o) {
+                *cell += wo * oj;
+            }
+            self.or[i] += wo * r;
+        }
+    }
+}
+
 /// Solve `m x = rhs` (n × n, row-major) by Gaussian elimination with partial pivoting;
 /// `None` when singular.
 fn solve_dense(m: &mut [f64], rhs: &mut [f64], n: usize) -> Option<Vec<f64>> {
@@ -587,6 +722,60 @@ mod tests {
                 p + t.mul_i().scale(off)
             })
             .collect()
+    }
+
+    /// The normal equations gathered piece by piece are those summed point by point, for
+    /// open, closed and G1 chains of one to four pieces.
+    #[test]
+    fn gathered_normal_equations_are_the_summed_ones() {
+        let data = data();
+        let weights: Vec<f64> = (0..data.len()).map(|k| 0.5 + (k % 3) as f64).collect();
+        let pieces: [(f64, f64, f64, f64); 4] = [
+            (1.1, 1.6, 0.3, 0.5),
+            (1.6, 2.2, 0.3, -1.0),
+            (2.2, 2.8, 0.3, 2.0),
+            (2.8, 2.4, 0.2, 0.0),
+        ];
+        for (n, continuity, closed, alpha) in [
+            (1, Continuity::G2, false, AlphaMode::Each),
+            (3, Continuity::G2, false, AlphaMode::Each),
+            (4, Continuity::G1, false, AlphaMode::Shared),
+            (2, Continuity::G2, true, AlphaMode::Fixed(0.5)),
+        ] {
+            let layout = Layout {
+                n,
+                continuity,
+                alpha,
+                closed,
+                coarse: false,
+            };
+            let problem = Problem {
+                layout,
+                data: &data,
+                weights: &weights,
+                loss: Loss::Squares,
+                alpha_range: (-5.0, 10.0),
+                longest: 10.0,
+                constraints: Constraints::default(),
+            };
+            let x = layout.pack((Complex::new(0.01, -0.02), 0.05), &pieces[..n]);
+            let feet: Vec<f64> = (0..data.len()).map(|k| k as f64 / 200.0).collect();
+            let state = problem.state(x, &feet).unwrap();
+            let (a, g, sens) = problem.normal_equations(&state);
+            let ends = problem.end_moves(&sens);
+            let (a0, g0) = problem.normal_equations_by_point(&state, &sens, &ends, false);
+            let scale = a0.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            let worst = a
+                .iter()
+                .zip(&a0)
+                .chain(g.iter().zip(&g0))
+                .map(|(x, y)| (x - y).abs())
+                .fold(0.0f64, f64::max);
+            assert!(
+                worst <= 1e-12 * scale,
+                "{n} pieces, {continuity:?}, closed {closed}: {worst:e} of {scale:e}"
+            );
+        }
     }
 
     /// The normal equations' gradient Jᵀr is half the cost's gradient, number by number,

@@ -726,6 +726,19 @@ mod tests {
             .collect()
     }
 
+    /// Least squares over `data`, α within −5 … 10, nothing held.
+    fn least_squares<'a>(layout: Layout, data: &'a [Complex], weights: &'a [f64]) -> Problem<'a> {
+        Problem {
+            layout,
+            data,
+            weights,
+            loss: Loss::Squares,
+            alpha_range: (-5.0, 10.0),
+            longest: 10.0,
+            constraints: Constraints::default(),
+        }
+    }
+
     /// The normal equations gathered piece by piece are those summed point by point, for
     /// open, closed and G1 chains of one to four pieces.
     #[test]
@@ -751,15 +764,7 @@ mod tests {
                 closed,
                 coarse: false,
             };
-            let problem = Problem {
-                layout,
-                data: &data,
-                weights: &weights,
-                loss: Loss::Squares,
-                alpha_range: (-5.0, 10.0),
-                longest: 10.0,
-                constraints: Constraints::default(),
-            };
+            let problem = least_squares(layout, &data, &weights);
             let x = layout.pack((Complex::new(0.01, -0.02), 0.05), &pieces[..n]);
             let feet: Vec<f64> = (0..data.len()).map(|k| k as f64 / 200.0).collect();
             let state = problem.state(x, &feet).unwrap();
@@ -805,15 +810,7 @@ mod tests {
                 closed: false,
                 coarse: false,
             };
-            let problem = Problem {
-                layout,
-                data: &data,
-                weights: &weights,
-                loss: Loss::Squares,
-                alpha_range: (-5.0, 10.0),
-                longest: 10.0,
-                constraints: Constraints::default(),
-            };
+            let problem = least_squares(layout, &data, &weights);
             let x = layout.pack((Complex::new(0.01, -0.02), 0.05), pieces);
             let feet: Vec<f64> = (0..data.len()).map(|k| k as f64 / 200.0).collect();
             let state = problem.state(x.clone(), &feet).unwrap();

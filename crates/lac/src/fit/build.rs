@@ -109,10 +109,11 @@ impl Input {
                 what: "extent of the points",
             });
         }
-        // A segment's own arithmetic squares lengths: beyond 1e150 it overflows.
+        // A segment's own arithmetic squares lengths: points more than 1e150 apart or from
+        // the origin would overflow it.
         if half > LARGEST_COORDINATE || center.x.abs().max(center.y.abs()) > LARGEST_COORDINATE {
             return Err(Error::Unrepresentable {
-                what: "fit of points more than 1e150 apart or from the origin",
+                what: "extent of the points",
             });
         }
         let data: Vec<Complex> = points

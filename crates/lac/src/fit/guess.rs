@@ -10,7 +10,7 @@
 use crate::foundation::numeric::Complex;
 
 use super::law::{inflects_with, Law};
-use super::model::{every, AlphaMode};
+use super::model::{every, spread, AlphaMode};
 
 /// The data's smoothed profiles along their chord length.
 #[derive(Clone, Debug)]
@@ -51,16 +51,7 @@ impl Profile {
         let indices = every(&(0..n).collect::<Vec<_>>(), k);
         let thin: Vec<Complex> = indices.iter().map(|&i| data[i]).collect();
         let p = Profile::of_all(&thin, closed);
-        let spread = |values: &[f64]| -> Vec<f64> {
-            let mut out = Vec::with_capacity(n);
-            for (w, v) in indices.windows(2).zip(values.windows(2)) {
-                for i in w[0]..w[1] {
-                    out.push(v[0] + (v[1] - v[0]) * (i - w[0]) as f64 / (w[1] - w[0]) as f64);
-                }
-            }
-            out.push(values[values.len() - 1]);
-            out
-        };
+        let spread = |values: &[f64]| spread(&indices, values);
         Profile {
             s: spread(&p.s),
             total: p.total,

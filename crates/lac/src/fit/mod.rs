@@ -689,8 +689,6 @@ struct Sample {
     indices: Vec<usize>,
     data: Vec<Complex>,
     weights: Vec<f64>,
-    /// How many points there are in all.
-    all: usize,
 }
 
 impl Sample {
@@ -702,7 +700,6 @@ impl Sample {
             data: indices.iter().map(|&i| data[i]).collect(),
             weights: indices.iter().map(|&i| weights[i]).collect(),
             indices,
-            all: data.len(),
         }
     }
 
@@ -755,15 +752,7 @@ impl Sample {
     /// Feet for every point from these points' feet, by linear interpolation in the
     /// points' order.
     fn spread(&self, feet: &[f64]) -> Vec<f64> {
-        let mut out = Vec::with_capacity(self.all);
-        for (w, f) in self.indices.windows(2).zip(feet.windows(2)) {
-            let (ia, ib) = (w[0], w[1]);
-            for i in ia..ib {
-                out.push(f[0] + (f[1] - f[0]) * (i - ia) as f64 / (ib - ia) as f64);
-            }
-        }
-        out.push(feet[feet.len() - 1]);
-        out
+        model::spread(&self.indices, feet)
     }
 }
 

@@ -170,6 +170,19 @@ pub(super) fn every<T: Copy>(items: &[T], k: usize) -> Vec<T> {
     out
 }
 
+/// Values at every index from `values` at the increasing `indices` (the first 0, the last
+/// the last index), by linear interpolation in the index: the inverse of [`every`].
+pub(super) fn spread(indices: &[usize], values: &[f64]) -> Vec<f64> {
+    let mut out = Vec::with_capacity(indices.last().map_or(0, |i| i + 1));
+    for (w, v) in indices.windows(2).zip(values.windows(2)) {
+        for i in w[0]..w[1] {
+            out.push(v[0] + (v[1] - v[0]) * (i - w[0]) as f64 / (w[1] - w[0]) as f64);
+        }
+    }
+    out.extend(values.last());
+    out
+}
+
 /// One piece tabulated at stations t_0 = 0 < t_1 < … < t_m = 1, placed so that each
 /// interval turns by at most [`STATION_TURN`] and the curvature changes across it by at most
 /// [`STATION_CHANGE`] of itself (a log-aesthetic piece's curvature can change fastest near

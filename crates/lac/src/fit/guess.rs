@@ -136,11 +136,14 @@ impl Profile {
                 raw[j.clamp(0, count - 1) as usize]
             }
         };
-        // At each point, a quadratic in arc length fitted to the 2w + 1 nearest raw angles
+        // At every few points (a tenth of the window apart, the rest interpolated between
+        // them), a quadratic in arc length fitted to the 2w + 1 nearest raw angles
         // (one-sided near an open end, where it extrapolates): its value and slope.
-        let mut theta = Vec::with_capacity(n);
-        let mut kappa = Vec::with_capacity(n);
-        for k in 0..n as isize {
+        let indices = every(&(0..n).collect::<Vec<_>>(), (w / 10).max(1));
+        let mut theta = Vec::with_capacity(indices.len());
+        let mut kappa = Vec::with_capacity(indices.len());
+        for &k in &indices {
+            let k = k as isize;
             let centre = k - lo;
             let (a, b) = if closed {
                 (centre - w as isize, centre + w as isize)
@@ -171,8 +174,8 @@ impl Profile {
         Profile {
             s,
             total,
-            theta,
-            kappa,
+            theta: spread(&indices, &theta),
+            kappa: spread(&indices, &kappa),
             closed_turn,
             window: w,
         }

@@ -131,22 +131,33 @@ impl Law {
         }
     }
 
-    /// dκ/dt at the share `t`, where the curvature is `kappa`.
+    /// The curvature and dκ/dt at the share `t`, with one logarithm and one exponential
+    /// (what the stations are placed by, at every station of every table).
     #[inline]
-    pub(super) fn slope(&self, t: f64, kappa: f64) -> f64 {
+    pub(super) fn curvature(&self, t: f64) -> (f64, f64) {
         match self.form {
             Form::Ratio { ln_r, x, e } => {
-                // d ln κ/dt = ln r · e / (x (1 + t e)), ln r at x = 0.
-                let d = if x != 0.0 {
-                    ln_r * (e / x) / ln_share(t, x, e).exp()
-                } else {
-                    ln_r
-                };
-                kappa * d
+                if x == 0.0 {
+                    let kappa = self.ka * (t * ln_r).exp();
+                    return (kappa, kappa * ln_r);
+                }
+                // κ = κa e^Y with Y = ln r · ln(1 + te)/x, so d ln κ/dt = ln r · e/(x (1 +
+                // te)); the share 1 + te itself where e ≥ −0.5 (no cancellation), else
+                // from its logarithm.
+                let y = ln_share(t, x, e);
+                let kappa = self.ka * (ln_r * (y / x)).exp();
+                let share = if e < -0.5 { y.exp() } else { 1.0 + t * e };
+                (kappa, kappa * ln_r * (e / x) / share)
             }
             Form::Power { qa, dq, p } => {
                 let q = qa + dq * t;
-                p * q.abs().powf(p - 1.0) * dq
+                let size = q.abs().powf(p);
+                let slope = if q != 0.0 {
+                    p * (size / q.abs()) * dq
+                } else {
+                    p * q.abs().powf(p - 1.0) * dq
+                };
+                (q.signum() * size, slope)
             }
         }
     }

@@ -414,12 +414,12 @@ impl Fit {
                 continue;
             }
             // The points beyond the tolerance join the search, which would not see them
-            // otherwise (at most [`SEARCH_POINTS`] of them, evenly spread, and the worst),
-            // and the piece at the worst is split.
+            // otherwise (at most [`JOINING`] of them a round, evenly spread, and the
+            // worst), and the piece at the worst is split.
             let beyond: Vec<usize> = (0..input.data.len())
                 .filter(|&i| full.distances[i] > tol)
                 .collect();
-            let step = beyond.len().div_ceil(SEARCH_POINTS).max(1);
+            let step = beyond.len().div_ceil(JOINING).max(1);
             let joining = beyond.iter().step_by(step).copied().chain([worst]);
             if sample.add(joining, &input.data, &input.weights) {
                 state = sample
@@ -464,7 +464,7 @@ impl Fit {
                     .filter(|full| full.distances.iter().all(|d| *d <= tol))
             };
             let search = |n: usize| sample.problem(problem(layout_of(n)));
-            if let Some((merged, m)) = merge(&search, &within, state, n) {
+            if let Some((merged, m)) = merge(&search, &within, tol, state, n) {
                 if let Ok(fit) = finish(polished(merged, m), m) {
                     return Ok(fit);
                 }
@@ -679,6 +679,17 @@ const POLISH_POINTS: usize = 20_000;
 /// About how many points the search for a path's segments looks at.
 const SEARCH_POINTS: usize = 200;
 
+/// The most points beyond the tolerance that join the search in one round: one piece is
+/// split a round, and what the rest miss is seen again in the next.
+const JOINING: usize = 50;
+
+/// Steps of a merge's descent after which a chain farther than [`MERGE_HOPELESS`] times the
+/// tolerance from a searched point is given up.
+const MERGE_GLANCE: usize = 12;
+
+/// See [`MERGE_GLANCE`].
+const MERGE_HOPELESS: f64 = 2.0;
+
 /// A searched chain this close to the tolerance (times it) is polished on every point
 /// before it is split.
 const POLISH_NEAR: f64 = 1.5;
@@ -764,6 +775,7 @@ impl Sample {
 fn merge<'a>(
     problem: &dyn Fn(usize) -> Problem<'a>,
     within: &dyn Fn(&State, usize) -> Option<State>,
+    tolerance: f64,
     mut state: State,
     mut n: usize,
 ) -> Option<(State, usize)> {
@@ -789,6 +801,16 @@ fn merge<'a>(
             let Some(trial) = fewer.state(fewer.layout.pack(start, &pieces), &state.feet) else {
                 continue;
             };
+            // A few steps first: a merge whose chain is still far beyond the tolerance
+            // then is given up without the whole descent.
+            let trial = fewer.minimize(trial, MERGE_GLANCE);
+            if trial
+                .distances
+                .iter()
+                .any(|d| *d > MERGE_HOPELESS * tolerance)
+            {
+                continue;
+            }
             let trial = fewer.minimize(trial, 100);
             if let Some(full) = within(&trial, n - 1) {
                 state = trial;

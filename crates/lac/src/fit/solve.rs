@@ -1,7 +1,7 @@
 //! Orthogonal-distance least squares over a chain's numbers: Levenberg–Marquardt on the
 //! points' distances to the chain, each point's foot (nearest point of the chain) found
 //! again at every evaluation, with equality constraints (a closed chain's end on its start,
-//! a pinned end) held by the KKT system of each step.
+//! a pinned end) moving by the KKT system of each step.
 //!
 //! A point's residual is its distance along the chain's normal at its foot, whose
 //! derivative in any number is the normal component of how the foot moves (the foot's own
@@ -137,6 +137,16 @@ fn contact(chain: &Chain, d: Complex, s: &mut f64, hint: &mut usize, closed: boo
     }
 }
 
+impl Contact {
+    /// The distance of the point to its foot. (The problem's units are the points' extent:
+    /// the squares neither overflow nor lose a distance that matters by underflowing, and
+    /// hypot's care is not needed where every point of every evaluation calls this.)
+    #[inline]
+    fn distance(&self) -> f64 {
+        (self.rn * self.rn + self.rt * self.rt).sqrt()
+    }
+}
+
 impl Problem<'_> {
     fn loss(&self, r: f64) -> f64 {
         match self.loss {
@@ -170,7 +180,7 @@ impl Problem<'_> {
         let mut hint = 0;
         for (k, &d) in self.data.iter().enumerate() {
             let c = contact(&chain, d, &mut feet[k], &mut hint, closed);
-            let r = c.rn.hypot(c.rt);
+            let r = c.distance();
             distances.push(r);
             contacts.push(c);
             cost += self.weights[k] * self.loss(r);
@@ -263,27 +273,50 @@ impl Problem<'_> {
             .collect()
     }
 
-    /// Keep the numbers in range: the start's angle within a turn of zero, each α within the range (and between
-    /// [`INFLECTION_ALPHA_MIN`] and [`INFLECTION_ALPHA_MAX`] on a piece through zero
-    /// curvature, where the range reaches there), lengths positive and at most
-    /// [`Problem::longest`].
+    /// The range of the number at index `j` of `x`, where it has one: each α within the
+    /// range (and between [`INFLECTION_ALPHA_MIN`] and [`INFLECTION_ALPHA_MAX`] on a piece
+    /// through zero curvature, where the range reaches there), each ln length at most
+    /// ln [`Problem::longest`].
+    fn bounds(&self, x: &[f64], j: usize) -> Option<(f64, f64)> {
+        let mut range: Option<(f64, f64)> = None;
+        for i in 0..self.layout.n {
+            if self.layout.length_slot(i) == j {
+                return Some((-30.0, self.longest.ln()));
+            }
+            if self.layout.alpha_slot(i) != Some(j) {
+                continue;
+            }
+            let (lo, hi) = range.unwrap_or(self.alpha_range);
+            let (ka, kb, _, _) = self.layout.piece(x, i);
+            let inflects = !(ka != 0.0 && kb != 0.0 && ka.signum() == kb.signum());
+            range = Some(
+                if inflects && hi >= INFLECTION_ALPHA_MIN && lo <= INFLECTION_ALPHA_MAX {
+                    (INFLECTION_ALPHA_MIN.max(lo), INFLECTION_ALPHA_MAX.min(hi))
+                } else {
+                    (lo, hi)
+                },
+            );
+        }
+        range
+    }
+
+    /// Keep the numbers in range (see [`Problem::bounds`]), and the start's angle within a
+    /// turn of zero.
     fn clamp(&self, x: &mut [f64]) {
         // The start's tangent angle within a turn of zero: a step that turned it by many
         // turns (geometrically nothing) would leave its sine and cosine rounded to 1e-3.
         x[2] -= std::f64::consts::TAU * (x[2] / std::f64::consts::TAU).round();
-        let (lo, hi) = self.alpha_range;
-        for i in 0..self.layout.n {
-            if let Some(j) = self.layout.alpha_slot(i) {
+        for j in 3..x.len() {
+            if let Some((lo, hi)) = self.bounds(x, j) {
                 x[j] = x[j].clamp(lo, hi);
-                let (ka, kb, _, _) = self.layout.piece(x, i);
-                let inflects = !(ka != 0.0 && kb != 0.0 && ka.signum() == kb.signum());
-                if inflects && hi >= INFLECTION_ALPHA_MIN && lo <= INFLECTION_ALPHA_MAX {
-                    x[j] = x[j].clamp(INFLECTION_ALPHA_MIN.max(lo), INFLECTION_ALPHA_MAX.min(hi));
-                }
             }
-            let l = self.layout.length_slot(i);
-            x[l] = x[l].clamp(-30.0, self.longest.ln());
         }
+    }
+
+    /// Whether a step `d` of the number at index `j` would leave its range from its bound.
+    fn leaves_range(&self, x: &[f64], j: usize, d: f64) -> bool {
+        self.bounds(x, j)
+            .is_some_and(|(lo, hi)| (x[j] <= lo && d < 0.0) || (x[j] >= hi && d > 0.0))
     }
 
     /// Normal equations (JᵀWJ, JᵀWr) over all numbers at `state`, and the sensitivities.
@@ -313,16 +346,18 @@ impl Problem<'_> {
             if c.at_end {
                 continue;
             }
-            let w = self.weights[k] * self.irls_weight(c.rn.hypot(c.rt));
+            let w = self.weights[k] * self.irls_weight(c.distance());
             if w == 0.0 {
                 continue;
             }
             let nu = c.tangent.mul_i();
             let f = [nu.re, nu.im, nu.im * c.point.re - nu.re * c.point.im];
             let mut own = [0.0; 4];
+            let table = &chain.pieces[c.piece];
+            let place = table.locate(c.t);
             for (q, s) in sens[c.piece].iter().enumerate() {
                 if let Some(s) = s {
-                    let shift = s.shift_at(&chain.pieces[c.piece], c.t);
+                    let shift = s.shift_at(table, place);
                     own[q] = nu.re * shift.re + nu.im * shift.im;
                 }
             }
@@ -415,7 +450,7 @@ impl Problem<'_> {
             if only_ends && !c.at_end {
                 continue;
             }
-            let w = self.weights[k] * self.irls_weight(c.rn.hypot(c.rt));
+            let w = self.weights[k] * self.irls_weight(c.distance());
             if w == 0.0 {
                 continue;
             }
@@ -440,14 +475,11 @@ impl Problem<'_> {
                     add(b, dp, &mut dn, &mut dt);
                 }
             }
+            let table = &chain.pieces[c.piece];
+            let place = table.locate(c.t);
             for (slot, s) in self.layout.slots(c.piece).iter().zip(&sens[c.piece]) {
                 if let (Some(b), Some(s)) = (slot, s) {
-                    add(
-                        *b,
-                        s.shift_at(&chain.pieces[c.piece], c.t),
-                        &mut dn,
-                        &mut dt,
-                    );
+                    add(*b, s.shift_at(table, place), &mut dn, &mut dt);
                 }
             }
             for (ii, &p) in touched.iter().enumerate() {
@@ -511,9 +543,9 @@ impl Problem<'_> {
     /// Levenberg–Marquardt from `state`, the damping starting at `lambda`.
     fn descend(&self, mut state: State, iterations: usize, mut lambda: f64) -> State {
         let free = self.free();
-        let nf = free.len();
         let np = self.layout.len();
         let mut merit_weight = 0.0;
+        let mut raise = 2.0;
         // The costs after the last accepted steps, for the crawl test.
         let mut recent: Vec<f64> = Vec::with_capacity(iterations);
         for _ in 0..iterations {
@@ -532,12 +564,14 @@ impl Problem<'_> {
             let violation = |c: &[f64]| c.iter().map(|v| v.abs()).sum::<f64>();
             let merit = |s: &State, c: &[f64], mw: f64| s.cost + mw * violation(c);
             let mut improved = false;
-            while lambda < 1e12 {
+            // The damped KKT system over the numbers `moving` (the free ones off their bounds).
+            let solve = |moving: &[usize], lambda: f64| -> Option<Vec<f64>> {
+                let nf = moving.len();
                 let n = nf + nc;
                 let mut m = vec![0.0; n * n];
                 let mut rhs = vec![0.0; n];
-                for (ii, &p) in free.iter().enumerate() {
-                    for (jj, &q) in free.iter().enumerate() {
+                for (ii, &p) in moving.iter().enumerate() {
+                    for (jj, &q) in moving.iter().enumerate() {
                         m[ii * n + jj] = a[p * np + q];
                     }
                     let diag = a[p * np + p];
@@ -553,10 +587,33 @@ impl Problem<'_> {
                 }
                 // g was Jᵀr with r = data − foot and J = ∂r/∂x: the step solves
                 // (JᵀJ + λD) δ = −Jᵀr.
-                let Some(sol) = solve_dense(&mut m, &mut rhs, n) else {
+                solve_dense(&mut m, &mut rhs, n)
+            };
+            while lambda < 1e12 {
+                // A number on its bound that the step would take beyond it is moving there
+                // (the step of the rest solved again): clamped afterwards, the step would
+                // not be the one the model foretold, and the descent would crawl along
+                // the bound.
+                let mut moving = free.clone();
+                let sol = loop {
+                    let Some(sol) = solve(&moving, lambda) else {
+                        break None;
+                    };
+                    let before = moving.len();
+                    let mut ii = 0;
+                    moving.retain(|&p| {
+                        ii += 1;
+                        !self.leaves_range(&state.x, p, sol[ii - 1])
+                    });
+                    if moving.len() == before {
+                        break Some(sol);
+                    }
+                };
+                let Some(sol) = sol else {
                     lambda *= 10.0;
                     continue;
                 };
+                let nf = moving.len();
                 if nc > 0 {
                     let mu = sol[nf..].iter().fold(0.0f64, |m, v| m.max(v.abs()));
                     merit_weight = f64::max(merit_weight, 2.0 * mu + 1e-12);
@@ -565,9 +622,9 @@ impl Problem<'_> {
                 // it is below rounding of the cost and the constraints hold, this is the
                 // minimum (a trial would only be rejected, and λ raised, again and again).
                 let mut predicted = 0.0;
-                for (ii, &p) in free.iter().enumerate() {
+                for (ii, &p) in moving.iter().enumerate() {
                     let mut ad = 0.0;
-                    for (jj, &q) in free.iter().enumerate() {
+                    for (jj, &q) in moving.iter().enumerate() {
                         ad += a[p * np + q] * sol[jj];
                     }
                     predicted -= sol[ii] * (2.0 * g[p] + ad);
@@ -576,7 +633,7 @@ impl Problem<'_> {
                     return state;
                 }
                 let mut x = state.x.clone();
-                for (ii, &p) in free.iter().enumerate() {
+                for (ii, &p) in moving.iter().enumerate() {
                     x[p] += sol[ii];
                 }
                 self.clamp(&mut x);
@@ -587,22 +644,21 @@ impl Problem<'_> {
                     if after < before {
                         let gain = (before - after) / before.max(1e-300);
                         let step: f64 = sol[..nf].iter().map(|v| v * v).sum::<f64>().sqrt();
-                        // The model's worth (the decrease seen over the decrease foretold)
-                        // sets the damping: the valley along α is long and flat, and a
-                        // model borne out step after step has its damping lifted fast.
+                        // The model's worth ρ (the decrease seen over the decrease foretold)
+                        // sets the damping, smoothly (Nielsen's rule): λ times
+                        // 1 − (2ρ − 1)³, down to a tenth for a model borne out (the valley
+                        // along α is long and flat), up to twice for one barely so; each
+                        // refusal in a row raises it twice as much as the one before. (A
+                        // stepwise rule, λ/10 or ×4, refused every other step in the
+                        // curved valleys of paths with a slope per piece.)
                         let worth = if nc == 0 && predicted > 0.0 {
                             (before - after) / predicted
                         } else {
                             0.5
                         };
-                        lambda = if worth > 0.75 {
-                            lambda / 10.0
-                        } else if worth > 0.25 {
-                            lambda / 3.0
-                        } else {
-                            lambda * 2.0
-                        }
-                        .max(1e-12);
+                        let factor = (1.0 - (2.0 * worth - 1.0).powi(3)).max(0.1);
+                        lambda = (lambda * factor).max(1e-12);
+                        raise = 2.0;
                         state = trial;
                         recent.push(state.cost);
                         improved = true;
@@ -612,7 +668,13 @@ impl Problem<'_> {
                         break;
                     }
                 }
-                lambda *= 4.0;
+                // A refused step whose foretold gain is this small: the model and the cost
+                // part at the floor of what either can tell.
+                if predicted <= 100.0 * self.settled() * state.cost && violation(&c) <= 1e-14 {
+                    return state;
+                }
+                lambda *= raise;
+                raise *= 2.0;
             }
             if !improved {
                 break;
@@ -726,7 +788,7 @@ mod tests {
             .collect()
     }
 
-    /// Least squares over `data`, α within −5 … 10, nothing held.
+    /// Least squares over `data`, α within −5 … 10, nothing moving.
     fn least_squares<'a>(layout: Layout, data: &'a [Complex], weights: &'a [f64]) -> Problem<'a> {
         Problem {
             layout,

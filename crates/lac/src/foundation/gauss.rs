@@ -1,7 +1,10 @@
-//! The 4-, 8- and 16-point Gauss–Legendre rules on [−1, 1].
+//! The 2-, 4-, 8- and 16-point Gauss–Legendre rules on [−1, 1].
 //!
 //! Generated at 40 digits by `tools/reference/gauss_table.py N`; only the non-negative
 //! half of each symmetric rule is stored, as `(node, weight)`.
+
+/// Half of the 2-point Gauss–Legendre rule: `(x_i, w_i)` with `x_i > 0`.
+pub(crate) const GAUSS_2: [(f64, f64); 1] = [(5.773_502_691_896_257e-1, 1.0)];
 
 /// Half of the 4-point Gauss–Legendre rule: `(x_i, w_i)` with `x_i > 0`.
 pub(crate) const GAUSS_4: [(f64, f64); 2] = [

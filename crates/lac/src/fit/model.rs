@@ -197,6 +197,29 @@ pub(super) struct Table {
     pub(super) kappas: Vec<f64>,
     /// Unit tangents at the stations.
     pub(super) tangents: Vec<Complex>,
+    /// The quintic Hermite interpolant of each station interval in powers of u ∈ [0, 1]:
+    /// P(u) = P_j + c₁u + c₂u² + … + c₅u⁵ (see [`Table::frame`]).
+    pub(super) coefficients: Vec<[Complex; 5]>,
+}
+
+/// The power coefficients c₁…c₅ of the quintic Hermite interpolant on u ∈ [0, 1] from
+/// P(0) = `a`, P(1) = `b`, P'(0) = `c`, P'(1) = `d`, P''(0) = `e`, P''(1) = `f` (derivatives
+/// in u): the Hermite basis functions expanded, with b − a in place of each ±(b, a) pair.
+fn quintic(a: Complex, b: Complex, c: Complex, d: Complex, e: Complex, f: Complex) -> [Complex; 5] {
+    let delta = b - a;
+    let mix = |k: [f64; 5]| {
+        Complex::new(
+            k[0] * delta.re + k[1] * c.re + k[2] * d.re + k[3] * e.re + k[4] * f.re,
+            k[0] * delta.im + k[1] * c.im + k[2] * d.im + k[3] * e.im + k[4] * f.im,
+        )
+    };
+    [
+        c,
+        e.scale(0.5),
+        mix([10.0, -6.0, -4.0, -1.5, 0.5]),
+        mix([-15.0, 8.0, 7.0, 1.5, -1.0]),
+        mix([6.0, -3.0, -3.0, -0.5, 0.5]),
+    ]
 }
 
 /// Largest relative change of curvature across one station interval.
@@ -292,7 +315,21 @@ impl Table {
             p = Complex::new(p.re + k * sum.re, p.im + k * sum.im);
         }
         let ok = p.re.is_finite() && p.im.is_finite() && thetas.iter().all(|t| t.is_finite());
-        let tangents = thetas.iter().map(|&a| Complex::cis(a)).collect();
+        let tangents: Vec<Complex> = thetas.iter().map(|&a| Complex::cis(a)).collect();
+        let coefficients = (0..m)
+            .map(|j| {
+                let h = len * (ts[j + 1] - ts[j]);
+                let (t0, t1) = (tangents[j], tangents[j + 1]);
+                quintic(
+                    points[j],
+                    points[j + 1],
+                    t0.scale(h),
+                    t1.scale(h),
+                    t0.mul_i().scale(h * h * kappas[j]),
+                    t1.mul_i().scale(h * h * kappas[j + 1]),
+                )
+            })
+            .collect();
         ok.then_some(Table {
             law,
             len,
@@ -301,6 +338,7 @@ impl Table {
             thetas,
             kappas,
             tangents,
+            coefficients,
         })
     }
 
@@ -312,9 +350,20 @@ impl Table {
     /// The station interval of the share `t` and the position u ∈ [0, 1] in it.
     #[inline]
     pub(super) fn locate(&self, t: f64) -> (usize, f64) {
+        self.locate_near(t, usize::MAX)
+    }
+
+    /// [`Table::locate`], looking first in the interval `near` (where the last search
+    /// of a nearby share ended).
+    #[inline]
+    fn locate_near(&self, t: f64, near: usize) -> (usize, f64) {
         let m = self.ts.len() - 1;
         let t = t.clamp(0.0, 1.0);
-        let j = self.ts.partition_point(|&v| v <= t).clamp(1, m) - 1;
+        let j = if near < m && self.ts[near] <= t && t <= self.ts[near + 1] {
+            near
+        } else {
+            self.ts.partition_point(|&v| v <= t).clamp(1, m) - 1
+        };
         let width = self.ts[j + 1] - self.ts[j];
         (j, ((t - self.ts[j]) / width).clamp(0.0, 1.0))
     }
@@ -323,7 +372,8 @@ impl Table {
     /// curvature from the law itself).
     #[inline]
     pub(super) fn at(&self, t: f64) -> (Complex, f64, f64) {
-        let (point, _, _) = self.frame(t);
+        let mut anywhere = usize::MAX;
+        let (point, _, _) = self.frame(t, &mut anywhere);
         let (turn, kappa) = self.law.at(t.clamp(0.0, 1.0));
         (point, self.thetas[0] + turn, kappa)
     }
@@ -332,43 +382,29 @@ impl Table {
 impl Table {
     /// Point, unit tangent and (interpolated) curvature at the share `t`: the tangent from
     /// the interpolant's own derivative, so that no transcendental function is evaluated
-    /// (the foot search calls this for every point at every step).
+    /// (the foot search calls this for every point at every step). The search for the
+    /// station interval starts at `station`, and leaves there the one found.
     #[inline]
-    pub(super) fn frame(&self, t: f64) -> (Complex, Complex, f64) {
-        let (j, u) = self.locate(t);
-        let h = self.len * (self.ts[j + 1] - self.ts[j]);
-        let (p0, p1) = (self.points[j], self.points[j + 1]);
+    pub(super) fn frame(&self, t: f64, station: &mut usize) -> (Complex, Complex, f64) {
+        let (j, u) = self.locate_near(t, *station);
+        *station = j;
+        let [c1, c2, c3, c4, c5] = self.coefficients[j];
+        let p0 = self.points[j];
         let (k0, k1) = (self.kappas[j], self.kappas[j + 1]);
-        let (t0, t1) = (self.tangents[j], self.tangents[j + 1]);
-        let (u2, u3) = (u * u, u * u * u);
-        let (u4, u5) = (u3 * u, u3 * u2);
-        let h0 = 1.0 - 10.0 * u3 + 15.0 * u4 - 6.0 * u5;
-        let h1 = u - 6.0 * u3 + 8.0 * u4 - 3.0 * u5;
-        let h2 = 0.5 * (u2 - 3.0 * u3 + 3.0 * u4 - u5);
-        let h3 = 0.5 * (u3 - 2.0 * u4 + u5);
-        let h4 = -4.0 * u3 + 7.0 * u4 - 3.0 * u5;
-        let h5 = 1.0 - h0;
-        let (d0, d1) = (h1 * h, h4 * h);
-        let (e0, e1) = (h2 * h * h * k0, h3 * h * h * k1);
-        let re = h0 * p0.re + h5 * p1.re + d0 * t0.re + d1 * t1.re - e0 * t0.im - e1 * t1.im;
-        let im = h0 * p0.im + h5 * p1.im + d0 * t0.im + d1 * t1.im + e0 * t0.re + e1 * t1.re;
-        // Derivatives of the basis in u.
-        let g0 = -30.0 * u2 + 60.0 * u3 - 30.0 * u4;
-        let g1 = 1.0 - 18.0 * u2 + 32.0 * u3 - 15.0 * u4;
-        let g2 = 0.5 * (2.0 * u - 9.0 * u2 + 12.0 * u3 - 5.0 * u4);
-        let g3 = 0.5 * (3.0 * u2 - 8.0 * u3 + 5.0 * u4);
-        let g4 = -12.0 * u2 + 28.0 * u3 - 15.0 * u4;
-        let (d0, d1) = (g1 * h, g4 * h);
-        let (e0, e1) = (g2 * h * h * k0, g3 * h * h * k1);
-        let dre = g0 * (p0.re - p1.re) + d0 * t0.re + d1 * t1.re - e0 * t0.im - e1 * t1.im;
-        let dim = g0 * (p0.im - p1.im) + d0 * t0.im + d1 * t1.im + e0 * t0.re + e1 * t1.re;
+        // Horner's rule for the point and its derivative in u.
+        let re = p0.re + u * (c1.re + u * (c2.re + u * (c3.re + u * (c4.re + u * c5.re))));
+        let im = p0.im + u * (c1.im + u * (c2.im + u * (c3.im + u * (c4.im + u * c5.im))));
+        let dre =
+            c1.re + u * (2.0 * c2.re + u * (3.0 * c3.re + u * (4.0 * c4.re + u * 5.0 * c5.re)));
+        let dim =
+            c1.im + u * (2.0 * c2.im + u * (3.0 * c3.im + u * (4.0 * c4.im + u * 5.0 * c5.im)));
         // The speed is of the order of the station's length: its square neither overflows
         // nor underflows, and hypot's care is not needed where every foot search calls it.
         let speed = (dre * dre + dim * dim).sqrt();
         let tangent = if speed > 0.0 {
             Complex::new(dre / speed, dim / speed)
         } else {
-            t0
+            self.tangents[j]
         };
         (Complex::new(re, im), tangent, k0 + u * (k1 - k0))
     }
@@ -408,6 +444,14 @@ impl Sensitivity {
     pub(super) fn end(&self) -> (Complex, f64) {
         (*self.points.last().unwrap(), *self.thetas.last().unwrap())
     }
+}
+
+/// Where a search along a chain last ended (a piece, a station interval in it), where the
+/// next search of a nearby arc length starts.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Hint {
+    piece: usize,
+    station: usize,
 }
 
 /// A chain tabulated from a parameter vector.
@@ -491,11 +535,18 @@ impl Chain {
         (i, t.clamp(0.0, 1.0))
     }
 
-    /// Point, unit tangent and curvature at arc length `s` (see [`Table::frame`]).
+    /// Point, unit tangent and curvature at arc length `s` (see [`Table::frame`]), the
+    /// search starting from `hint` and leaving there where it ended.
     #[inline]
-    pub(super) fn frame(&self, s: f64, hint: usize) -> (usize, f64, Complex, Complex, f64) {
-        let (i, t) = self.locate(s, hint);
-        let (p, tangent, kappa) = self.pieces[i].frame(t);
+    pub(super) fn frame(&self, s: f64, hint: &mut Hint) -> (usize, f64, Complex, Complex, f64) {
+        let (i, t) = self.locate(s, hint.piece);
+        if i != hint.piece {
+            *hint = Hint {
+                piece: i,
+                station: usize::MAX,
+            };
+        }
+        let (p, tangent, kappa) = self.pieces[i].frame(t, &mut hint.station);
         (i, t, p, tangent, kappa)
     }
 
@@ -522,8 +573,11 @@ impl Chain {
         let slots = layout.slots(i);
         let (ka, kb, len, alpha) = self.numbers[i];
         // Central differences: α is poorly conditioned against the end curvatures, and a
-        // forward difference's error (≈ h) stalls the solver at distances near 1e-10.
-        let mut moved: [Option<(Law, Law, f64)>; 4] = [None; 4];
+        // forward difference's error (≈ h) stalls the solver at distances near 1e-10. A
+        // coarse table's search, which looks for a valley and not its floor, takes forward
+        // differences (four laws evaluated at each node, not seven).
+        let central = !layout.coarse;
+        let mut moved: [Option<(Law, Option<Law>, f64)>; 4] = [None; 4];
         for k in [0, 1, 3] {
             let Some(j) = slots[k] else { continue };
             let h = 1e-5 * x[j].abs().max(1e-2);
@@ -532,15 +586,18 @@ impl Chain {
                 numbers[k] += step;
                 Law::new(numbers[0], numbers[1], len, numbers[3])
             };
-            if let (Some(up), Some(down)) = (law(h), law(-h)) {
-                moved[k] = Some((up, down, 0.5 / h));
-            }
+            moved[k] = match (law(h), central) {
+                (Some(up), false) => Some((up, None, 1.0 / h)),
+                (Some(up), true) => law(-h).map(|down| (up, Some(down), 0.5 / h)),
+                (None, _) => None,
+            };
         }
         let active: Vec<usize> = (0..4)
             .filter(|&k| slots[k].is_some() && (k == 2 || moved[k].is_some()))
             .collect();
         let turn_of = |k: usize, t: f64, turn: f64| match moved[k] {
-            Some((up, down, inv)) => (up.at(t).0 - down.at(t).0) * inv,
+            Some((up, Some(down), inv)) => (up.at(t).0 - down.at(t).0) * inv,
+            Some((up, None, inv)) => (up.at(t).0 - turn) * inv,
             None => turn,
         };
         let m = table.ts.len() - 1;

@@ -13,7 +13,13 @@
 use crate::foundation::numeric::Complex;
 
 use super::law::{INFLECTION_ALPHA_MAX, INFLECTION_ALPHA_MIN};
-use super::model::{Chain, Layout, Sensitivity};
+use super::model::{Chain, Hint, Layout, Sensitivity};
+
+/// How much the damping's floor (twice the last damping whose step was refused) eases at
+/// each accepted step: a descent lowers its damping towards the one that failed again
+/// slowly, not by tenfold steps that overshoot and are refused four or five times over
+/// (the curved valleys of paths with a slope per piece).
+const FLOOR_DECAY: f64 = 0.7;
 
 /// The loss applied to each distance.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -83,7 +89,7 @@ fn sub(a: Complex, b: Complex) -> Complex {
 }
 
 /// The foot of `d` on the chain near `s` (Newton on (P(s) − d)·T(s) = 0).
-fn contact(chain: &Chain, d: Complex, s: &mut f64, hint: &mut usize, closed: bool) -> Contact {
+fn contact(chain: &Chain, d: Complex, s: &mut f64, hint: &mut Hint, closed: bool) -> Contact {
     let total = chain.length();
     let wrap = |s: f64| {
         if closed {
@@ -93,10 +99,9 @@ fn contact(chain: &Chain, d: Complex, s: &mut f64, hint: &mut usize, closed: boo
         }
     };
     let mut x = wrap(*s);
-    let mut frame = chain.frame(x, *hint);
+    let mut frame = chain.frame(x, hint);
     for _ in 0..12 {
-        let (i, _, p, tangent, kappa) = frame;
-        *hint = i;
+        let (_, _, p, tangent, kappa) = frame;
         let diff = sub(p, d);
         let f = diff.re * tangent.re + diff.im * tangent.im;
         let across = -diff.re * tangent.im + diff.im * tangent.re;
@@ -113,7 +118,7 @@ fn contact(chain: &Chain, d: Complex, s: &mut f64, hint: &mut usize, closed: boo
         let next = wrap(x + step);
         let moved = (next - x).abs();
         x = next;
-        frame = chain.frame(x, *hint);
+        frame = chain.frame(x, hint);
         // Newton's error after a step of size h is about κh²: below 1e-7 of the length the
         // point just found is the foot to rounding.
         if moved <= 1e-7 * total {
@@ -177,7 +182,7 @@ impl Problem<'_> {
         let mut distances = Vec::with_capacity(self.data.len());
         let mut contacts = Vec::with_capacity(self.data.len());
         let mut cost = 0.0;
-        let mut hint = 0;
+        let mut hint = Hint::default();
         for (k, &d) in self.data.iter().enumerate() {
             let c = contact(&chain, d, &mut feet[k], &mut hint, closed);
             let r = c.distance();
@@ -501,13 +506,27 @@ impl Problem<'_> {
         (a, g)
     }
 
-    /// The share of the cost below which a step's foretold decrease ends the descent: the
-    /// floor of rounding, or for coarse tables (see [`Layout::coarse`]) of their accuracy.
+    /// The share of the cost below which a step's foretold decrease ends the descent. For
+    /// coarse tables (see [`Layout::coarse`]), the floor of their accuracy; for fine ones, a
+    /// thousandth of one point's share of the cost (noise of deviation σ on N points costs
+    /// about Nσ², and a change of σ² in the cost moves the numbers by about their standard
+    /// error: a thousandth of it is nothing the data can tell), but no less than 1e-9
+    /// (rounding) nor more than 1e-6.
     fn settled(&self) -> f64 {
         if self.layout.coarse {
             1e-6
         } else {
-            1e-9
+            (1e-3 / self.data.len() as f64).clamp(1e-9, 1e-6)
+        }
+    }
+
+    /// The share of the cost below which a refused step's foretold decrease ends the
+    /// descent: ten times [`Problem::settled`], a hundred for coarse tables.
+    fn refused_settles(&self) -> f64 {
+        if self.layout.coarse {
+            100.0 * self.settled()
+        } else {
+            10.0 * self.settled()
         }
     }
 
@@ -546,6 +565,7 @@ impl Problem<'_> {
         let np = self.layout.len();
         let mut merit_weight = 0.0;
         let mut raise = 2.0;
+        let mut floor: f64 = 0.0;
         // The costs after the last accepted steps, for the crawl test.
         let mut recent: Vec<f64> = Vec::with_capacity(iterations);
         for _ in 0..iterations {
@@ -657,7 +677,8 @@ impl Problem<'_> {
                             0.5
                         };
                         let factor = (1.0 - (2.0 * worth - 1.0).powi(3)).max(0.1);
-                        lambda = (lambda * factor).max(1e-12);
+                        lambda = (lambda * factor).max(floor).max(1e-12);
+                        floor *= FLOOR_DECAY;
                         raise = 2.0;
                         state = trial;
                         recent.push(state.cost);
@@ -670,9 +691,10 @@ impl Problem<'_> {
                 }
                 // A refused step whose foretold gain is this small: the model and the cost
                 // part at the floor of what either can tell.
-                if predicted <= 100.0 * self.settled() * state.cost && violation(&c) <= 1e-14 {
+                if predicted <= self.refused_settles() * state.cost && violation(&c) <= 1e-14 {
                     return state;
                 }
+                floor = floor.max(2.0 * lambda);
                 lambda *= raise;
                 raise *= 2.0;
             }
@@ -781,7 +803,7 @@ mod tests {
         (0..200)
             .map(|k| {
                 let s = 1.2 * k as f64 / 199.0 - 0.1;
-                let (_, _, p, t, _) = chain.frame(s.clamp(0.0, 1.0), 0);
+                let (_, _, p, t, _) = chain.frame(s.clamp(0.0, 1.0), &mut Hint::default());
                 let off = 1e-3 * ((k * 7919) % 13) as f64 / 13.0 - 5e-4;
                 p + t.mul_i().scale(off)
             })

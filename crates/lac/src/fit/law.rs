@@ -124,8 +124,9 @@ impl Law {
                 if dq == 0.0 {
                     return (kappa * self.len * t, kappa);
                 }
-                let lift = |q: f64| q.abs().powf(p + 1.0);
-                let turn = self.len * (lift(q) - lift(qa)) / ((p + 1.0) * dq);
+                // |q|^(p+1) = |κ| |q|: one power a call, not three.
+                let lift = kappa.abs() * q.abs() - self.ka.abs() * qa.abs();
+                let turn = self.len * lift / ((p + 1.0) * dq);
                 (turn, kappa)
             }
         }

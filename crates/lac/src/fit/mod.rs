@@ -288,13 +288,13 @@ impl Fit {
         // and is measured against every point.
         let dense = Sample::new(&input.data, &input.weights, POLISH_POINTS);
         let pin = options.pin_ends && !closed;
-        let polish_every = |full: State, n: usize| -> State {
+        let polish_every = |full: State, n: usize, steps: usize| -> State {
             if dense.indices.len() == input.data.len() {
-                return polish(&problem(layout_of(n)), pin, pins, full);
+                return polish(&problem(layout_of(n)), pin, pins, full, steps);
             }
             let fine = dense.fine(problem(layout_of(n)));
             fine.state(full.x.clone(), &dense.pick(&full.feet))
-                .map(|s| polish(&fine, pin, pins, s))
+                .map(|s| polish(&fine, pin, pins, s, steps))
                 .and_then(|s| measure(&dense, &s, n).ok())
                 .unwrap_or(full)
         };
@@ -386,9 +386,10 @@ impl Fit {
             let mut full = measure(&sample, &state, n)?;
             let mut worst = worst_index(&full.distances);
             if let Some(tol) = tolerance {
-                // Just beyond the tolerance: the polish on every point may bring it within.
+                // Just beyond the tolerance: the polish on every point may bring it within
+                // (a few steps: within, the answer's polish goes on from there).
                 if full.distances[worst] > tol && full.distances[worst] <= POLISH_NEAR * tol {
-                    full = polish_every(full, n);
+                    full = polish_every(full, n, POLISH_PEEK);
                     worst = worst_index(&full.distances);
                 }
             }
@@ -439,7 +440,7 @@ impl Fit {
         };
         // The polish on every point; kept when it stays within the tolerance.
         let polished = |full: State, n: usize| -> State {
-            let fine = polish_every(full.clone(), n);
+            let fine = polish_every(full.clone(), n, POLISH_STEPS);
             match tolerance {
                 Some(tol) if fine.distances.iter().any(|d| *d > tol) => full,
                 _ => fine,
@@ -659,17 +660,21 @@ const POLISH_STEPS: usize = 25;
 /// Most steps of each descent in [`shared_slope_first`] (the search's own descent follows).
 const SHARED_STEPS: usize = 30;
 
-/// A chain fitted to every point with fine tables from `state` (its ends held on the first
-/// and last points when `pin`).
-fn polish(problem: &Problem, pin: bool, pins: Constraints, state: State) -> State {
+/// Most steps of the polish that looks whether a searched chain just beyond the tolerance
+/// comes within it.
+const POLISH_PEEK: usize = 8;
+
+/// A chain fitted to every point with fine tables from `state`, at most `steps` steps (its
+/// ends held on the first and last points when `pin`).
+fn polish(problem: &Problem, pin: bool, pins: Constraints, state: State, steps: usize) -> State {
     if pin {
         let pinned = Problem {
             constraints: pins,
             ..*problem
         };
-        pinned.polish(state, POLISH_STEPS)
+        pinned.polish(state, steps)
     } else {
-        problem.polish(state, POLISH_STEPS)
+        problem.polish(state, steps)
     }
 }
 

@@ -26,7 +26,8 @@ use super::{Fit, FitAlpha, FitJoint, FitLoss, FitOptions, FitPiece, MAX_FIT_SEGM
 const JOINT_LIMIT: f64 = 1e-10;
 
 /// Largest difference between the solver's tabulated chain and the placed segments,
-/// relative to the size of the points: the distances the fit reports are the solver's.
+/// relative to the size of the points (or to the chain's length, where that is larger):
+/// the distances the fit reports are the solver's.
 const MODEL_LIMIT: f64 = 1e-9;
 
 /// The rounding of a joint's curvature, relative to the fit's largest: a segment evaluates
@@ -375,9 +376,11 @@ pub(super) fn build(
     // Far from the origin the caller's coordinates themselves round: their last bits are
     // allowed on top (a fit of points 1e7 from the origin and 1e-4 apart).
     let magnitude = input.center.x.abs().max(input.center.y.abs()) + fit_size;
-    if model_error.is_nan()
-        || model_error > MODEL_LIMIT * fit_size + 64.0 * f64::EPSILON * magnitude
-    {
+    // The tables place a piece's points to a share of its own length (1e-11 of it through
+    // an inflection): a chain far longer than the points' extent (a wandering fit of
+    // scattered points, 900 times as long) is held to that share of its length.
+    let reach = fit_size * chain.length().max(1.0);
+    if model_error.is_nan() || model_error > MODEL_LIMIT * reach + 64.0 * f64::EPSILON * magnitude {
         return Err(Error::NumericalFailure {
             what: "the placed segments of the fit (they differ from the solver's chain)",
         });

@@ -59,8 +59,14 @@ pub(super) struct Law {
 enum Form {
     /// One sign, neither end zero: ln r, x = −α ln r and e = expm1(x).
     Ratio { ln_r: f64, x: f64, e: f64 },
-    /// α < 0 through (or at) zero curvature: q_a, q_b − q_a and p = −1/α.
-    Power { qa: f64, dq: f64, p: f64 },
+    /// α < 0 through (or at) zero curvature: q_a, q_b − q_a, p = −1/α and |q_a|^(p+1)
+    /// (as [`Law::at`] computes |q|^(p+1) = |q|^p |q|, so that the turning at t = 0 is 0).
+    Power {
+        qa: f64,
+        dq: f64,
+        p: f64,
+        lift_a: f64,
+    },
 }
 
 impl Law {
@@ -85,10 +91,12 @@ impl Law {
         } else if alpha < 0.0 {
             let q = |k: f64| k.signum() * k.abs().powf(-alpha);
             let qa = q(ka);
+            let p = -1.0 / alpha;
             Form::Power {
                 qa,
                 dq: q(kb) - qa,
-                p: -1.0 / alpha,
+                p,
+                lift_a: qa.abs().powf(p) * qa.abs(),
             }
         } else {
             return None;
@@ -118,15 +126,15 @@ impl Law {
                 let turn = self.ka * self.len * y_over_e * expm1_ratio(y + big_y);
                 (turn, self.ka * big_y.exp())
             }
-            Form::Power { qa, dq, p } => {
+            Form::Power { qa, dq, p, lift_a } => {
                 let q = qa + dq * t;
-                let kappa = q.signum() * q.abs().powf(p);
+                let size = q.abs().powf(p);
+                let kappa = q.signum() * size;
                 if dq == 0.0 {
                     return (kappa * self.len * t, kappa);
                 }
-                // |q|^(p+1) = |κ| |q|: one power a call, not three.
-                let lift = kappa.abs() * q.abs() - self.ka.abs() * qa.abs();
-                let turn = self.len * lift / ((p + 1.0) * dq);
+                // |q|^(p+1) = |q|^p |q|: one power a call, not three.
+                let turn = self.len * (size * q.abs() - lift_a) / ((p + 1.0) * dq);
                 (turn, kappa)
             }
         }
@@ -150,7 +158,7 @@ impl Law {
                 let share = if e < -0.5 { y.exp() } else { 1.0 + t * e };
                 (kappa, kappa * ln_r * (e / x) / share)
             }
-            Form::Power { qa, dq, p } => {
+            Form::Power { qa, dq, p, .. } => {
                 let q = qa + dq * t;
                 let size = q.abs().powf(p);
                 let slope = if q != 0.0 {

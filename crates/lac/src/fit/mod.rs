@@ -344,7 +344,12 @@ impl Fit {
         };
         let mut n = cuts.len() + 1;
         let mut state = first_state(&sample, &cuts)?;
+        // Each round splits a piece; a piece the descent then shrinks to nothing goes again,
+        // so that the rounds are counted: a split that keeps collapsing (a curl at the data's
+        // end that no piece reaches) would otherwise go round for ever.
+        let mut rounds = 0;
         let measured = loop {
+            rounds += 1;
             let search = |layout: Layout| sample.problem(problem(layout));
             // With a slope per segment, one slope for all first: from a rough start, free
             // slopes fall into minima where a segment bends hard at the range's end.
@@ -407,6 +412,9 @@ impl Fit {
             };
             if n >= target {
                 return Err(not_met(target));
+            }
+            if rounds > MOST_ROUNDS_PER_SEGMENT * target {
+                return Err(not_met(n));
             }
             if let Some(cuts) = extrema.take().filter(|c| !c.is_empty()) {
                 // One segment is not enough: start again from the runs of the data.
@@ -683,6 +691,10 @@ const POLISH_POINTS: usize = 20_000;
 
 /// About how many points the search for a path's segments looks at.
 const SEARCH_POINTS: usize = 200;
+
+/// The most rounds of the search (each splits a piece), times the most segments: twice
+/// as many as splitting up to the most would take, for pieces that collapse and go.
+const MOST_ROUNDS_PER_SEGMENT: usize = 2;
 
 /// The most points beyond the tolerance that join the search in one round: one piece is
 /// split a round, and what the rest miss is seen again in the next.

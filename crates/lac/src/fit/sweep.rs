@@ -116,7 +116,13 @@ pub(super) fn sweep_alpha(problem: &Problem, state: State, range: (f64, f64)) ->
         }
         left = rising && best.as_ref().is_some_and(|b| previous > HILL * b.cost);
     }
-    let best = best?;
+    // Should no slope of the sweep give a chain from the first guess (a piece that winds
+    // round more than twice at every slope but its own), the free fit starts from the first
+    // guess itself.
+    let best = match best {
+        Some(best) => best,
+        None => free.state(state.x.clone(), &first.2)?,
+    };
     let x = free
         .layout
         .pack((best.chain.start, best.chain.theta0), &best.chain.numbers);

@@ -27,7 +27,7 @@ def tangent(c: li.Cubic, t: float) -> li.Point:
 
 class LacComb(inkex.EffectExtension):
     def add_arguments(self, pars: inkex.utils.argparse.ArgumentParser) -> None:
-        pars.add_argument("--per_piece", type=int, default=16, help="Teeth per Bézier piece")
+        pars.add_argument("--teeth", type=int, default=120, help="Teeth along each subpath")
         pars.add_argument(
             "--scale", type=float, default=0.0,
             help="Tooth length per unit curvature (0: the longest tooth a fifth of the path's length)",
@@ -46,15 +46,25 @@ class LacComb(inkex.EffectExtension):
             element.addnext(group)
 
     def comb(self, pieces: list[li.Cubic]) -> inkex.PathElement:
-        """The teeth and the tips' line of one subpath, as one path."""
-        per = max(self.options.per_piece, 2)
-        plot = li.lac.curvature_plot([li.lac.RationalCubic(c) for c in pieces], per)
-        ts = [(k, i / (per - 1)) for k in range(len(pieces)) for i in range(per) if k == 0 or i > 0]
-        kmax = max(abs(plot.kappa))
-        scale = self.options.scale or (0.2 * plot.s[-1] / kmax if kmax > 0 else 0.0)
+        """The teeth and the tips' line of one subpath, as one path: each piece gets teeth
+        in proportion to its length (two at least, its ends), equally spaced in its
+        parameter."""
+        rational = [li.lac.RationalCubic(c) for c in pieces]
+        lengths = [r.arc_length for r in rational]
+        total = sum(lengths)
+        per_piece = [max(2, round(self.options.teeth * n / total) + 1) for n in lengths]
+        feet, kappas, ts = [], [], []
+        for k, (piece, count) in enumerate(zip(rational, per_piece)):
+            plot = li.lac.curvature_plot([piece], count)
+            first = 0 if k == 0 else 1  # a joint once
+            feet += [tuple(p) for p in plot.points[first:]]
+            kappas += list(plot.kappa[first:])
+            ts += [(k, i / (count - 1)) for i in range(first, count)]
+        kmax = max(abs(k) for k in kappas)
+        scale = self.options.scale or (0.2 * total / kmax if kmax > 0 else 0.0)
         tips = []
         d = []
-        for (k, t), (x, y), kappa in zip(ts, plot.points, plot.kappa):
+        for (k, t), (x, y), kappa in zip(ts, feet, kappas):
             tx, ty = tangent(pieces[k], t)
             # Left normal (-ty, tx); the centre of curvature is on it for kappa > 0.
             tip = (x + scale * kappa * ty, y - scale * kappa * tx)

@@ -19,7 +19,7 @@ import lac
 
 from . import analysis, curves
 
-GROUP = "Log-aesthetic curve"
+GROUP = "Curve"
 RESULT = "Result"
 
 

@@ -51,8 +51,8 @@ class ViewProvider:
         vobj.Proxy = self
         self.name = name
         if name == "comb":
-            vobj.LineColor = (1.0, 0.55, 0.0)
-            vobj.LineWidth = 1.0
+            vobj.LineColor = vobj.PointColor = (1.0, 0.55, 0.0)
+            vobj.LineWidth = vobj.PointSize = 1.0
         else:
             vobj.LineWidth = 3.0
 

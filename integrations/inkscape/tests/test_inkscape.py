@@ -159,44 +159,66 @@ class Spline(unittest.TestCase):
         self.assertLess(two_sided(pieces_of(paths[1])[0], OPEN, -1.0, closed=False), TOL)
 
 
+def derivative(c: np.ndarray, t: float) -> np.ndarray:
+    u = 1 - t
+    return 3 * (u * u * (c[1] - c[0]) + 2 * u * t * (c[2] - c[1]) + t * t * (c[3] - c[2]))
+
+
+def second_derivative(c: np.ndarray, t: float) -> np.ndarray:
+    return 6 * ((1 - t) * (c[2] - 2 * c[1] + c[0]) + t * (c[3] - 2 * c[2] + c[1]))
+
+
 def signed_curvature(c: np.ndarray, t: float) -> float:
     """A cubic's curvature by its derivatives (the test's own formula)."""
-    u = 1 - t
-    d1 = 3 * (u * u * (c[1] - c[0]) + 2 * u * t * (c[2] - c[1]) + t * t * (c[3] - c[2]))
-    d2 = 6 * (u * (c[2] - 2 * c[1] + c[0]) + t * (c[3] - 2 * c[2] + c[1]))
+    d1, d2 = derivative(c, t), second_derivative(c, t)
     return float((d1[0] * d2[1] - d1[1] * d2[0]) / np.linalg.norm(d1) ** 3)
+
+
+def foot_on(pieces: list[np.ndarray], p: np.ndarray) -> tuple[np.ndarray, float]:
+    """The piece and parameter of the point of the pieces nearest to p (a grid, then
+    Newton on (B(t) - p) . B'(t) = 0)."""
+    grid = np.linspace(0, 1, 1001)
+    k, i = min(
+        ((k, int(np.argmin(np.linalg.norm(bezier(c, grid) - p, axis=1)))) for k, c in enumerate(pieces)),
+        key=lambda ki: float(np.linalg.norm(bezier(pieces[ki[0]], grid[ki[1] : ki[1] + 1])[0] - p)),
+    )
+    c, t = pieces[k], float(grid[i])
+    for _ in range(8):
+        r = bezier(c, np.array([t]))[0] - p
+        d1, d2 = derivative(c, t), second_derivative(c, t)
+        t = min(1.0, max(0.0, t - float(r @ d1) / float(d1 @ d1 + r @ d2)))
+    return c, t
 
 
 class Comb(unittest.TestCase):
     def test_teeth_are_the_curvature_of_the_path_times_the_scale(self) -> None:
         spline = output(run("lac_spline.py", DOCUMENT.format(body=f'<path id="p" d="{polyline(OPEN)}"/>'), "--id=p"))
-        svg = spline.tostring().decode()
-        root = output(run("lac_comb.py", svg, "--id=p", "--per_piece=5", "--scale=100"))
+        root = output(run("lac_comb.py", spline.tostring().decode(), "--id=p", "--teeth=60", "--scale=100"))
         [pieces] = pieces_of(root.getElementById("p"))
         group = root.getElementById("p").getnext()
         self.assertIsInstance(group, inkex.Group)
         self.assertTrue(group.get_id().startswith("lac-comb-p"))
-        teeth = pieces_of(next(iter(group.descendants().filter(inkex.PathElement))))
-        *teeth, tips = teeth
-        expected = [(k, i / 4) for k in range(len(pieces)) for i in range(5) if k == 0 or i > 0]
-        self.assertEqual(len(teeth), len(expected))
-        self.assertEqual(len(tips), len(expected) - 1)
-        for [tooth], (k, t) in zip(teeth, expected):
-            kappa = signed_curvature(pieces[k], t)
+        *teeth, tips = pieces_of(next(iter(group.descendants().filter(inkex.PathElement))))
+        self.assertTrue(60 <= len(teeth) <= 60 + 2 * len(pieces), len(teeth))
+        self.assertEqual(len(tips), len(teeth) - 1)
+        for [tooth] in teeth:
             foot, tip = tooth[0], tooth[3]
+            piece, t = foot_on(pieces, foot)
+            kappa = signed_curvature(piece, t)
             self.assertAlmostEqual(float(np.linalg.norm(tip - foot)), 100 * abs(kappa), delta=1e-6)
-            # Away from the centre of curvature, which is on the left (the tangent turned
-            # by +90 degrees) for kappa > 0.
-            u = 1 - t
-            d1 = u * u * (pieces[k][1] - pieces[k][0]) + 2 * u * t * (pieces[k][2] - pieces[k][1]) + t * t * (pieces[k][3] - pieces[k][2])
-            left = np.array([-d1[1], d1[0]])
-            self.assertLessEqual(float(np.dot(tip - foot, left)) * kappa, 1e-12)
+            # Away from the centre of curvature, which is on the left of the tangent for
+            # kappa > 0.
+            d1 = derivative(piece, t)
+            self.assertLessEqual(float(np.dot(tip - foot, [-d1[1], d1[0]])) * kappa, 1e-12)
 
     def test_comb_of_a_polyline_with_lines(self) -> None:
         svg = DOCUMENT.format(body='<path id="p" d="M 10,10 L 50,10 C 70,10 80,30 80,50"/>')
-        root = output(run("lac_comb.py", svg, "--id=p", "--per_piece=3"))
+        root = output(run("lac_comb.py", svg, "--id=p", "--teeth=2"))
         group = root.getElementById("p").getnext()
-        self.assertEqual(len(pieces_of(next(iter(group.descendants().filter(inkex.PathElement))))), 5 + 1)
+        # Two pieces of two teeth each (their ends), the joint once; and the tips' line.
+        *teeth, tips = pieces_of(next(iter(group.descendants().filter(inkex.PathElement))))
+        self.assertEqual(len(teeth), 3)
+        self.assertAlmostEqual(float(np.linalg.norm(teeth[0][0][3] - teeth[0][0][0])), 0.0)
 
 
 class Fair(unittest.TestCase):

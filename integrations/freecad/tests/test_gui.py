@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import os
 import sys
+import time
 import unittest
 from collections.abc import Callable
 from typing import Any
@@ -124,8 +125,10 @@ def screenshot(path: str) -> None:
         if sub.windowTitle().startswith("Start"):
             sub.close()
     Gui.Selection.addSelection(curve)
-    for _ in range(20):
+    # The property editor fills in from the event loop: a second of it.
+    for _ in range(40):
         QtGui.QApplication.processEvents()
+        time.sleep(0.025)
     # A grab leaves the OpenGL view blank: the view renders itself offscreen, and is
     # painted where it is.
     picture = window.grab()
@@ -137,7 +140,8 @@ def screenshot(path: str) -> None:
     painter.end()
     os.remove(rendered)
     # 256 colours: a small PNG for the documentation.
-    picture.toImage().convertToFormat(QtGui.QImage.Format_Indexed8).save(path)
+    image = picture.toImage()
+    image.convertToFormat(QtGui.QImage.Format_Indexed8, QtCore.Qt.ThresholdDither).save(path)
 
 
 if os.environ.get("LAC_SCREENSHOT"):

@@ -63,8 +63,17 @@ def main() -> None:
     if args.wheel:
         target = site_packages()
         subprocess.run(
-            [args.pip, "install", "--quiet", "--disable-pip-version-check", "--no-deps",
-             "--upgrade", "--target", str(target), str(args.wheel)],
+            [
+                args.pip,
+                "install",
+                "--quiet",
+                "--disable-pip-version-check",
+                "--no-deps",
+                "--upgrade",
+                "--target",
+                str(target),
+                str(args.wheel),
+            ],
             check=True,
         )
         print(f"lac bindings: {target}")

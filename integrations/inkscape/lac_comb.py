@@ -15,6 +15,7 @@ import inkex
 
 import lac_inkscape as li
 
+
 def tangent(c: li.Cubic, t: float) -> li.Point:
     """The unit tangent of a piece at t."""
     u = 1 - t
@@ -29,14 +30,18 @@ class LacComb(inkex.EffectExtension):
     def add_arguments(self, pars: inkex.utils.argparse.ArgumentParser) -> None:
         pars.add_argument("--teeth", type=int, default=120, help="Teeth along each subpath")
         pars.add_argument(
-            "--scale", type=float, default=0.0,
+            "--scale",
+            type=float,
+            default=0.0,
             help="Tooth length per unit curvature (0: the longest tooth a fifth of the path's length)",
         )
         pars.add_argument("--color", default="#f57900", help="Colour of the comb")
 
     def effect(self) -> None:
         for element in li.selected_paths(self):
-            width = li.local_tolerance(self, element, self.svg.to_dimensional(0.5, self.svg.document_unit))
+            width = li.local_tolerance(
+                self, element, self.svg.to_dimensional(0.5, self.svg.document_unit)
+            )
             group = inkex.Group(id=self.svg.get_unique_id(f"lac-comb-{element.get_id()}"))
             group.set("transform", str(element.transform))
             group.style = {"fill": "none", "stroke": self.options.color, "stroke-width": width}

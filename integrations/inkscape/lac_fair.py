@@ -29,11 +29,17 @@ def points_along(pieces: list[li.Cubic], count: int) -> np.ndarray:
 class LacFair(inkex.EffectExtension):
     def add_arguments(self, pars: inkex.utils.argparse.ArgumentParser) -> None:
         pars.add_argument(
-            "--tolerance", type=float, default=0.5,
+            "--tolerance",
+            type=float,
+            default=0.5,
             help="Largest distance from the path to the faired path, in document units",
         )
-        pars.add_argument("--max_segments", type=int, default=0, help="At most this many (0: lac's default)")
-        pars.add_argument("--samples", type=int, default=200, help="Points taken along each subpath")
+        pars.add_argument(
+            "--max_segments", type=int, default=0, help="At most this many (0: lac's default)"
+        )
+        pars.add_argument(
+            "--samples", type=int, default=200, help="Points taken along each subpath"
+        )
         pars.add_argument("--keep", type=inkex.Boolean, default=False, help="Keep the original")
 
     def effect(self) -> None:

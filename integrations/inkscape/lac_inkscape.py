@@ -65,7 +65,9 @@ def cubics(element: inkex.PathElement) -> list[list[Cubic]]:
         if pieces:
             out.append(pieces)
     if not out:
-        raise inkex.AbortExtension(f"lac: path {element.get_id()} has no length: draw two nodes apart")
+        raise inkex.AbortExtension(
+            f"lac: path {element.get_id()} has no length: draw two nodes apart"
+        )
     return out
 
 
@@ -76,6 +78,7 @@ RETRACTED_CUT = 1e-6
 
 def split(c: Cubic, t: float) -> tuple[Cubic, Cubic]:
     """De Casteljau: the piece before and after t."""
+
     def lerp(p: Point, q: Point) -> Point:
         return (p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]))
 
@@ -91,8 +94,16 @@ def regular(c: Cubic) -> Cubic:
     p0, p1, p2, p3 = c
     cross = lambda u, v: u[0] * v[1] - u[1] * v[0]  # noqa: E731
     d = (p3[0] - p0[0], p3[1] - p0[1])
-    if all(abs(cross(d, (q[0] - p0[0], q[1] - p0[1]))) <= 1e-12 * (d[0] ** 2 + d[1] ** 2) for q in (p1, p2)):
-        return (p0, (p0[0] + d[0] / 3, p0[1] + d[1] / 3), (p0[0] + 2 * d[0] / 3, p0[1] + 2 * d[1] / 3), p3)
+    if all(
+        abs(cross(d, (q[0] - p0[0], q[1] - p0[1]))) <= 1e-12 * (d[0] ** 2 + d[1] ** 2)
+        for q in (p1, p2)
+    ):
+        return (
+            p0,
+            (p0[0] + d[0] / 3, p0[1] + d[1] / 3),
+            (p0[0] + 2 * d[0] / 3, p0[1] + 2 * d[1] / 3),
+            p3,
+        )
     if p1 == p0:
         c = split(c, RETRACTED_CUT)[1]
     if c[2] == c[3]:

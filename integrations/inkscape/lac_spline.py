@@ -17,7 +17,9 @@ class LacSpline(inkex.EffectExtension):
     def add_arguments(self, pars: inkex.utils.argparse.ArgumentParser) -> None:
         pars.add_argument("--alpha", type=float, default=-1.0, help="Slope of every segment")
         pars.add_argument(
-            "--tolerance", type=float, default=0.01,
+            "--tolerance",
+            type=float,
+            default=0.01,
             help="Largest distance from the Béziers to the spline, in document units",
         )
         pars.add_argument("--keep", type=inkex.Boolean, default=False, help="Keep the original")
@@ -27,7 +29,9 @@ class LacSpline(inkex.EffectExtension):
             tolerance = li.local_tolerance(self, element, self.options.tolerance)
             with li.lac_errors(element):
                 d = " ".join(
-                    li.path_data(li.lac.Spline(sub.nodes, self.options.alpha, closed=sub.closed), tolerance)
+                    li.path_data(
+                        li.lac.Spline(sub.nodes, self.options.alpha, closed=sub.closed), tolerance
+                    )
                     for sub in li.subpaths(element)
                 )
             li.replace(element, d, self.options.keep)

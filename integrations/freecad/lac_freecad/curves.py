@@ -135,59 +135,70 @@ def build(curve: Any, tolerance: float = TOLERANCE, place: Optional[Frame] = Non
     return Built(shape, curve, report)
 
 
-def planar(points: Iterable[PointLike], tolerance: float) -> tuple[list[tuple[float, float]], Frame]:
+def planar(
+    points: Iterable[PointLike], tolerance: float
+) -> tuple[list[tuple[float, float]], Frame]:
     """Points of a planar kind in their plane's coordinates, and the plane."""
     vs = vectors(points)
     frame = plane_of(vs, tolerance)
     return [frame.local(p) for p in vs], frame
 
 
-def build_segment(points: Iterable[PointLike], alpha: float, tolerance: float = TOLERANCE) -> Built:
+def segment(points: Iterable[PointLike], alpha: float, tolerance: float = TOLERANCE) -> Built:
+    """The log-aesthetic segment of slope `alpha` from three control points (`lac segment`)."""
     xy, frame = planar(points, tolerance)
     return build(lac.Segment(xy, alpha), tolerance, frame)
 
 
-def build_compound(
+def compound(
     points: Iterable[PointLike],
     alpha0: float,
     alpha1: float,
     ratio: Optional[float] = None,
     tolerance: float = TOLERANCE,
 ) -> Built:
+    """The compound-rhythm curve of slopes `alpha0` then `alpha1`: from three control points
+    and the share `ratio` of the turning taken by the first piece, or from four points
+    without it (`lac compound`)."""
     xy, frame = planar(points, tolerance)
     return build(lac.CompoundCurve(xy, alpha0, alpha1, ratio), tolerance, frame)
 
 
-def build_path(
+def path(
     polygon: Iterable[PointLike],
     alpha: Alphas,
     g2: bool = True,
     closed: bool = False,
     tolerance: float = TOLERANCE,
 ) -> Built:
+    """The G2 (or with `g2=False` G1) path of log-aesthetic segments from a control polygon,
+    one `alpha` or one per segment (`lac path`)."""
     xy, frame = planar(polygon, tolerance)
     return build(lac.Path(xy, alpha, closed=closed, g2=g2), tolerance, frame)
 
 
-def build_spline(
+def spline(
     points: Iterable[PointLike], alpha: float, closed: bool = False, tolerance: float = TOLERANCE
 ) -> Built:
+    """The G2 spline of log-aesthetic segments through the points (`lac spline`)."""
     xy, frame = planar(points, tolerance)
     return build(lac.Spline(xy, alpha, closed=closed), tolerance, frame)
 
 
-def build_space(
+def space(
     points: Iterable[PointLike],
     alpha: float,
     beta: float,
     omega: float = 0.0,
     tolerance: float = TOLERANCE,
 ) -> Built:
+    """The log-aesthetic space segment from four 3-D control points, curvature slope
+    `alpha`, torsion slope `beta` and `omega` (`lac space`)."""
     xyz = [(p.x, p.y, p.z) for p in vectors(points)]
     return build(lac.SpaceSegment(xyz, alpha, beta, omega), tolerance)
 
 
-def build_fit(
+def fit(
     points: Iterable[PointLike],
     tolerance: Optional[float] = None,
     closed: bool = False,
@@ -195,9 +206,10 @@ def build_fit(
     alpha: Optional[float] = None,
     export_tolerance: float = TOLERANCE,
 ) -> Built:
+    """The log-aesthetic path fitted to the points (`lac fit`): the fewest G2 segments
+    within `tolerance` of them, or one least-squares segment without it; written within
+    `export_tolerance` of the fitted curve."""
     # The points need to be in one plane only as far as the fit's own tolerance.
     xy, frame = planar(points, max(tolerance or 0.0, export_tolerance))
-    fitted = lac.fit(
-        xy, tolerance=tolerance, max_segments=max_segments, alpha=alpha, closed=closed
-    )
+    fitted = lac.fit(xy, tolerance=tolerance, max_segments=max_segments, alpha=alpha, closed=closed)
     return build(fitted, export_tolerance, frame)

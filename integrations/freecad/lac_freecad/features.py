@@ -69,7 +69,7 @@ KINDS: dict[str, Kind] = {
             (3, 3),
             [(0, 0, 0), (3, 0, 0), (4.2, 1.9, 0)],
             [_alpha()],
-            lambda o: curves.build_segment(o.Points, o.Alpha, o.Tolerance),
+            lambda o: curves.segment(o.Points, o.Alpha, o.Tolerance),
         ),
         Kind(
             "compound",
@@ -87,7 +87,7 @@ KINDS: dict[str, Kind] = {
                     "Share of the turning taken by the first piece (three points only)",
                 ),
             ],
-            lambda o: curves.build_compound(
+            lambda o: curves.compound(
                 o.Points, o.Alpha0, o.Alpha1, o.Ratio if len(o.Points) == 3 else None, o.Tolerance
             ),
         ),
@@ -102,7 +102,7 @@ KINDS: dict[str, Kind] = {
                 Parameter("G2", "App::PropertyBool", True, "Continuous curvature at the joints"),
                 CLOSED,
             ],
-            lambda o: curves.build_path(o.Points, o.Alpha, o.G2, o.Closed, o.Tolerance),
+            lambda o: curves.path(o.Points, o.Alpha, o.G2, o.Closed, o.Tolerance),
         ),
         Kind(
             "spline",
@@ -111,7 +111,7 @@ KINDS: dict[str, Kind] = {
             (3, None),
             [(0, 0, 0), (2, 0.3, 0), (3.5, 1.5, 0), (4, 3, 0)],
             [_alpha(), CLOSED],
-            lambda o: curves.build_spline(o.Points, o.Alpha, o.Closed, o.Tolerance),
+            lambda o: curves.spline(o.Points, o.Alpha, o.Closed, o.Tolerance),
         ),
         Kind(
             "space",
@@ -124,7 +124,7 @@ KINDS: dict[str, Kind] = {
                 Parameter("Beta", "App::PropertyFloat", 0.0, "Slope of the torsion graph"),
                 Parameter("Omega", "App::PropertyFloat", 0.3, "Torsion parameter omega"),
             ],
-            lambda o: curves.build_space(o.Points, o.Alpha, o.Beta, o.Omega, o.Tolerance),
+            lambda o: curves.space(o.Points, o.Alpha, o.Beta, o.Omega, o.Tolerance),
         ),
         Kind(
             "fit",
@@ -144,7 +144,7 @@ KINDS: dict[str, Kind] = {
                 ),
                 CLOSED,
             ],
-            lambda o: curves.build_fit(
+            lambda o: curves.fit(
                 o.Points,
                 _optional(o.FitTolerance),
                 o.Closed,
@@ -188,7 +188,20 @@ def _add_results(obj: Any, results: Sequence[tuple[str, str, str]]) -> None:
         obj.setEditorMode(name, 1)
 
 
-class Curve:
+class Proxy:
+    """A proxy with nothing to save beside its object's properties (FreeCAD 0.20 calls
+    `__getstate__`/`__setstate__` when saving and opening a document; 0.21 `dumps`/`loads`)."""
+
+    def __getstate__(self) -> None:
+        return None
+
+    def __setstate__(self, state: Any) -> None:
+        return None
+
+    dumps, loads = __getstate__, __setstate__
+
+
+class Curve(Proxy):
     """The proxy of a log-aesthetic curve object: builds its shape from its properties."""
 
     def __init__(self, obj: Any, kind: Kind) -> None:
@@ -224,17 +237,8 @@ class Curve:
             obj.MaxDeviation = float(built.report["max_deviation"])
             obj.ArcLength = float(built.report["arc_length"])
 
-    # Nothing to save beside the properties (FreeCAD 0.20 calls these; 0.21 dumps/loads).
-    def __getstate__(self) -> None:
-        return None
 
-    def __setstate__(self, state: Any) -> None:
-        return None
-
-    dumps, loads = __getstate__, __setstate__
-
-
-class Comb:
+class Comb(Proxy):
     """The proxy of a curvature comb: the comb of its source edge, and that edge's
     logarithmic curvature graph's slope and monotonicity as lac measures them."""
 
@@ -268,14 +272,6 @@ class Comb:
             obj.Alpha = float("nan") if graph.alpha is None else graph.alpha
             obj.Monotone = graph.monotone
             obj.Verdict = graph.not_monotone or "monotone"
-
-    def __getstate__(self) -> None:
-        return None
-
-    def __setstate__(self, state: Any) -> None:
-        return None
-
-    dumps, loads = __getstate__, __setstate__
 
 
 def source_edge(link: Any) -> Part.Edge:

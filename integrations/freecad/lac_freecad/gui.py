@@ -129,9 +129,7 @@ class PointsDialog(QtGui.QDialog):
             field.setToolTip(p.doc)
             form.addRow(p.name, field)
             self.fields[p.name] = field
-        buttons = QtGui.QDialogButtonBox(
-            QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel
-        )
+        buttons = QtGui.QDialogButtonBox(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
         buttons.accepted.connect(self.accept)
         buttons.rejected.connect(self.reject)
         form.addRow(buttons)
@@ -242,4 +240,3 @@ def register() -> None:
         command = FitCommand(k) if k.name == "fit" else CurveCommand(k)
         Gui.addCommand(f"Lac_{k.name.capitalize()}", command)
     Gui.addCommand("Lac_Comb", CombCommand())
-

@@ -85,16 +85,24 @@ class Kinds(unittest.TestCase):
         print(f"\n  segment alpha 0.5: max relative curvature deviation {worst:.2e}", end=" ")
         self.assertLess(worst, 1e-5)
         # The ends keep lac's curvature (each piece is a G2 Hermite fit of its ends).
-        self.assertAlmostEqual(edge.curvatureAt(edge.FirstParameter), seg.curvature_start, delta=1e-12)
+        self.assertAlmostEqual(
+            edge.curvatureAt(edge.FirstParameter), seg.curvature_start, delta=1e-12
+        )
         self.assertAlmostEqual(edge.curvatureAt(edge.LastParameter), seg.curvature_end, delta=1e-12)
 
     def test_compound_from_three_and_four_points(self) -> None:
-        for points, ratio in [([(0, 0), (2, 0), (2.6, 1.2)], 0.5), ([(0, 0), (1, 0), (2, 0.5), (2.5, 1.5)], None)]:
+        for points, ratio in [
+            ([(0, 0), (2, 0), (2.6, 1.2)], 0.5),
+            ([(0, 0), (1, 0), (2, 0.5), (2.5, 1.5)], None),
+        ]:
             c = lac.CompoundCurve(points, -1, 2, ratio)
             edge = lac_freecad.compound(points, -1, 2, ratio)
             self.assert_follows(edge, c.sample(101).points, c.arc_length)
             worst = curvature_deviation(edge, c)
-            print(f"\n  compound, {len(points)} points: max relative curvature deviation {worst:.2e}", end=" ")
+            print(
+                f"\n  compound, {len(points)} points: max relative curvature deviation {worst:.2e}",
+                end=" ",
+            )
             self.assertLess(worst, 1e-4)
 
     def test_space_segment(self) -> None:
@@ -153,7 +161,10 @@ class G2(unittest.TestCase):
         if closed:
             a, b = edge.curvatureAt(edge.FirstParameter), edge.curvatureAt(edge.LastParameter)
             worst = max(worst, abs(a - b) / kmax)
-            self.assertLess(edge.valueAt(edge.FirstParameter).distanceToPoint(edge.valueAt(edge.LastParameter)), 1e-12)
+            self.assertLess(
+                edge.valueAt(edge.FirstParameter).distanceToPoint(edge.valueAt(edge.LastParameter)),
+                1e-12,
+            )
         self.assertLess(worst, 1e-6)
         return worst
 
@@ -176,7 +187,11 @@ class G2(unittest.TestCase):
         self.assertAlmostEqual(edge.Length, path.arc_length, delta=10 * TOL)
 
     def test_splines_open_closed_and_through_inflections(self) -> None:
-        for points, alpha, closed in [(THROUGH, 0.5, False), (CLOSED, 0.5, True), (WAVE, -0.5, False)]:
+        for points, alpha, closed in [
+            (THROUGH, 0.5, False),
+            (CLOSED, 0.5, True),
+            (WAVE, -0.5, False),
+        ]:
             spline = lac.Spline(points, alpha, closed=closed)
             edge = lac_freecad.spline(points, alpha, closed=closed)
             self.assert_g2(edge, closed)
@@ -195,7 +210,7 @@ class G2(unittest.TestCase):
             for k in interior_knots(edge)
         )
         # Every path joint is a knot; the other knots join pieces of one segment, G2.
-        self.assertTrue(np.allclose(seen[-len(jumps):], jumps, atol=1e-6), (seen, jumps))
+        self.assertTrue(np.allclose(seen[-len(jumps) :], jumps, atol=1e-6), (seen, jumps))
         self.assertGreater(max(jumps), 0.05)
 
 
@@ -212,14 +227,16 @@ class Analysis(unittest.TestCase):
             s = seg.arc_length * i / 20
             self.assertAlmostEqual(tooth.Length, 2.0 * abs(seg.curvature_at_s(s)), delta=1e-5)
             # Away from the centre of curvature: the tip is farther from it than the foot.
-            centre = edge.centerOfCurvatureAt(edge.getParameterByLength(s * edge.Length / seg.arc_length))
+            centre = edge.centerOfCurvatureAt(
+                edge.getParameterByLength(s * edge.Length / seg.arc_length)
+            )
             foot, tip = tooth.Vertexes[0].Point, tooth.Vertexes[1].Point
             self.assertGreater((tip - centre).Length, (foot - centre).Length)
 
     def test_comb_default_scale_is_a_fifth_of_the_length(self) -> None:
         edge = lac_freecad.path(POLYGON, -0.5)
         comb = lac_freecad.curvature_comb(edge)
-        longest = max(e.Length for e in comb.Edges[: 101])
+        longest = max(e.Length for e in comb.Edges[:101])
         self.assertAlmostEqual(longest, 0.2 * edge.Length, delta=1e-9)
 
     def test_graph_of_a_segment_gives_its_alpha_back(self) -> None:
@@ -328,9 +345,14 @@ class Objects(unittest.TestCase):
 
 class Installed(unittest.TestCase):
     def test_lac_freecad_is_imported_from_the_mod_folder(self) -> None:
-        mods = [os.path.join(FreeCAD.getUserAppDataDir(), "Mod"), os.path.join(FreeCAD.getHomePath(), "Mod")]
+        mods = [
+            os.path.join(FreeCAD.getUserAppDataDir(), "Mod"),
+            os.path.join(FreeCAD.getHomePath(), "Mod"),
+        ]
         self.assertTrue(any(lac_freecad.__file__.startswith(m) for m in mods), lac_freecad.__file__)
-        self.assertTrue(os.path.exists(os.path.join(os.path.dirname(lac_freecad.__file__), "..", "InitGui.py")))
+        self.assertTrue(
+            os.path.exists(os.path.join(os.path.dirname(lac_freecad.__file__), "..", "InitGui.py"))
+        )
 
 
 testing.run(sys.modules[__name__])

@@ -72,7 +72,9 @@ class Workbench(unittest.TestCase):
         self.assertIsInstance(seen[0], gui.PointsDialog)
         [segment] = [o for o in self.doc.Objects if o.Name.startswith("Segment")]
         self.assertEqual([tuple(p) for p in segment.Points], [tuple(map(float, p)) for p in points])
-        self.assertAlmostEqual(segment.ArcLength, lac.Segment([p[:2] for p in points], 0.5).arc_length)
+        self.assertAlmostEqual(
+            segment.ArcLength, lac.Segment([p[:2] for p in points], 0.5).arc_length
+        )
 
     def test_comb_of_a_selected_edge(self) -> None:
         path = features.make_curve("path", POLYGON, self.doc, Alpha=-0.5)
@@ -132,7 +134,9 @@ def screenshot(path: str) -> None:
     # A grab leaves the OpenGL view blank: the view renders itself offscreen, and is
     # painted where it is.
     picture = window.grab()
-    view = next(w for w in mdi.activeSubWindow().findChildren(QtGui.QWidget) if "GL" in type(w).__name__)
+    view = next(
+        w for w in mdi.activeSubWindow().findChildren(QtGui.QWidget) if "GL" in type(w).__name__
+    )
     rendered = path + ".view.png"
     Gui.activeDocument().activeView().saveImage(rendered, view.width(), view.height(), "White")
     painter = QtGui.QPainter(picture)

@@ -9,7 +9,6 @@ through Inkscape itself (its action for the installed extension, under Xvfb).
 from __future__ import annotations
 
 import json
-import math
 import os
 import shutil
 import subprocess
@@ -54,7 +53,10 @@ def run(script: str, svg: str, *args: str) -> subprocess.CompletedProcess[str]:
     try:
         return subprocess.run(
             [sys.executable, str(EXTENSIONS / script), *args, f.name],
-            capture_output=True, text=True, env=env, timeout=120,
+            capture_output=True,
+            text=True,
+            env=env,
+            timeout=120,
         )
     finally:
         os.remove(f.name)
@@ -97,15 +99,30 @@ def distances(points: np.ndarray, line: np.ndarray) -> np.ndarray:
     return out
 
 
-def lac_spline(points: list[tuple[float, float]], alpha: float, closed: bool, samples: int) -> np.ndarray:
+def lac_spline(
+    points: list[tuple[float, float]], alpha: float, closed: bool, samples: int
+) -> np.ndarray:
     """`lac spline`'s samples of the spline through the points."""
     through = " ".join(f"{x},{y}" for x, y in points)
-    args = [LAC_BIN, "spline", "--through", through, "--alpha", repr(alpha), "--samples", str(samples)]
-    done = subprocess.run(args + (["--closed"] if closed else []), capture_output=True, text=True, check=True)
+    args = [
+        LAC_BIN,
+        "spline",
+        "--through",
+        through,
+        "--alpha",
+        repr(alpha),
+        "--samples",
+        str(samples),
+    ]
+    done = subprocess.run(
+        args + (["--closed"] if closed else []), capture_output=True, text=True, check=True
+    )
     return np.array([[r["x"], r["y"]] for r in json.loads(done.stdout)["samples"]])
 
 
-def two_sided(pieces: list[np.ndarray], points: list[tuple[float, float]], alpha: float, closed: bool) -> float:
+def two_sided(
+    pieces: list[np.ndarray], points: list[tuple[float, float]], alpha: float, closed: bool
+) -> float:
     """The larger of: lac's samples' distance to the Béziers, the Béziers' to lac's curve."""
     there = distances(lac_spline(points, alpha, closed, 2001), dense(pieces))
     back = distances(dense(pieces, 50), lac_spline(points, alpha, closed, 40001))
@@ -116,12 +133,19 @@ class Spline(unittest.TestCase):
     def test_open_and_convex_splines_are_lac_spline_within_the_tolerance(self) -> None:
         for points, alpha in [(OPEN, -1.0), (OPEN, -0.5), (CONVEX, 0.5), (CONVEX, 2.0)]:
             svg = DOCUMENT.format(body=f'<path id="p" d="{polyline(points)}" style="stroke:#000"/>')
-            root = output(run("lac_spline.py", svg, f"--alpha={alpha}", f"--tolerance={TOL}", "--id=p"))
+            root = output(
+                run("lac_spline.py", svg, f"--alpha={alpha}", f"--tolerance={TOL}", "--id=p")
+            )
             [pieces] = pieces_of(root.getElementById("p"))
             worst = two_sided(pieces, points, alpha, closed=False)
-            print(f"\n  alpha {alpha}: {len(pieces)} cubics, deviation {worst:.2e} (tolerance {TOL})", end=" ")
+            print(
+                f"\n  alpha {alpha}: {len(pieces)} cubics, deviation {worst:.2e} (tolerance {TOL})",
+                end=" ",
+            )
             self.assertLess(worst, TOL)
-            self.assertTrue(np.allclose(pieces[0][0], points[0]) and np.allclose(pieces[-1][3], points[-1]))
+            self.assertTrue(
+                np.allclose(pieces[0][0], points[0]) and np.allclose(pieces[-1][3], points[-1])
+            )
 
     def test_closed_subpath_is_closed_and_subpaths_are_kept_apart(self) -> None:
         d = polyline(CONVEX) + " " + polyline(CLOSED, closed=True)
@@ -138,7 +162,9 @@ class Spline(unittest.TestCase):
         # Inside a group scaled by 4, in a document of 2 mm a user unit, 0.4 mm is 0.05 in
         # the path's coordinates.
         body = f'<g transform="scale(4)"><path id="p" d="{polyline([(x / 4, y / 4) for x, y in OPEN])}"/></g>'
-        svg = DOCUMENT.format(body=body).replace('width="200mm" height="120mm"', 'width="400mm" height="240mm"')
+        svg = DOCUMENT.format(body=body).replace(
+            'width="200mm" height="120mm"', 'width="400mm" height="240mm"'
+        )
         extension = inkex.EffectExtension()
         extension.svg = inkex.load_svg(svg.encode()).getroot()
         import lac_inkscape
@@ -147,7 +173,9 @@ class Spline(unittest.TestCase):
         self.assertAlmostEqual(local, 0.05, delta=1e-12)
         root = output(run("lac_spline.py", svg, "--tolerance=0.4", "--id=p"))
         [pieces] = pieces_of(root.getElementById("p"))
-        self.assertLess(two_sided(pieces, [(x / 4, y / 4) for x, y in OPEN], -1.0, closed=False), 0.05)
+        self.assertLess(
+            two_sided(pieces, [(x / 4, y / 4) for x, y in OPEN], -1.0, closed=False), 0.05
+        )
 
     def test_keep_the_original(self) -> None:
         svg = DOCUMENT.format(body=f'<path id="p" d="{polyline(OPEN)}" style="stroke:#123456"/>')
@@ -179,7 +207,10 @@ def foot_on(pieces: list[np.ndarray], p: np.ndarray) -> tuple[np.ndarray, float]
     Newton on (B(t) - p) . B'(t) = 0)."""
     grid = np.linspace(0, 1, 1001)
     k, i = min(
-        ((k, int(np.argmin(np.linalg.norm(bezier(c, grid) - p, axis=1)))) for k, c in enumerate(pieces)),
+        (
+            (k, int(np.argmin(np.linalg.norm(bezier(c, grid) - p, axis=1))))
+            for k, c in enumerate(pieces)
+        ),
         key=lambda ki: float(np.linalg.norm(bezier(pieces[ki[0]], grid[ki[1] : ki[1] + 1])[0] - p)),
     )
     c, t = pieces[k], float(grid[i])
@@ -192,8 +223,16 @@ def foot_on(pieces: list[np.ndarray], p: np.ndarray) -> tuple[np.ndarray, float]
 
 class Comb(unittest.TestCase):
     def test_teeth_are_the_curvature_of_the_path_times_the_scale(self) -> None:
-        spline = output(run("lac_spline.py", DOCUMENT.format(body=f'<path id="p" d="{polyline(OPEN)}"/>'), "--id=p"))
-        root = output(run("lac_comb.py", spline.tostring().decode(), "--id=p", "--teeth=60", "--scale=100"))
+        spline = output(
+            run(
+                "lac_spline.py",
+                DOCUMENT.format(body=f'<path id="p" d="{polyline(OPEN)}"/>'),
+                "--id=p",
+            )
+        )
+        root = output(
+            run("lac_comb.py", spline.tostring().decode(), "--id=p", "--teeth=60", "--scale=100")
+        )
         [pieces] = pieces_of(root.getElementById("p"))
         group = root.getElementById("p").getnext()
         self.assertIsInstance(group, inkex.Group)
@@ -257,7 +296,9 @@ class BadInput(unittest.TestCase):
     def test_one_node(self) -> None:
         self.assert_refused("lac_spline.py", "M 10,10", self.message([(10, 10)], -1.0))
         for script in ("lac_comb.py", "lac_fair.py"):
-            self.assert_refused(script, "M 10,10", "lac: path p has no length: draw two nodes apart")
+            self.assert_refused(
+                script, "M 10,10", "lac: path p has no length: draw two nodes apart"
+            )
 
     def test_coincident_nodes(self) -> None:
         points = [(0, 0), (0, 0), (10, 10), (20, 0)]
@@ -271,7 +312,9 @@ class BadInput(unittest.TestCase):
         self.assertEqual(done.stderr.strip(), "lac: select one or more paths first")
 
 
-@unittest.skipUnless(shutil.which("xvfb-run") and shutil.which("inkscape"), "needs inkscape and xvfb-run")
+@unittest.skipUnless(
+    shutil.which("xvfb-run") and shutil.which("inkscape"), "needs inkscape and xvfb-run"
+)
 class Inkscape(unittest.TestCase):
     def test_inkscape_runs_the_installed_extension(self) -> None:
         with tempfile.TemporaryDirectory() as tmp:
@@ -279,8 +322,17 @@ class Inkscape(unittest.TestCase):
             source.write_text(DOCUMENT.format(body=f'<path id="p" d="{polyline(OPEN)}"/>'))
             actions = f"select-by-id:p;org.lac.spline.noprefs;export-filename:{out};export-plain-svg;export-do"
             subprocess.run(
-                ["xvfb-run", "-a", "inkscape", "--batch-process", f"--actions={actions}", str(source)],
-                capture_output=True, timeout=120, check=True,
+                [
+                    "xvfb-run",
+                    "-a",
+                    "inkscape",
+                    "--batch-process",
+                    f"--actions={actions}",
+                    str(source),
+                ],
+                capture_output=True,
+                timeout=120,
+                check=True,
             )
             root = inkex.load_svg(str(out)).getroot()
             [pieces] = pieces_of(root.getElementById("p"))

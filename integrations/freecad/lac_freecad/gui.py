@@ -75,7 +75,7 @@ def selected_points() -> list[FreeCAD.Vector]:
     """The selected vertices in the order they were picked (a selected object whose shape
     is one vertex, a Draft point, counts as one)."""
     points = []
-    for sel in Gui.Selection.getSelectionEx("", 0):
+    for sel in Gui.Selection.getSelectionEx():
         subs = [s for s in sel.SubObjects if isinstance(s, Part.Vertex)]
         if subs:
             points += [v.Point for v in subs]

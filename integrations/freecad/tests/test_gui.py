@@ -76,6 +76,17 @@ class Workbench(unittest.TestCase):
             segment.ArcLength, lac.Segment([p[:2] for p in points], 0.5).arc_length
         )
 
+    def test_fit_to_a_selected_edge(self) -> None:
+        segment = features.make_curve("segment", [(0, 0, 0), (3, 0, 0), (4.2, 1.9, 0)], self.doc)
+        Gui.Selection.addSelection(segment, "Edge1")
+        seen: list[Any] = []
+        answer_modal(lambda dialog: dialog.accept(), seen)
+        Gui.runCommand("Lac_Fit")
+        [fit] = [o for o in self.doc.Objects if o.Name.startswith("Fit")]
+        self.assertEqual((fit.Error, len(fit.Points)), ("", gui.FIT_SAMPLES))
+        # One least-squares segment through points of a segment: that segment again.
+        self.assertAlmostEqual(fit.ArcLength, segment.ArcLength, delta=1e-6)
+
     def test_comb_of_a_selected_edge(self) -> None:
         path = features.make_curve("path", POLYGON, self.doc, Alpha=-0.5)
         Gui.Selection.addSelection(path, "Edge1")

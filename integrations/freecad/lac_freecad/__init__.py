@@ -3,14 +3,14 @@
 Each kind returns one `Part.Edge` holding one rational degree-3 B-spline within `tolerance`
 (model units, default 1e-6) of the exact curve, as `lac export` writes it (a `Part.Wire`
 should lac ever write several curves); `curves.<kind>` takes the same arguments and returns
-the edge with the lac curve and the export's report. Errors are lac's: `lac.InvalidInput` (also a
-`ValueError`) and `lac.NotDrawable`, with lac's message; `PlaneError` for 3-D points of a
-planar kind that are not in one plane.
+the edge with the lac curve and the export's report. Errors are lac's: `lac.InvalidInput`
+(also a `ValueError`) and `lac.NotDrawable`, with lac's message; `PlaneError` for 3-D points
+of a planar kind that are not in one plane.
 
     import lac_freecad
     edge = lac_freecad.path([(0, 0), (1.5, 0), (3, 0.8), (6, 3.2), (7.5, 4), (9, 4)], -0.5)
     Part.show(edge); Part.show(lac_freecad.curvature_comb(edge))
-    lac_freecad.log_curvature_graph(edge).not_monotone   # "the curvature changes sign …"
+    lac_freecad.log_curvature_graph(edge).not_monotone   # "dκ/ds changes sign near s = 2.63363"
 """
 
 from __future__ import annotations

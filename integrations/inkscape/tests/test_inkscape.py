@@ -125,7 +125,7 @@ def two_sided(
 ) -> float:
     """The larger of: lac's samples' distance to the Béziers, the Béziers' to lac's curve."""
     there = distances(lac_spline(points, alpha, closed, 2001), dense(pieces))
-    back = distances(dense(pieces, 50), lac_spline(points, alpha, closed, 40001))
+    back = distances(dense(pieces, 50), lac_spline(points, alpha, closed, 10001))
     return float(max(there.max(), back.max()))
 
 

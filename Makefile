@@ -1,6 +1,7 @@
 # `make test` runs every test of the project: formatting, clippy (warnings denied), Rust unit,
 # property, integration and doc tests (among them: every README figure is what its *Made by*
-# command draws), and the Python cross-checks (installed into .venv).
+# command draws), the Python cross-checks (installed into .venv), the Python bindings, lac in
+# FreeCAD and Inkscape (Debian's, installed when missing) and the editor in a browser.
 #
 # The dependency tree is compiled once with code generation: `cargo test` builds the `lac`
 # binary for the integration tests in the test profile (opt-level 2) as target/debug/lac, and
@@ -17,9 +18,10 @@ PROPTEST_RNG_SEED ?= 20261123
 export PROPTEST_RNG_SEED
 LAC_BIN := $(or $(CARGO_TARGET_DIR),$(CURDIR)/target)/debug/lac
 
-.PHONY: test check rust python py py-bench e2e docs fixtures bench example fuzz afl
+.PHONY: test check rust python py py-bench integrations test-integrations \
+	integrations-screenshots e2e docs fixtures bench example fuzz afl
 
-test: rust python py e2e
+test: rust python py test-integrations e2e
 
 # The fast tier (a few minutes warm): formatting, clippy, every Rust test with the seeded
 # fuzz driver cut to 2,000 inputs per entry point, two files of the Python cross-checks and
@@ -62,6 +64,46 @@ py: $(VENV)/.installed
 	$(CARGO_TEST) --no-run --quiet
 	LAC_BIN=$(LAC_BIN) $(PY) -m pytest -q crates/lac-py/tests
 	$(VENV)/bin/mypy --strict crates/lac-py/examples
+
+# lac inside FreeCAD and Inkscape (integrations/, docs/integrations.md). `make integrations`
+# installs Debian's programs when missing (without recommends; root, as CI runs), the lac
+# wheel where /usr/bin/python3 (and so FreeCAD and Inkscape) imports it, the workbench into
+# FreeCAD's Mod folder and the extensions into Inkscape's. The wheel is the one `make py`
+# builds (the same cargo build, so a few seconds after it).
+INTEGRATION_PACKAGES := freecad-python3 inkscape python3-lxml python3-cssselect python3-numpy \
+	xvfb xauth
+WHEELS := $(or $(CARGO_TARGET_DIR),$(CURDIR)/target)/wheels
+XVFB := QTWEBENGINE_DISABLE_SANDBOX=1 timeout 300 xvfb-run -a -s "-screen 0 1280x1024x24"
+integrations: $(VENV)/.installed
+	dpkg -s $(INTEGRATION_PACKAGES) >/dev/null 2>&1 || (apt-get update && \
+		DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $(INTEGRATION_PACKAGES))
+	rm -f $(WHEELS)/lac-*.whl
+	PATH="$(CURDIR)/$(VENV)/bin:$$PATH" $(PY) -m pip wheel --quiet --disable-pip-version-check \
+		--no-build-isolation --no-deps ./crates/lac-py -w $(WHEELS)
+	/usr/bin/python3 integrations/install.py --wheel $(WHEELS)/lac-*.whl \
+		--pip $(CURDIR)/$(VENV)/bin/pip
+
+# Their tests, headless: FreeCAD's (freecadcmd, and its GUI under Xvfb) and the Inkscape
+# extensions' against the test-profile `lac` (about 45 s after `integrations`).
+test-integrations: integrations
+	$(CARGO_TEST) --no-run --quiet
+	freecadcmd integrations/freecad/tests/test_freecad.py
+	$(XVFB) freecad integrations/freecad/tests/test_gui.py
+	LAC_BIN=$(LAC_BIN) PYTHONPATH=/usr/share/inkscape/extensions /usr/bin/python3 \
+		integrations/inkscape/tests/test_inkscape.py
+
+# Redraw docs/integrations-freecad.png (FreeCAD's window) and docs/integrations-inkscape.png
+# (integrations/inkscape/examples/sketch.svg before and after lac_spline and lac_comb, drawn
+# by Inkscape).
+INKEX := PYTHONPATH=/usr/share/inkscape/extensions /usr/bin/python3 integrations/inkscape
+SKETCH := integrations/inkscape/examples/sketch.svg
+integrations-screenshots: integrations
+	LAC_SCREENSHOT=$(CURDIR)/docs/integrations-freecad.png $(XVFB) freecad \
+		integrations/freecad/tests/test_gui.py
+	$(INKEX)/lac_spline.py --alpha=-0.5 --id=after $(SKETCH) > $(WHEELS)/spline.svg
+	$(INKEX)/lac_comb.py --id=after $(WHEELS)/spline.svg > $(WHEELS)/comb.svg
+	inkscape $(WHEELS)/comb.svg --export-type=png --export-width=960 \
+		--export-png-color-mode=RGB_8 --export-filename=docs/integrations-inkscape.png
 
 # lac from Python against Clothoids' build_G1 on the same alpha = -1 inputs (one JSON line).
 py-bench: py

@@ -121,6 +121,26 @@ pub(crate) fn planar<const N: usize>(obj: &Bound<'_, PyAny>, what: &str) -> PyRe
     Ok(fixed_points::<N, 2>(obj, what)?.map(|[x, y]| Point::new(x, y)))
 }
 
+/// An (n, 2) array or a sequence of (x, y) pairs as points.
+pub(crate) fn point_list(
+    py: Python<'_>,
+    value: &Bound<'_, PyAny>,
+    name: &str,
+) -> PyResult<Vec<Point>> {
+    let real = real_array(value, name)?;
+    if real.shape.len() != 2 || real.shape[1] != 2 {
+        return Err(invalid(
+            py,
+            format!("{name} must be an (n, 2) array or a sequence of (x, y) pairs"),
+        ));
+    }
+    Ok(real
+        .data
+        .chunks(2)
+        .map(|c| Point::new(c[0], c[1]))
+        .collect())
+}
+
 /// A 1-D array of real numbers (a scalar is refused).
 pub(crate) fn vector(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
     let real = real_array(obj, what)?;

@@ -11,7 +11,7 @@ use lac::{CurvaturePoint, Curve as _, Sample, ToBezier, Tolerance, Turn};
 use numpy::{PyArray1, PyArray2};
 use pyo3::prelude::*;
 
-use crate::convert::{array1, planar, points2, vector};
+use crate::convert::{array1, planar, point_list, points2, vector};
 use crate::errors::{invalid, OrRaise};
 use crate::quasi::PyQuasiCurve;
 
@@ -621,6 +621,62 @@ pub(crate) struct CurvaturePlot(pub(crate) Vec<CurvaturePoint>);
 
 #[pymethods]
 impl CurvaturePlot {
+    /// A curvature plot from samples measured elsewhere (a CAD kernel's or a drawing
+    /// program's evaluation of its own curve), for `log_curvature_graph` and
+    /// `not_monotone`: arc length `s`, signed curvature `kappa` (unsigned for a space curve)
+    /// and `dkappa_ds`, each of shape (n,), and `points` (n, 2) when known (zeros otherwise).
+    #[staticmethod]
+    #[pyo3(signature = (s, kappa, dkappa_ds, points = None))]
+    fn from_samples(
+        py: Python<'_>,
+        s: &Bound<'_, PyAny>,
+        kappa: &Bound<'_, PyAny>,
+        dkappa_ds: &Bound<'_, PyAny>,
+        points: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<CurvaturePlot> {
+        let (s, kappa) = (vector(s, "s")?, vector(kappa, "kappa")?);
+        let dkappa_ds = vector(dkappa_ds, "dkappa_ds")?;
+        let n = s.len();
+        let xy = match points {
+            Some(p) => point_list(py, p, "points")?,
+            None => vec![Point::ZERO; n],
+        };
+        if kappa.len() != n || dkappa_ds.len() != n || xy.len() != n {
+            return Err(invalid(
+                py,
+                format!(
+                    "s, kappa, dkappa_ds and points must have one length, got {n}, {}, {} and {}",
+                    kappa.len(),
+                    dkappa_ds.len(),
+                    xy.len()
+                ),
+            ));
+        }
+        if s.iter()
+            .chain(&kappa)
+            .chain(&dkappa_ds)
+            .any(|v| !v.is_finite())
+        {
+            return Err(invalid(py, "s, kappa and dkappa_ds must be finite numbers"));
+        }
+        Ok(CurvaturePlot(
+            (0..n)
+                .map(|i| CurvaturePoint {
+                    s: s[i],
+                    point: xy[i],
+                    kappa: kappa[i],
+                    dkappa_ds: dkappa_ds[i],
+                })
+                .collect(),
+        ))
+    }
+
+    /// Why the plot shows the curvature is not monotone (dκ/ds or κ takes both signs beyond
+    /// `PLOT_ZERO` of their scale: the sentence `lac lcg` prints), or None when it is.
+    fn not_monotone(&self) -> Option<String> {
+        lac::NotMonotone::of_plot(&self.0).map(|why| why.to_string())
+    }
+
     /// Arc length, shape (n,).
     #[getter]
     fn s<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {

@@ -9,7 +9,7 @@ use lac_io::json::AnyCurve;
 use numpy::{PyArray1, PyArray2, PyArray3};
 use pyo3::prelude::*;
 
-use crate::convert::{array1, blocks, points2, real_array, vector};
+use crate::convert::{array1, blocks, point_list, points2, vector};
 use crate::curve::Samples;
 use crate::errors::{invalid, OrRaise};
 
@@ -315,20 +315,4 @@ fn end_curvatures<'py>(
         .iter()
         .map(|s| kurbo::Point::new(s.signed_curvature_start(), s.signed_curvature_end()));
     points2(py, ends.collect::<Vec<_>>().into_iter())
-}
-
-/// An (n, 2) array or a sequence of (x, y) pairs as points.
-fn point_list(py: Python<'_>, value: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<kurbo::Point>> {
-    let real = real_array(value, name)?;
-    if real.shape.len() != 2 || real.shape[1] != 2 {
-        return Err(invalid(
-            py,
-            format!("{name} must be an (n, 2) array or a sequence of (x, y) pairs"),
-        ));
-    }
-    Ok(real
-        .data
-        .chunks(2)
-        .map(|c| kurbo::Point::new(c[0], c[1]))
-        .collect())
 }

@@ -171,6 +171,26 @@ def test_curvature_plot_and_lcg():
     assert fit is not None and fit.alpha == pytest.approx(0.5, abs=1e-3)
 
 
+def test_curvature_plot_from_samples_is_the_plot_it_was_given():
+    seg = lac.Segment([(0.0, 0.0), (3.0, 0.0), (4.2, 1.9)], 0.5)
+    plot = seg.curvature_plot(65)
+    again = lac.CurvaturePlot.from_samples(plot.s, plot.kappa, plot.dkappa_ds, plot.points)
+    assert again.points.tolist() == plot.points.tolist()
+    assert again.log_curvature_graph().points.tolist() == plot.log_curvature_graph().points.tolist()
+    assert again.not_monotone() is None
+    # Without points they are zeros; an inflection is named as `lac lcg` names it.
+    s = np.linspace(0.0, 2.0, 21)
+    wave = lac.CurvaturePlot.from_samples(s, 1.0 - s, -np.ones(21))
+    assert wave.points.tolist() == [[0.0, 0.0]] * 21
+    assert wave.not_monotone() == "the curvature changes sign near s = 1.1, an inflection"
+    bump = lac.CurvaturePlot.from_samples(s, 2.0 - (s - 1.0) ** 2, -2.0 * (s - 1.0))
+    assert bump.not_monotone() == "dκ/ds changes sign near s = 1.1"
+    with pytest.raises(lac.InvalidInput, match="one length, got 21, 20, 21 and 21"):
+        lac.CurvaturePlot.from_samples(s, s[1:], s)
+    with pytest.raises(lac.InvalidInput, match="finite"):
+        lac.CurvaturePlot.from_samples(s, s, np.full(21, np.nan))
+
+
 def test_standard_form_and_evolute():
     seg = lac.Segment([(-1.0, 0.0), (-0.2, 0.8), (1.0, 0.0)], 0.5)
     form = seg.standard_form

@@ -54,6 +54,13 @@ class CurvaturePlot:
     def kappa(self) -> FloatArray: ...
     @property
     def dkappa_ds(self) -> FloatArray: ...
+    @staticmethod
+    def from_samples(
+        s: ArrayLike, kappa: ArrayLike, dkappa_ds: ArrayLike, points: Optional[ArrayLike] = None
+    ) -> CurvaturePlot:
+        """A plot from samples measured elsewhere (a CAD kernel's evaluation)."""
+    def not_monotone(self) -> Optional[str]:
+        """Why the curvature is not monotone (lac lcg's sentence), or None."""
     def log_curvature_graph(self) -> LogCurvatureGraph: ...
     def __len__(self) -> int: ...
 

@@ -4,7 +4,7 @@
 
 use crate::export::AnyCurveObject;
 use lac::{Alphas, Continuity, ControlPolygon};
-use lac::{Closure, Curve, SegmentChain};
+use lac::{Closure, Curve};
 use lac_io::json::AnyCurve;
 use numpy::{PyArray1, PyArray2, PyArray3};
 use pyo3::prelude::*;

@@ -6,7 +6,7 @@
 
 use clap::Args;
 use kurbo::Point;
-use lac::{Curve, SegmentChain};
+use lac::Curve;
 use lac_io::json::{to_line, AnyCurve, ErrorBody, SplineInput, SplineReport};
 
 use crate::cli::export::{names, present, ExportSource, Flag, Input};

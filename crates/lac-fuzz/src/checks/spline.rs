@@ -5,7 +5,7 @@
 //! a sign change) at a span's inflection.
 
 use kurbo::Point;
-use lac::{Closure, SegmentChain};
+use lac::Closure;
 use lac::{Curve, Spline, INFLECTION_LIMIT};
 
 use super::{bounds, dist, finite, largest_end_curvature, meet, on_triangles, pt, rounding, typed};

@@ -2,7 +2,7 @@
 //! `lac spline` prints.
 
 use kurbo::Point;
-use lac::{Closure, Curve, SegmentChain, Spline};
+use lac::{Closure, Curve, Spline};
 use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value};
 

@@ -123,16 +123,18 @@ impl Unit {
         if g(hi).is_nan() || g(hi) < 0.0 {
             return None;
         }
-        let mut x = 0.5 * (lo + hi);
+        // arg F(θ) = θ a/(1 + a) + O(θ³): the first guess.
+        let mut x = (target * (1.0 + self.a) / self.a).clamp(0.05 * hi, 0.95 * hi);
         for _ in 0..100 {
-            let gx = g(x);
+            let c = self.chord(x);
+            let gx = c.arg() - target;
             if gx < 0.0 {
                 lo = x;
             } else {
                 hi = x;
             }
             // d arg F/dθ = Im(F′/F).
-            let slope = self.chord_derivative(x).div(self.chord(x)).im;
+            let slope = self.chord_derivative(x).div(c).im;
             let newton = x - gx / slope;
             let next = if slope > 0.0 && newton > lo && newton < hi {
                 newton
@@ -379,6 +381,46 @@ mod tests {
             assert!((s.sigma * (t2 - s.angle) - tb).abs() < 1e-14);
             assert!((c.norm() * s.scale - 2.0).abs() < 1e-14);
         }
+    }
+
+    /// A half S: zero curvature at its inflection end, whose tangent makes the given angle
+    /// with the chord, and the other end's angle as returned; built as one segment, the same.
+    #[test]
+    fn a_half_s_meets_its_tangents_with_zero_curvature_at_its_inflection() {
+        use crate::segment::Segment;
+        for alpha in [-0.25, -0.5, -1.0] {
+            let unit = Unit::new(alpha).unwrap();
+            for t in [0.05, 0.3, -0.25] {
+                for at_end in [true, false] {
+                    let (s, other) = unit
+                        .half(t, 2.0, at_end)
+                        .unwrap_or_else(|| panic!("a half: {alpha} {t} {at_end}"));
+                    let theta = s.theta[0].max(s.theta[1]);
+                    let c = unit.chord(theta);
+                    assert!((c.arg() - s.angle).abs() < 1e-14, "{alpha} {t}");
+                    assert!((c.norm() * s.scale - 2.0).abs() < 1e-14);
+                    // The tangents from the chord: the inflection's t, the other end's.
+                    assert!((s.sigma * (theta - s.angle) - other).abs() < 1e-14);
+                    assert!((-s.sigma * s.angle - t).abs() < 1e-15, "{alpha} {t}");
+                    let (k0, k1) = s.end_curvatures();
+                    assert_eq!(if at_end { k1 } else { k0 }, 0.0);
+                    let (a, b) = (Point::new(0.5, -1.0), Point::new(0.5, 1.0));
+                    let [tri] = s.turning_halves(a, b, HAIR)[..] else {
+                        panic!("one half")
+                    };
+                    let seg = Segment::from_control_points(tri, alpha).unwrap();
+                    let (f0, f1) = seg.end_curvatures();
+                    let (far, near) = if at_end { (f0, f1) } else { (f1, f0) };
+                    let want = if at_end { k0 } else { k1 };
+                    assert!(
+                        (far - want).abs() <= 1e-12 * want.abs(),
+                        "{alpha} {t} {at_end}"
+                    );
+                    assert!(near.abs() <= 1e-11 * want.abs(), "{alpha} {t} {at_end}");
+                }
+            }
+        }
+        assert!(Unit::new(-1.0).unwrap().half(0.0, 1.0, true).is_none());
     }
 
     /// The halves built as segments (by the chord-angle solver, on their triangles) have

@@ -31,6 +31,9 @@ const HOMOTOPY: [f64; 4] = [0.25, 0.5, 0.75, 1.0];
 /// Where the knots' lines cross their chords, tried in turn (see [`Plan::knot_frame`]).
 const KNOT_SHARES: [f64; 3] = [0.5, 0.3, 0.7];
 
+/// A Jacobian's entries: (row, unknown, value).
+type Entries = Vec<(usize, usize, f64)>;
+
 /// The shape of one span: one segment (its control triangle), an S (or half S), or a line.
 #[derive(Clone, Copy, Debug)]
 pub(super) enum Shape {
@@ -201,10 +204,9 @@ impl Problem<'_> {
             .collect()
     }
 
-    /// The Newton step for the right-hand side `rhs`: the Jacobian by forward differences
-    /// (each unknown moves the spans at its node, which move the rows at that node and its
-    /// neighbours), solved tridiagonally when it is, densely otherwise.
-    fn step(&self, x: &mut [f64], values: &[Value], rhs: &[f64]) -> Option<Vec<f64>> {
+    /// The Jacobian's entries (row, unknown, value) by forward differences: each unknown
+    /// moves the spans at its node, which move the rows at that node and its neighbours.
+    fn jacobian(&self, x: &mut [f64], values: &[Value]) -> Option<Entries> {
         let l = self.layout;
         let m = l.owner.len();
         if l.rows.len() != m {
@@ -265,10 +267,18 @@ impl Problem<'_> {
             }
             x[v] = saved;
         }
+        Some(entries)
+    }
+
+    /// The Newton step of Jacobian `entries` for the right-hand side `rhs`, solved
+    /// tridiagonally when it is, densely otherwise.
+    fn step(&self, entries: &Entries, rhs: &[f64]) -> Option<Vec<f64>> {
+        let l = self.layout;
+        let m = l.owner.len();
         if l.is_tridiagonal() {
             let (mut sub, mut diag, mut sup) = (vec![0.0; m], vec![0.0; m], vec![0.0; m]);
             let mut banded_ok = true;
-            for &(r, c, d) in &entries {
+            for &(r, c, d) in entries {
                 if c == r {
                     diag[r] += d;
                 } else if c + 1 == r || (r == 0 && c + 1 == m) {
@@ -284,7 +294,7 @@ impl Problem<'_> {
             }
         }
         let mut a = vec![0.0; m * m];
-        for &(r, c, d) in &entries {
+        for &(r, c, d) in entries {
             a[r * m + c] += d;
         }
         banded::dense(a, rhs.to_vec())
@@ -306,6 +316,11 @@ impl Problem<'_> {
         };
         let norm = |r: &[f64]| r.iter().map(|x| x * x).sum::<f64>().sqrt();
         let (mut values, mut r) = eval(&x)?;
+        // A Jacobian is kept while the steps it gives shrink the residual fourfold (the
+        // point conditions' dense systems: each Jacobian costs two span solves an unknown);
+        // the smooth spline's is made afresh at every step, as it always was.
+        let keep = !self.layout.is_tridiagonal();
+        let mut jacobian: Option<Entries> = None;
         for _ in 0..MAX_STEPS {
             let done = if exact {
                 self.misses(&x, &values).iter().all(|m| *m <= G2_TOLERANCE)
@@ -315,9 +330,20 @@ impl Problem<'_> {
             if done {
                 break;
             }
+            let fresh = jacobian.is_none();
+            let entries = match jacobian.take() {
+                Some(j) => j,
+                None => match self.jacobian(&mut x, &values) {
+                    Some(j) => j,
+                    None => break,
+                },
+            };
             let rhs: Vec<f64> = r.iter().map(|x| -x).collect();
-            let Some(dx) = self.step(&mut x, &values, &rhs) else {
-                break;
+            let Some(dx) = self.step(&entries, &rhs) else {
+                if fresh {
+                    break;
+                }
+                continue;
             };
             let big = dx.iter().fold(0.0f64, |m, x| m.max(x.abs()));
             let mut lambda = if big > MAX_STEP { MAX_STEP / big } else { 1.0 };
@@ -333,7 +359,16 @@ impl Problem<'_> {
                 }
                 lambda *= 0.5;
             }
-            let Some((x2, v2, r2)) = next else { break };
+            let Some((x2, v2, r2)) = next else {
+                if fresh {
+                    break;
+                }
+                // A kept Jacobian that no longer leads: make it afresh.
+                continue;
+            };
+            if keep && lambda == 1.0 && norm(&r2) < 0.25 * now {
+                jacobian = Some(entries);
+            }
             (x, values, r) = (x2, v2, r2);
         }
         let misses = self.misses(&x, &values);

@@ -9,7 +9,7 @@
 use clap::Args;
 use kurbo::Point;
 use lac::{Curve, PointType, SplineEnd, SplineOptions};
-use lac_io::json::{to_line, AnyCurve, ErrorBody, SplineInput, SplineReport};
+use lac_io::json::{point_type_named, to_line, AnyCurve, ErrorBody, SplineInput, SplineReport};
 
 use crate::cli::export::{names, present, ExportSource, Flag, Input};
 use crate::cli::segment::check_output;
@@ -158,13 +158,12 @@ fn options(args: &SplineArgs, n: usize) -> Result<SplineOptions, ErrorBody> {
             }
             letters
                 .iter()
-                .map(|l| match *l {
-                    "s" | "smooth" => Ok(PointType::Smooth),
-                    "t" | "tangent" => Ok(PointType::Tangent(f64::NAN)),
-                    "c" | "corner" => Ok(PointType::CORNER),
-                    other => Err(errors::usage(format!(
-                        "--types: {other:?} is not a point type (s smooth, t tangent, c corner)"
-                    ))),
+                .map(|l| {
+                    point_type_named(l).ok_or_else(|| {
+                        errors::usage(format!(
+                            "--types: {l:?} is not a point type (s smooth, t tangent, c corner)"
+                        ))
+                    })
                 })
                 .collect::<Result<Vec<_>, _>>()?
         }

@@ -55,8 +55,8 @@ pub use space::{
     TransformRow, PLANAR_NOTE,
 };
 pub use spline::{
-    SplineEndRow, SplineInflectionRow, SplineInput, SplineKind, SplineKnotRow, SplinePieceRow,
-    SplinePointRow, SplineReport,
+    point_type_named, SplineEndRow, SplineInflectionRow, SplineInput, SplineKind, SplineKnotRow,
+    SplinePieceRow, SplinePointRow, SplineReport,
 };
 
 // The curve kinds, in the order they are asked to claim a document (`kind.rs`): a new kind

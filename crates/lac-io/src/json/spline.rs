@@ -12,6 +12,17 @@ use lac_export::{spline_pieces, ExportCurve};
 use super::kind::{fields, Kind};
 use super::{all_finite, point, xy, ErrorBody, Report, SampleRow, Xy};
 
+/// The point type of a name as `lac spline --types` spells it (`s`/`smooth`,
+/// `t`/`tangent`, `c`/`corner`), a tangent point's direction still to be given (NaN).
+pub fn point_type_named(name: &str) -> Option<PointType> {
+    match name {
+        "s" | "smooth" => Some(PointType::Smooth),
+        "t" | "tangent" => Some(PointType::Tangent(f64::NAN)),
+        "c" | "corner" => Some(PointType::CORNER),
+        _ => None,
+    }
+}
+
 /// A spline's points, slope, closure, point types, straight spans and end conditions, as
 /// `lac spline` takes them.
 #[derive(Clone, Debug, PartialEq)]

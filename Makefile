@@ -17,7 +17,7 @@ PROPTEST_RNG_SEED ?= 20261123
 export PROPTEST_RNG_SEED
 LAC_BIN := $(or $(CARGO_TARGET_DIR),$(CURDIR)/target)/debug/lac
 
-.PHONY: test check rust python py py-bench e2e docs fixtures bench example fuzz afl
+.PHONY: test check rust python py py-bench spiro e2e docs fixtures bench example fuzz afl
 
 test: rust python py e2e
 
@@ -62,6 +62,12 @@ py: $(VENV)/.installed
 	$(CARGO_TEST) --no-run --quiet
 	LAC_BIN=$(LAC_BIN) $(PY) -m pytest -q crates/lac-py/tests
 	$(VENV)/bin/mypy --strict crates/lac-py/examples
+
+# lac's splines with point types beside libspiro on 1,000 glyph-like outlines (one JSON line):
+# needs Debian's libspiro-dev and a C compiler (installed when missing; root), not in `make test`.
+spiro: py
+	test -f /usr/include/spiroentrypoints.h || (apt-get update && apt-get install -y libspiro-dev)
+	$(PY) tools/spiro/compare.py --count 1000
 
 # lac from Python against Clothoids' build_G1 on the same alpha = -1 inputs (one JSON line).
 py-bench: py

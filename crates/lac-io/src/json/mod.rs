@@ -56,7 +56,7 @@ pub use space::{
 };
 pub use spline::{
     point_type_named, SplineEndRow, SplineInflectionRow, SplineInput, SplineKind, SplineKnotRow,
-    SplinePieceRow, SplinePointRow, SplineReport,
+    SplinePieceRow, SplinePointRow, SplineReport, SplineRequest,
 };
 
 // The curve kinds, in the order they are asked to claim a document (`kind.rs`): a new kind

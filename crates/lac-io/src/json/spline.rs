@@ -55,6 +55,87 @@ impl SplineInput {
     }
 }
 
+/// A spline as the editor asks for it: `{"points":[[x,y],…],"alpha":A,"closed":false,
+/// "types":["s","t","c",…],"angles":[[in,out],…],"lines":[i,…],"start":{"angle","curvature"},
+/// "end":{…}}`, every field but the points and α optional; a tangent point's direction is
+/// the first of its `angles`, a corner's sides both (null: free).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SplineRequest {
+    /// The points it passes through.
+    pub points: Vec<Xy>,
+    /// The slope of every segment.
+    pub alpha: f64,
+    /// Whether it is closed.
+    #[serde(default)]
+    pub closed: bool,
+    /// Each point's type, `s`, `t` or `c` (absent: every point smooth).
+    #[serde(default)]
+    pub types: Vec<String>,
+    /// Each point's given directions (in, out).
+    #[serde(default)]
+    pub angles: Vec<[Option<f64>; 2]>,
+    /// The straight spans.
+    #[serde(default)]
+    pub lines: Vec<usize>,
+    /// An open spline's first point.
+    #[serde(default)]
+    pub start: SplineEndRow,
+    /// An open spline's last point.
+    #[serde(default)]
+    pub end: SplineEndRow,
+}
+
+impl SplineRequest {
+    /// The shape, for error messages.
+    pub const SHAPE: &'static str = r#"{"points":[[x,y],…],"alpha":A,"closed":false,"types":["s","t","c",…],"angles":[[in,out],…],"lines":[i,…]}"#;
+
+    /// The input it asks for, or what is wrong with its types.
+    pub fn input(&self) -> Result<SplineInput, ErrorBody> {
+        let types = self
+            .types
+            .iter()
+            .enumerate()
+            .map(|(i, name)| {
+                let given = self.angles.get(i).copied().unwrap_or([None, None]);
+                match point_type_named(name) {
+                    Some(PointType::Tangent(_)) => {
+                        given[0].map(PointType::Tangent).ok_or_else(|| {
+                            ErrorBody::invalid_input(format!(
+                            "point {i} is a tangent point: give its direction as angles[{i}][0]"
+                        ))
+                        })
+                    }
+                    Some(PointType::Corner { .. }) => Ok(PointType::Corner {
+                        before: given[0],
+                        after: given[1],
+                    }),
+                    Some(other) => Ok(other),
+                    None => Err(ErrorBody::invalid_input(format!(
+                        "types[{i}] = {name:?} is not a point type (s smooth, t tangent, c corner)"
+                    ))),
+                }
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(SplineInput {
+            points: self.points.iter().map(|&p| point(p)).collect(),
+            alpha: self.alpha,
+            closed: self.closed,
+            options: SplineOptions {
+                types,
+                lines: self.lines.clone(),
+                start: SplineEnd {
+                    angle: self.start.angle,
+                    curvature: self.start.curvature,
+                },
+                end: SplineEnd {
+                    angle: self.end.angle,
+                    curvature: self.end.curvature,
+                },
+            },
+        })
+    }
+}
+
 /// What a spline measured at one of its points, and its type as given: each side's tangent
 /// direction (radians) and signed curvature (`null` outside an open spline's ends), whether
 /// that side is a straight span, and the given directions (a tangent point's on both sides,

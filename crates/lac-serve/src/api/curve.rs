@@ -1,10 +1,10 @@
-//! `/api/segment`, `/api/compound`, `/api/path` and `/api/lcg`: a curve solved and sampled,
-//! with its curvature plot and logarithmic curvature graph.
+//! `/api/segment`, `/api/compound`, `/api/path`, `/api/spline` and `/api/lcg`: a curve
+//! solved and sampled, with its curvature plot and logarithmic curvature graph.
 
 use lac::Curve;
 use lac_io::json::{
     parse, to_line, CompoundInput, CompoundReport, LcgReport, LcgRow, PathInput, PathReport,
-    PiecesInput, Report, SegmentInput, SegmentReport,
+    PiecesInput, Report, SegmentInput, SegmentReport, SplineReport, SplineRequest,
 };
 use serde::Serialize;
 
@@ -92,6 +92,34 @@ pub(crate) fn path(app: &App, text: &str) -> Result<String, ApiError> {
             .collect(),
     };
     Ok(to_line(&answer))
+}
+
+/// `POST /api/spline`: a spline through points with point types ([`SplineRequest`]), answered
+/// as `lac spline` prints it with each piece's line of the logarithmic curvature graph.
+pub(crate) fn spline(app: &App, text: &str) -> Result<String, ApiError> {
+    let request: WithSamples<SplineRequest> = parse(text, SplineRequest::SHAPE)?;
+    let n = app.limits.samples(request.samples)?;
+    let input = request.input.input()?;
+    let spline = input.solve()?;
+    let answer = SplineAnswer {
+        report: SplineReport::new(&spline, input.alpha, n)?,
+        lcg: spline
+            .pieces()
+            .iter()
+            .map(|s| s.lcg().map(LcgRow::from))
+            .collect(),
+    };
+    Ok(to_line(&answer))
+}
+
+/// A spline's report with each piece's line of the logarithmic curvature graph.
+#[derive(Debug, Serialize)]
+pub(crate) struct SplineAnswer {
+    /// The report, as `lac spline` prints it.
+    #[serde(flatten)]
+    pub(crate) report: SplineReport,
+    /// Each piece's line ln(ρ ds/dρ) = α ln ρ + c over its range of ln ρ.
+    pub(crate) lcg: Vec<Option<LcgRow>>,
 }
 
 /// The shapes `/api/lcg` reads, for error messages.

@@ -39,6 +39,16 @@ pub struct SplineInput {
 }
 
 impl SplineInput {
+    /// The input of points given as JSON pairs.
+    fn new(points: &[Xy], alpha: f64, closed: bool, options: SplineOptions) -> SplineInput {
+        SplineInput {
+            points: points.iter().map(|&p| point(p)).collect(),
+            alpha,
+            closed,
+            options,
+        }
+    }
+
     /// Solve it.
     pub fn solve(&self) -> Result<Spline, ErrorBody> {
         let closure = if self.closed {
@@ -116,23 +126,17 @@ impl SplineRequest {
                 }
             })
             .collect::<Result<Vec<_>, _>>()?;
-        Ok(SplineInput {
-            points: self.points.iter().map(|&p| point(p)).collect(),
-            alpha: self.alpha,
-            closed: self.closed,
-            options: SplineOptions {
+        Ok(SplineInput::new(
+            &self.points,
+            self.alpha,
+            self.closed,
+            SplineOptions {
                 types,
                 lines: self.lines.clone(),
-                start: SplineEnd {
-                    angle: self.start.angle,
-                    curvature: self.start.curvature,
-                },
-                end: SplineEnd {
-                    angle: self.end.angle,
-                    curvature: self.end.curvature,
-                },
+                start: self.start.end(),
+                end: self.end.end(),
             },
-        })
+        ))
     }
 }
 
@@ -190,6 +194,16 @@ pub struct SplineEndRow {
     pub angle: Option<f64>,
     /// The signed curvature.
     pub curvature: Option<f64>,
+}
+
+impl SplineEndRow {
+    /// The end as the library takes it.
+    fn end(&self) -> SplineEnd {
+        SplineEnd {
+            angle: self.angle,
+            curvature: self.curvature,
+        }
+    }
 }
 
 /// A knot: a joint inside a span that pays for a point's condition.
@@ -348,10 +362,7 @@ impl SplineReport {
     pub fn input(&self) -> SplineInput {
         let solved = |i: Option<&f64>| if self.closed { None } else { i.copied() };
         let end = |row: Option<SplineEndRow>, solved: Option<f64>| match row {
-            Some(r) => SplineEnd {
-                angle: r.angle,
-                curvature: r.curvature,
-            },
+            Some(r) => r.end(),
             None => SplineEnd {
                 angle: solved,
                 curvature: None,
@@ -385,17 +396,17 @@ impl SplineReport {
         if types.iter().all(|t| *t == PointType::Smooth) {
             types.clear();
         }
-        SplineInput {
-            points: self.points.iter().map(|&p| point(p)).collect(),
-            alpha: self.alpha,
-            closed: self.closed,
-            options: SplineOptions {
+        SplineInput::new(
+            &self.points,
+            self.alpha,
+            self.closed,
+            SplineOptions {
                 types,
                 lines: self.lines.clone(),
                 start,
                 end: last,
             },
-        }
+        )
     }
 }
 

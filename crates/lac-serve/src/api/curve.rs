@@ -66,15 +66,25 @@ pub(crate) fn compound(app: &App, text: &str) -> Result<String, ApiError> {
     Ok(to_line(&compound_answer(&request.input, n)?))
 }
 
-/// A path's report with each segment's line of the logarithmic curvature graph (null for a
-/// circular arc): `{…lac path's report…, "lcg":[…]}`.
+/// A path's or spline's report with each segment's line of the logarithmic curvature graph
+/// (null for a circular arc): `{…lac path's or lac spline's report…, "lcg":[…]}`.
 #[derive(Debug, Serialize)]
-pub(crate) struct PathAnswer {
-    /// The report, as `lac path` prints it.
+pub(crate) struct LcgAnswer<R> {
+    /// The report, as `lac path` or `lac spline` prints it.
     #[serde(flatten)]
-    pub(crate) report: PathReport,
+    pub(crate) report: R,
     /// Each segment's line ln(ρ ds/dρ) = α ln ρ + c over its range of ln ρ.
     pub(crate) lcg: Vec<Option<LcgRow>>,
+}
+
+impl<R> LcgAnswer<R> {
+    /// `report` with the lines of `segments`.
+    fn new(report: R, segments: &[lac::Segment]) -> Self {
+        LcgAnswer {
+            report,
+            lcg: segments.iter().map(|s| s.lcg().map(LcgRow::from)).collect(),
+        }
+    }
 }
 
 /// `POST /api/path`: `{"points":[[x,y],…],"alpha":A (or "alphas":[…]),"g2":true,
@@ -83,15 +93,10 @@ pub(crate) fn path(app: &App, text: &str) -> Result<String, ApiError> {
     let request: WithSamples<PathInput> = parse(text, PathInput::SHAPE)?;
     let n = app.limits.samples(request.samples)?;
     let path = request.input.solve()?;
-    let answer = PathAnswer {
-        report: PathReport::new(&path, n)?,
-        lcg: path
-            .segments()
-            .iter()
-            .map(|s| s.lcg().map(LcgRow::from))
-            .collect(),
-    };
-    Ok(to_line(&answer))
+    Ok(to_line(&LcgAnswer::new(
+        PathReport::new(&path, n)?,
+        path.segments(),
+    )))
 }
 
 /// `POST /api/spline`: a spline through points with point types ([`SplineRequest`]), answered
@@ -101,25 +106,10 @@ pub(crate) fn spline(app: &App, text: &str) -> Result<String, ApiError> {
     let n = app.limits.samples(request.samples)?;
     let input = request.input.input()?;
     let spline = input.solve()?;
-    let answer = SplineAnswer {
-        report: SplineReport::new(&spline, input.alpha, n)?,
-        lcg: spline
-            .pieces()
-            .iter()
-            .map(|s| s.lcg().map(LcgRow::from))
-            .collect(),
-    };
-    Ok(to_line(&answer))
-}
-
-/// A spline's report with each piece's line of the logarithmic curvature graph.
-#[derive(Debug, Serialize)]
-pub(crate) struct SplineAnswer {
-    /// The report, as `lac spline` prints it.
-    #[serde(flatten)]
-    pub(crate) report: SplineReport,
-    /// Each piece's line ln(ρ ds/dρ) = α ln ρ + c over its range of ln ρ.
-    pub(crate) lcg: Vec<Option<LcgRow>>,
+    Ok(to_line(&LcgAnswer::new(
+        SplineReport::new(&spline, input.alpha, n)?,
+        spline.pieces(),
+    )))
 }
 
 /// The shapes `/api/lcg` reads, for error messages.

@@ -214,23 +214,21 @@ pub(super) fn build(s: &mut Spline, plan: &Plan, layout: &Layout, x: Vec<f64>) -
             kappa: 0.0,
         }
     };
-    let side_before = |k: usize| -> Result<Option<Side>> {
-        let (before, _) = layout.spans_at(k);
-        let Some(sp) = before else { return Ok(None) };
+    // What node k sees arriving (`after` false) or leaving: a piece's end, a line, nothing.
+    let side = |k: usize, after: bool| -> Result<Option<Side>> {
+        let (before, next) = layout.spans_at(k);
+        let Some(sp) = (if after { next } else { before }) else {
+            return Ok(None);
+        };
         if layout.spans[sp].kind == Kind::Line {
-            return Ok(Some(line_side(sp, true)));
+            return Ok(Some(line_side(sp, !after)));
         }
         let r = &ranges[sp];
-        Ok(Some(end_of(&segments[r.end - 1])?))
-    };
-    let side_after = |k: usize| -> Result<Option<Side>> {
-        let (_, after) = layout.spans_at(k);
-        let Some(sp) = after else { return Ok(None) };
-        if layout.spans[sp].kind == Kind::Line {
-            return Ok(Some(line_side(sp, false)));
-        }
-        let r = &ranges[sp];
-        Ok(Some(start_of(&segments[r.start])?))
+        Ok(Some(if after {
+            start_of(&segments[r.start])?
+        } else {
+            end_of(&segments[r.end - 1])?
+        }))
     };
     let unmet = |k: usize, what: &'static str, miss: f64| Error::SplinePoint {
         point: point_of(layout, k),
@@ -242,7 +240,7 @@ pub(super) fn build(s: &mut Spline, plan: &Plan, layout: &Layout, x: Vec<f64>) -
     for k in 0..m {
         let node = &layout.nodes[k];
         let at = layout.position(&points, &x, k);
-        let (before, after) = (side_before(k)?, side_after(k)?);
+        let (before, after) = (side(k, false)?, side(k, true)?);
         let gap = [before, after]
             .iter()
             .flatten()

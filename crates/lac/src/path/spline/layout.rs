@@ -533,22 +533,12 @@ impl Layout {
                 matches!(plan.conditions[p], Some(Condition::Inflection { .. }))
                     && plan.constrained[s][end]
             };
-            spans.push(Span {
-                kind: if inflects(0) {
-                    Kind::HalfFromStart
-                } else {
-                    Kind::Curve
-                },
-                span: s,
-            });
-            spans.push(Span {
-                kind: if inflects(1) {
-                    Kind::HalfToEnd
-                } else {
-                    Kind::Curve
-                },
-                span: s,
-            });
+            for (end, half) in [(0, Kind::HalfFromStart), (1, Kind::HalfToEnd)] {
+                spans.push(Span {
+                    kind: if inflects(end) { half } else { Kind::Curve },
+                    span: s,
+                });
+            }
             nodes.push(Node {
                 at: At::Knot(
                     s,

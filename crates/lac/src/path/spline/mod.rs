@@ -406,10 +406,17 @@ impl Spline {
             .fold(0.0, f64::max)
     }
 
-    fn run(&self) -> Run<'_> {
-        Run {
-            segments: &self.segments,
-            items: &self.items,
+    /// The curve it is: its segments as a [`Chain`] when they are all of it, joined with
+    /// continuous tangents (the old behaviour, bit for bit), else the [`Run`] of its
+    /// segments and straight spans.
+    fn curve(&self) -> Box<dyn Curve + '_> {
+        if self.plain {
+            Box::new(Chain(&self.segments))
+        } else {
+            Box::new(Run {
+                segments: &self.segments,
+                items: &self.items,
+            })
         }
     }
 }
@@ -418,114 +425,58 @@ impl Spline {
 /// span and no corner, else segments and lines in order (θ breaking at corners).
 impl Curve for Spline {
     fn arc_length(&self) -> f64 {
-        if self.plain {
-            Chain(&self.segments).arc_length()
-        } else {
-            self.run().arc_length()
-        }
+        self.curve().arc_length()
     }
 
     fn start_point(&self) -> Point {
-        if self.plain {
-            Chain(&self.segments).start_point()
-        } else {
-            self.run().start_point()
-        }
+        self.curve().start_point()
     }
 
     fn end_point(&self) -> Point {
-        if self.plain {
-            Chain(&self.segments).end_point()
-        } else {
-            self.run().end_point()
-        }
+        self.curve().end_point()
     }
 
     fn signed_curvature_start(&self) -> f64 {
-        if self.plain {
-            Chain(&self.segments).signed_curvature_start()
-        } else {
-            self.run().signed_curvature_start()
-        }
+        self.curve().signed_curvature_start()
     }
 
     fn signed_curvature_end(&self) -> f64 {
-        if self.plain {
-            Chain(&self.segments).signed_curvature_end()
-        } else {
-            self.run().signed_curvature_end()
-        }
+        self.curve().signed_curvature_end()
     }
 
     fn turning(&self) -> f64 {
-        if self.plain {
-            Chain(&self.segments).turning()
-        } else {
-            self.run().turning()
-        }
+        self.curve().turning()
     }
 
     fn point_at_s(&self, s: f64) -> Result<Point> {
-        if self.plain {
-            Chain(&self.segments).point_at_s(s)
-        } else {
-            self.run().point_at_s(s)
-        }
+        self.curve().point_at_s(s)
     }
 
     fn theta_at_s(&self, s: f64) -> Result<f64> {
-        if self.plain {
-            Chain(&self.segments).theta_at_s(s)
-        } else {
-            self.run().theta_at_s(s)
-        }
+        self.curve().theta_at_s(s)
     }
 
     fn signed_curvature_at_s(&self, s: f64) -> Result<f64> {
-        if self.plain {
-            Chain(&self.segments).signed_curvature_at_s(s)
-        } else {
-            self.run().signed_curvature_at_s(s)
-        }
+        self.curve().signed_curvature_at_s(s)
     }
 
     fn curvature_derivative_at_s(&self, s: f64) -> Result<f64> {
-        if self.plain {
-            Chain(&self.segments).curvature_derivative_at_s(s)
-        } else {
-            self.run().curvature_derivative_at_s(s)
-        }
+        self.curve().curvature_derivative_at_s(s)
     }
 
     fn joint_arc_lengths(&self) -> Vec<f64> {
-        if self.plain {
-            Chain(&self.segments).joint_arc_lengths()
-        } else {
-            self.run().joint_arc_lengths()
-        }
+        self.curve().joint_arc_lengths()
     }
 
     fn samples_at_arc_lengths(&self, at: &[f64]) -> Result<Vec<Sample>> {
-        if self.plain {
-            Chain(&self.segments).samples_at_arc_lengths(at)
-        } else {
-            self.run().samples_at_arc_lengths(at)
-        }
+        self.curve().samples_at_arc_lengths(at)
     }
 
     fn sample_by_arc_length(&self, n: usize) -> Result<Vec<Sample>> {
-        if self.plain {
-            Chain(&self.segments).sample_by_arc_length(n)
-        } else {
-            self.run().sample_by_arc_length(n)
-        }
+        self.curve().sample_by_arc_length(n)
     }
 
     fn sample_adaptive(&self, accuracy: f64) -> Result<Vec<Sample>> {
-        if self.plain {
-            Chain(&self.segments).sample_adaptive(accuracy)
-        } else {
-            self.run().sample_adaptive(accuracy)
-        }
+        self.curve().sample_adaptive(accuracy)
     }
 }

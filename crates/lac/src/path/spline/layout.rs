@@ -421,6 +421,36 @@ impl Plan {
         (a.lerp(b, share), along, Vec2::new(-along.y, along.x))
     }
 
+    /// The plan with each tangent point's knot in the span before it instead of the one after
+    /// it, where that span is curved and its end free; `None` when no knot moves.
+    pub(super) fn tangent_knots_before(&self) -> Option<Plan> {
+        let n = self.types.len();
+        let spans = self.line.len();
+        let mut plan = self.clone();
+        let mut moved = false;
+        for i in 0..n {
+            if !matches!(self.types[i], PointType::Tangent(_))
+                || self.conditions[i] != Some(Condition::G2)
+            {
+                continue;
+            }
+            let before = if i > 0 {
+                i - 1
+            } else if spans == n {
+                n - 1
+            } else {
+                continue;
+            };
+            if self.line[before] || plan.constrained[before][1] || !plan.constrained[i][0] {
+                continue;
+            }
+            plan.constrained[i][0] = false;
+            plan.constrained[before][1] = true;
+            moved = true;
+        }
+        moved.then_some(plan)
+    }
+
     /// Whether the full problem is the relaxed one (nothing asks for a knot or frees an end).
     pub(super) fn is_relaxed(&self) -> bool {
         self.constrained.iter().all(|c| !c[0] && !c[1]) && self.free_ends == [false, false]

@@ -517,7 +517,13 @@ pub(super) fn solve(
     // each of KNOT_SHARES in turn until one converges (the spline depends on where they
     // are: a knot is a freedom the conditions do not fix).
     let mut first = None;
-    for share in KNOT_SHARES {
+    let before = plan.tangent_knots_before();
+    let plans = KNOT_SHARES.iter().map(|&share| (share, plan)).chain(
+        before
+            .iter()
+            .flat_map(|b| KNOT_SHARES.iter().map(move |&share| (share, b))),
+    );
+    for (share, plan) in plans {
         let plan = Plan {
             knot_share: share,
             ..plan.clone()

@@ -336,7 +336,7 @@ fn warm_re_solve_agrees_with_cold() {
 /// or straight spans' ends, extrema horizontal) at α = −1 and −0.5: each solved one verified
 /// against every target, each refusal naming its point; the share printed with
 /// `--nocapture`. `LAC_GLYPHS=N` draws N outlines per α (default 250; docs/accuracy.md
-/// quotes 1,000). The target is 97%; what is reached today (92.7% and 84.9% of
+/// quotes 1,000). The target is 97%; what is reached today (92.7% and 85.0% of
 /// 1,000) is asserted as a floor so that a regression fails, and the target is open.
 #[test]
 fn share_of_random_glyph_outlines() {

@@ -391,5 +391,6 @@ pub(super) fn build(s: &mut Spline, plan: &Plan, layout: &Layout, x: Vec<f64>) -
     s.reports = reports;
     s.unknowns = x;
     s.knot_share = layout.knot_share;
+    s.tangents_before = layout.tangents_before;
     Ok(())
 }

@@ -126,6 +126,8 @@ pub(super) struct Layout {
     pub(super) rows: Vec<usize>,
     /// The plan's knot share it was laid out with.
     pub(super) knot_share: f64,
+    /// Whether its tangent points' knots are in the spans before them.
+    pub(super) tangents_before: bool,
 }
 
 /// What the options ask at each point, checked: the plan both layouts are made from.
@@ -144,6 +146,8 @@ pub(super) struct Plan {
     /// Whether an open end's tangent is an unknown in the full problem (its curvature given,
     /// its angle not).
     pub(super) free_ends: [bool; 2],
+    /// Whether its tangent points' knots are in the spans before them.
+    pub(super) tangents_before: bool,
     /// Where along its chord, from its constrained end, the line across which a knot moves
     /// lies, in a span with one constrained end.
     pub(super) knot_share: f64,
@@ -403,6 +407,7 @@ impl Plan {
             constrained,
             free_ends,
             knot_share: 0.5,
+            tangents_before: false,
         })
     }
 
@@ -448,7 +453,14 @@ impl Plan {
             plan.constrained[before][1] = true;
             moved = true;
         }
+        plan.tangents_before = true;
         moved.then_some(plan)
+    }
+
+    /// Where its knots are, for the layout: the share, and whether the tangent points' knots
+    /// are before them.
+    fn placing(&self) -> (f64, bool) {
+        (self.knot_share, self.tangents_before)
     }
 
     /// Whether the full problem is the relaxed one (nothing asks for a knot or frees an end).
@@ -493,7 +505,7 @@ impl Layout {
                 span: s,
             })
             .collect();
-        Layout::finished(points, nodes, spans, closed, owner, plan.knot_share)
+        Layout::finished(points, nodes, spans, closed, owner, plan.placing())
     }
 
     /// The full problem with knots in the spans that have a constrained end; `knot_at(s)`
@@ -586,7 +598,7 @@ impl Layout {
             });
         }
         Ok((
-            Layout::finished(points, nodes, spans, closed, owner, plan.knot_share),
+            Layout::finished(points, nodes, spans, closed, owner, plan.placing()),
             x,
         ))
     }
@@ -598,7 +610,7 @@ impl Layout {
         spans: Vec<Span>,
         closed: bool,
         owner: Vec<usize>,
-        knot_share: f64,
+        (knot_share, tangents_before): (f64, bool),
     ) -> Layout {
         let m = nodes.len();
         let place = |node: &Node| match node.at {
@@ -629,6 +641,7 @@ impl Layout {
             owner,
             rows,
             knot_share,
+            tangents_before,
         }
     }
 

@@ -79,6 +79,9 @@ pub struct Spline {
     /// (the warm start of a re-solve).
     unknowns: Vec<f64>,
     knot_share: f64,
+    tangents_before: bool,
+    /// The last Jacobian of the point conditions (empty: none).
+    jacobian: solve::Entries,
 }
 
 /// Where a span of a [`Spline`] passes through an inflection, as measured on its two
@@ -168,8 +171,9 @@ impl Spline {
 
     /// [`Spline::from_points_with`] warm-started from `near`, an earlier spline with the
     /// same number of points, types and straight spans (e.g. before a point was dragged):
-    /// Newton's method starts from its answer, which takes a few steps instead of a solve
-    /// from the circles. Falls back to the cold solve when that does not converge.
+    /// Newton's method starts from its answer and its last Jacobian, which takes a few
+    /// residuals instead of a solve from the circles. Falls back to the cold solve when that
+    /// does not converge.
     pub fn from_points_near(
         points: &[Point],
         alpha: f64,
@@ -190,12 +194,17 @@ impl Spline {
             && near.options.lines == options.lines
             && near.options.start.curvature.is_some() == options.start.curvature.is_some()
             && near.options.end.curvature.is_some() == options.end.curvature.is_some();
-        s.solved(same.then_some((near.unknowns.as_slice(), near.knot_share)))
+        s.solved(same.then_some(solve::Warm {
+            unknowns: &near.unknowns,
+            share: near.knot_share,
+            before: near.tangents_before,
+            jacobian: &near.jacobian,
+        }))
     }
 
     /// The validated input solved (from `warm`, an earlier answer's unknowns, if given),
     /// built and checked.
-    fn solved(mut self, warm: Option<(&[f64], f64)>) -> Result<Spline> {
+    fn solved(mut self, warm: Option<solve::Warm<'_>>) -> Result<Spline> {
         let plan = layout::Plan::new(&self.points, self.closed, self.alpha, &self.options)?;
         // A smooth spline's answer built on the way (where the solver tries one at α
         // directly), kept when it is the answer.
@@ -208,7 +217,7 @@ impl Spline {
             }
             ok
         };
-        let (layout, x) = solve::solve(
+        let (layout, x, jacobian) = solve::solve(
             &self.points,
             self.closed,
             self.alpha,
@@ -220,6 +229,7 @@ impl Spline {
             Some((bx, trial)) if bx == x => self = trial,
             _ => build::build(&mut self, &plan, &layout, x)?,
         }
+        self.jacobian = jacobian.unwrap_or_default();
         check_total_length(&self)?;
         Ok(self)
     }
@@ -296,6 +306,8 @@ impl Spline {
             reports: Vec::new(),
             unknowns: Vec::new(),
             knot_share: 0.5,
+            tangents_before: false,
+            jacobian: Vec::new(),
         })
     }
 

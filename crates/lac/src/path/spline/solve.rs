@@ -5,6 +5,7 @@
 //! The relaxed problem first (with the continuation in α of the smooth spline), then the
 //! full one from it.
 
+use std::cell::RefCell;
 use std::f64::consts::PI;
 
 use kurbo::{Point, Vec2};
@@ -32,7 +33,7 @@ const HOMOTOPY: [f64; 4] = [0.25, 0.5, 0.75, 1.0];
 const KNOT_SHARES: [f64; 3] = [0.5, 0.3, 0.7];
 
 /// A Jacobian's entries: (row, unknown, value).
-type Entries = Vec<(usize, usize, f64)>;
+pub(super) type Entries = Vec<(usize, usize, f64)>;
 
 /// The shape of one span: one segment (its control triangle), an S (or half S), or a line.
 #[derive(Clone, Copy, Debug)]
@@ -51,12 +52,15 @@ pub(super) struct Value {
     pub(super) other: f64,
 }
 
-/// One problem: the points, the layout, the slope.
+/// One problem: the points, the layout, the slope; the Jacobian Newton's method starts from
+/// (an earlier answer's, for a warm re-solve) and the last one it made.
 pub(super) struct Problem<'a> {
     pub(super) points: &'a [Point],
     pub(super) layout: &'a Layout,
     pub(super) alpha: f64,
     pub(super) unit: Option<Unit>,
+    start: RefCell<Option<Entries>>,
+    last: RefCell<Option<Entries>>,
 }
 
 impl Problem<'_> {
@@ -66,6 +70,8 @@ impl Problem<'_> {
             layout,
             alpha,
             unit: Unit::new(alpha),
+            start: RefCell::new(None),
+            last: RefCell::new(None),
         }
     }
 
@@ -320,7 +326,7 @@ impl Problem<'_> {
         // point conditions' dense systems: each Jacobian costs two span solves an unknown);
         // the smooth spline's is made afresh at every step, as it always was.
         let keep = !self.layout.is_tridiagonal();
-        let mut jacobian: Option<Entries> = None;
+        let mut jacobian: Option<Entries> = self.start.take();
         for _ in 0..MAX_STEPS {
             let done = if exact {
                 self.misses(&x, &values).iter().all(|m| *m <= G2_TOLERANCE)
@@ -366,6 +372,9 @@ impl Problem<'_> {
                 // A kept Jacobian that no longer leads: make it afresh.
                 continue;
             };
+            if keep {
+                *self.last.borrow_mut() = Some(entries.clone());
+            }
             if keep && lambda == 1.0 && norm(&r2) < 0.25 * now {
                 jacobian = Some(entries);
             }
@@ -465,8 +474,21 @@ pub(super) fn segments_of(
     }
 }
 
+/// An earlier answer to start from: its unknowns, where its knots were (their share, and
+/// whether the tangent points' knots were in the spans before them) and its last Jacobian.
+pub(super) struct Warm<'a> {
+    pub(super) unknowns: &'a [f64],
+    pub(super) share: f64,
+    pub(super) before: bool,
+    pub(super) jacobian: &'a Entries,
+}
+
 /// The answer of one problem: the unknowns and the rows' misses.
 type Answer = (Vec<f64>, Vec<f64>);
+
+/// A solved problem: its layout, its unknowns, and the last Jacobian of the point conditions'
+/// Newton's method (the warm start of a re-solve), if it made one.
+pub(super) type Solved = (Layout, Vec<f64>, Option<Entries>);
 
 /// Solve the relaxed problem, then (when the plan asks more) the full one from it, or from
 /// `warm` (an earlier answer's unknowns for the same plan, and its knots' share). `accept` builds and checks a
@@ -477,14 +499,25 @@ pub(super) fn solve(
     closed: bool,
     alpha: f64,
     plan: &Plan,
-    warm: Option<(&[f64], f64)>,
+    warm: Option<Warm<'_>>,
     accept: &mut dyn FnMut(&Layout, &[f64]) -> bool,
-) -> Result<(Layout, Vec<f64>)> {
+) -> Result<Solved> {
     let relaxed = Layout::relaxed(points, closed, plan);
-    if let Some((w, share)) = warm {
+    if let Some(Warm {
+        unknowns: w,
+        share,
+        before,
+        jacobian,
+    }) = warm
+    {
+        let placed = if before {
+            plan.tangent_knots_before()
+        } else {
+            None
+        };
         let warm_plan = Plan {
             knot_share: share,
-            ..plan.clone()
+            ..placed.unwrap_or_else(|| plan.clone())
         };
         let start = if plan.is_relaxed() {
             (w.len() == relaxed.owner.len()).then(|| (relaxed.clone(), w.to_vec()))
@@ -496,9 +529,11 @@ pub(super) fn solve(
         };
         if let Some((layout, x)) = start {
             let p = Problem::new(points, &layout, alpha);
+            *p.start.borrow_mut() = (!jacobian.is_empty()).then(|| jacobian.clone());
             if let Ok((x, misses)) = p.newton(x, &vec![0.0; layout.rows.len()]) {
                 if converged(&misses) {
-                    return Ok((layout, x));
+                    let jacobian = p.last.take();
+                    return Ok((layout, x, jacobian));
                 }
             }
         }
@@ -511,18 +546,18 @@ pub(super) fn solve(
         })?
     };
     if plan.is_relaxed() {
-        return Ok((relaxed, x));
+        return Ok((relaxed, x, None));
     }
     // The full problem from the relaxed answer, its knots' lines across their chords at
     // each of KNOT_SHARES in turn until one converges (the spline depends on where they
     // are: a knot is a freedom the conditions do not fix).
     let mut first = None;
     let before = plan.tangent_knots_before();
-    let plans = KNOT_SHARES.iter().map(|&share| (share, plan)).chain(
-        before
-            .iter()
-            .flat_map(|b| KNOT_SHARES.iter().map(move |&share| (share, b))),
-    );
+    // Each share with the tangent points' knots after them, then before them.
+    let plans = KNOT_SHARES
+        .iter()
+        .flat_map(|&share| [Some((share, plan)), before.as_ref().map(|b| (share, b))])
+        .flatten();
     for (share, plan) in plans {
         let plan = Plan {
             knot_share: share,
@@ -548,7 +583,7 @@ fn full(
     plan: &Plan,
     relaxed: &Layout,
     x: &[f64],
-) -> Result<(Layout, Vec<f64>)> {
+) -> Result<Solved> {
     // The knots where the relaxed spline's spans cross the lines of their frames; every
     // unknown point tangent from the relaxed answer.
     let p = Problem::new(points, relaxed, alpha);
@@ -589,7 +624,8 @@ fn full(
     let mut best: Option<Answer> = None;
     if let Ok(answer) = p.newton(x0.clone(), &zero) {
         if converged(&answer.1) {
-            return Ok((layout, answer.0));
+            let jacobian = p.last.take();
+            return Ok((layout, answer.0, jacobian));
         }
         best = Some(answer);
     }
@@ -603,7 +639,8 @@ fn full(
                 x = x2;
                 if t == 1.0 {
                     if converged(&misses) {
-                        return Ok((layout, x));
+                        let jacobian = p.last.take();
+                        return Ok((layout, x, jacobian));
                     }
                     if best
                         .as_ref()

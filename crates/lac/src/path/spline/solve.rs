@@ -563,7 +563,9 @@ pub(super) fn solve(
             knot_share: share,
             ..plan.clone()
         };
-        match full(points, closed, alpha, &plan, &relaxed, &x) {
+        // (The homotopy at the first share only: a refusal costs each placement's Newton.)
+        let homotopy = share == KNOT_SHARES[0];
+        match full(points, closed, alpha, &plan, &relaxed, &x, homotopy) {
             Ok(answer) => return Ok(answer),
             Err(e) => {
                 first.get_or_insert(e);
@@ -574,8 +576,8 @@ pub(super) fn solve(
 }
 
 /// The full problem of `plan` from the relaxed answer `x`: Newton's method from it, and where
-/// that does not converge a homotopy that takes the relaxed answer's residuals away step by
-/// step.
+/// that does not converge (and `homotopy`) a homotopy that takes the relaxed answer's
+/// residuals away step by step.
 fn full(
     points: &[Point],
     closed: bool,
@@ -583,6 +585,7 @@ fn full(
     plan: &Plan,
     relaxed: &Layout,
     x: &[f64],
+    homotopy: bool,
 ) -> Result<Solved> {
     // The knots where the relaxed spline's spans cross the lines of their frames; every
     // unknown point tangent from the relaxed answer.
@@ -632,7 +635,7 @@ fn full(
     // The homotopy: the relaxed answer's residuals taken away step by step.
     let r0 = p.residual(&x0, &p.spans(&x0)?);
     let mut x = x0;
-    for t in HOMOTOPY {
+    for t in HOMOTOPY.into_iter().filter(|_| homotopy) {
         let offset: Vec<f64> = r0.iter().map(|r| (1.0 - t) * r).collect();
         match p.newton(x.clone(), if t == 1.0 { &zero } else { &offset }) {
             Ok((x2, misses)) => {

@@ -125,6 +125,7 @@ bench: $(VENV)/.installed
 	cargo bench -p lac --bench quasi
 	cargo bench -p lac --bench space
 	cargo bench -p lac --bench path
+	cargo bench -p lac --bench spline
 	cargo bench -p lac-export --bench export -- --warm-up-time 1 --measurement-time 3
 	$(PY) tools/reference/bench_clothoids.py
 	$(PY) tools/bench_vs_clothoids.py --repeats 3

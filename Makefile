@@ -18,7 +18,7 @@ PROPTEST_RNG_SEED ?= 20261123
 export PROPTEST_RNG_SEED
 LAC_BIN := $(or $(CARGO_TARGET_DIR),$(CURDIR)/target)/debug/lac
 
-.PHONY: test check rust python py py-bench integrations test-integrations \
+.PHONY: test check rust python py py-bench spiro integrations test-integrations \
 	integrations-screenshots e2e docs fixtures bench example fuzz afl
 
 test: rust python py test-integrations e2e
@@ -105,6 +105,12 @@ integrations-screenshots: integrations
 	inkscape $(WHEELS)/comb.svg --export-type=png --export-width=960 \
 		--export-png-color-mode=RGB_8 --export-filename=docs/integrations-inkscape.png
 
+# lac's splines with point types beside libspiro on 1,000 glyph-like outlines (one JSON line):
+# needs Debian's libspiro-dev and a C compiler (installed when missing; root), not in `make test`.
+spiro: py
+	test -f /usr/include/spiroentrypoints.h || (apt-get update && apt-get install -y libspiro-dev)
+	$(PY) tools/spiro/compare.py --count 1000
+
 # lac from Python against Clothoids' build_G1 on the same alpha = -1 inputs (one JSON line).
 py-bench: py
 	$(PY) crates/lac-py/bench/bench_clothoids.py
@@ -161,6 +167,7 @@ bench: $(VENV)/.installed
 	cargo bench -p lac --bench quasi
 	cargo bench -p lac --bench space
 	cargo bench -p lac --bench path
+	cargo bench -p lac --bench spline
 	cargo bench -p lac-export --bench export -- --warm-up-time 1 --measurement-time 3
 	$(PY) tools/reference/bench_clothoids.py
 	$(PY) tools/bench_vs_clothoids.py --repeats 3

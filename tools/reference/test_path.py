@@ -270,3 +270,123 @@ def test_g2_spline_joints_are_continuous_in_the_mpmath_reference():
           f"|κ| there at most {float(worst_zero):.2e} of the halves' other ends")
     assert checked == 6 * 3 + 3 * 4 + 2 * 4 + 3 * 6
     assert inflections == 3
+
+
+# Splines with point types (docs/math.md, splines with point types): a U whose straight sides
+# the curve meets with zero curvature and whose bottom is horizontal; tangent points; G2
+# Hermite ends; a closed outline with a stem, a corner and horizontal extrema.
+TYPED_CASES = [
+    (["--through", "0,4 0,1.5 1,0 2,1.5 2,4", "--types", "s s t s s", "--angles", "2:0",
+      "--lines", "0-1,3-4"], [-1.0, -0.5]),
+    (["--through", "0,0 1,0.6 2,0.8 3,0.55 4,0", "--types", "s s t s s", "--angles", "2:0"],
+     [-1.0, -0.5, 0.0, 0.5, 1.0]),
+    (["--through", "0,0 1,0.6 2,0.8 3,0.6 4,0", "--start-angle", "0.7", "--start-curvature",
+      "-0.3", "--end-curvature", "-0.2"], [-1.0, 0.0, 0.5, 2.0]),
+    (["--through", "0,0 0,4 2,3.6 3,2 2,0.4", "--closed", "--types", "c c s t s",
+      "--angles", "3:-1.5707963267948966", "--lines", "0-1"], [-1.0]),
+]
+
+
+def test_splines_with_point_types_meet_their_conditions_in_the_mpmath_reference():
+    """`lac spline` with point types: every piece's segment solved again by the mpmath
+    reference from its reported control triangle (a piece that meets a straight span or an
+    inflection by the reference of a segment ending at its inflection); at every point and
+    knot the tangent is continuous (the triangles' legs collinear, except at corners) to
+    1e-12 rad and the reference's curvature to 1e-9 (relative, except at corners); a given
+    direction is the leg's to 1e-12 rad; where a curve meets a straight span the reference's
+    curvature is within 1e-12 of the largest, its leg along the span; a given end curvature
+    is the reference's to 1e-12 (relative)."""
+    require("spline")
+    mp.dps = 30
+    worst = {"g2": mpf(0), "tangent": mpf(0), "flat": mpf(0), "end": mpf(0), "given": mpf(0)}
+    joints = 0
+    for args, alphas in TYPED_CASES:
+        through = args[args.index("--through") + 1]
+        points = [tuple(map(float, p.split(","))) for p in through.split()]
+        n = len(points)
+        closed = "--closed" in args
+        for alpha in alphas:
+            run = subprocess.run([lac_bin(), "spline", "--alpha", str(alpha), "--samples", "2"]
+                                 + args, capture_output=True, text=True, timeout=120)
+            assert run.returncode == 0, (args, alpha, run.stderr)
+            report = json.loads(run.stdout)
+            pieces, at, lines = report["pieces"], report["at_points"], report["lines"]
+            spans = [p["span"] for p in pieces]
+            tris = [[tuple(p) for p in piece["control_points"]] for piece in pieces]
+            ends = []
+            for k, tri in enumerate(tris):
+                span = spans[k]
+                first = k == 0 or spans[k - 1] != span
+                last = k + 1 == len(tris) or spans[k + 1] != span
+                flat_start = tri[0] != (points[span] if first else tris[k - 1][2])
+                flat_end = tri[2] != (points[(span + 1) % n] if last else tris[k + 1][0])
+                if flat_end:
+                    k_flat, k_other = inflection_segment(tri, alpha, at_start=False)
+                    ends.append((k_other, k_flat))
+                elif flat_start:
+                    ends.append(inflection_segment(tri, alpha, at_start=True))
+                else:
+                    pa, pb, pc = (mpc(*map(mpf, p)) for p in tri)
+                    ref = solve_segment(pa, pb, pc, alpha, [0, 1])
+                    ends.append((ref["curvature_start"], ref["curvature_end"]))
+            scale = max(abs(e) for pair in ends for e in pair)
+
+            def leg(tri, at_start):
+                a, b = (tri[0], tri[1]) if at_start else (tri[1], tri[2])
+                return atan2(mpf(b[1]) - mpf(a[1]), mpf(b[0]) - mpf(a[0]))
+
+            def wrap(a):
+                return abs(a - 2 * mp.pi * mp.nint(a / (2 * mp.pi)))
+
+            # Joints inside a span: knots (exact) and inflections (checked above by the
+            # reference's zero).
+            for k in range(len(tris) - 1):
+                if spans[k] == spans[k + 1] and tris[k][2] == tris[k + 1][0]:
+                    t = wrap(leg(tris[k], False) - leg(tris[k + 1], True))
+                    jump = abs(ends[k][1] - ends[k + 1][0]) / max(abs(ends[k][1]),
+                                                                 abs(ends[k + 1][0]))
+                    assert t <= mpf("1e-12") and jump <= JUMP, (args, alpha, k, t, jump)
+                    worst["g2"], worst["tangent"] = max(worst["g2"], jump), max(worst["tangent"], t)
+                    joints += 1
+            # The points.
+            for i in range(n):
+                before_span, after_span = (i - 1) % n, i
+                has_before, has_after = closed or i > 0, closed or i + 1 < n
+                b = a = None
+                if has_before and before_span not in lines:
+                    kb = max(k for k in range(len(spans)) if spans[k] == before_span)
+                    b = (leg(tris[kb], False), ends[kb][1])
+                if has_after and after_span not in lines:
+                    ka = min(k for k in range(len(spans)) if spans[k] == after_span)
+                    a = (leg(tris[ka], True), ends[ka][0])
+                kind, given = at[i]["type"], at[i]["given"]
+                for side, g in ((b, given[0]), (a, given[1])):
+                    if side is not None and g is not None:
+                        worst["given"] = max(worst["given"], wrap(side[0] - mpf(g)))
+                        assert wrap(side[0] - mpf(g)) <= mpf("1e-12"), (args, alpha, i)
+                for side, on_line in ((b, has_after and after_span in lines),
+                                      (a, has_before and before_span in lines)):
+                    if side is not None and on_line and kind != "corner":
+                        span = after_span if side is b else before_span
+                        d = (mpf(points[(span + 1) % n][0]) - mpf(points[span][0]),
+                             mpf(points[(span + 1) % n][1]) - mpf(points[span][1]))
+                        t = wrap(side[0] - atan2(d[1], d[0]))
+                        flat = abs(side[1]) / scale
+                        assert t <= mpf("1e-12") and flat <= mpf("1e-12"), (args, alpha, i, t, flat)
+                        worst["flat"], worst["tangent"] = max(worst["flat"], flat), max(worst["tangent"], t)
+                if b is not None and a is not None and kind != "corner":
+                    t = wrap(b[0] - a[0])
+                    jump = abs(b[1] - a[1]) / max(abs(b[1]), abs(a[1]))
+                    assert t <= mpf("1e-12") and jump <= JUMP, (args, alpha, i, t, jump)
+                    worst["g2"], worst["tangent"] = max(worst["g2"], jump), max(worst["tangent"], t)
+                    joints += 1
+            for name, side, flag in (("start", ends[0][0], "--start-curvature"),
+                                     ("end", ends[-1][1], "--end-curvature")):
+                if flag in args:
+                    want = mpf(args[args.index(flag) + 1])
+                    err = abs(side - want) / abs(want)
+                    worst["end"] = max(worst["end"], err)
+                    assert err <= mpf("1e-12"), (args, alpha, name, err)
+    print(f"{joints} joints with point types; worst in the reference: " +
+          ", ".join(f"{k} {float(v):.1e}" for k, v in worst.items()))
+    assert joints >= 40

@@ -231,16 +231,31 @@ pub(crate) enum Command {
     /// inflect), the tangent angles at the points solved so that the curvature is continuous
     ///
     /// Open splines take their end tangents from --start-angle/--end-angle (radians) or from
-    /// the circles through the first and last three points. The JSON has "closed", "alpha",
-    /// "arc_length", "max_curvature_jump", "points", "angles", "pieces" [{span,
-    /// control_points, lambda, arc_length, curvature:[start,end]}], "inflections" [{span,
-    /// point, curvature}], "curvature_jumps" (at each joint) and "samples". A span that would
-    /// have to inflect with alpha >= 0, or where no continuous curvature is reached, is
-    /// named in the error (kind no_g2_path, exit code 3); a span whose segment cannot be
-    /// drawn, likewise.
+    /// the circles through the first and last three points; --start-curvature and
+    /// --end-curvature give an end's curvature too (with its angle, a G2 Hermite end).
+    /// Points may have types (--types, one letter a point): s smooth, t tangent (G2 with the
+    /// direction given in --angles i:θ, e.g. horizontal at an extremum), c corner (the
+    /// tangent may break; each side's direction free or given as --angles i:in/out); spans
+    /// between consecutive points may be straight (--lines i-j), met by the curve on either
+    /// side with zero curvature (alpha < 0 only; a corner there lets the tangent break
+    /// instead). A condition that takes a tangent away puts a knot (a G2 joint) in the span
+    /// next to it. Closed splines take types, angles and lines too.
+    ///
+    /// The JSON has "closed", "alpha", "arc_length", "max_curvature_jump", "points",
+    /// "angles", "pieces" [{span, control_points, lambda, arc_length, curvature:[start,end]}],
+    /// "inflections" [{span, point, curvature}], "curvature_jumps" (at each joint with
+    /// continuous curvature), "at_points" [{type, given:[in,out], straight:[in,out],
+    /// angles:[in,out], curvatures:[in,out], gap}] (null outside an open spline's ends),
+    /// "lines", "start"/"end" ({angle, curvature} when an end curvature is given), "knots"
+    /// [{span, point, angle, curvature_jump}] and "samples". A span that would have to
+    /// inflect with alpha >= 0, or where no continuous curvature is reached, is named in the
+    /// error (kind no_g2_path, exit code 3); so is a point whose type cannot be met, with
+    /// what to change; a span whose segment cannot be drawn, likewise.
     #[command(
         override_usage = "lac spline --through \"x0,y0 x1,y1 x2,y2 …\" --alpha A [--closed] \
-                                [--start-angle R --end-angle R]\n                \
+                                [--start-angle R] [--end-angle R]\n                \
+                                [--types \"s t c …\"] [--angles \"i:θ,…\"] [--lines \"i-j,…\"]\n                \
+                                [--start-curvature K] [--end-curvature K]\n                \
                                 [--samples N] [--format json|csv|svg] [-o FILE|-] [--comb] [--evolute]"
     )]
     Spline(SplineArgs),

@@ -142,21 +142,34 @@ fn flat_share(alpha: f64) -> f64 {
 /// the spline, too short for a knot span.
 const MIN_FLAT_SHARE: f64 = 1e-6;
 
-/// A spline's pieces in order for export: the halves of a span through an inflection
-/// shortened by `flat_share` of their length at the inflection (solved again on their
-/// control triangles with the inflection-side leg shortened by as much: points so near a
-/// flat end are beyond the resolution of the tangent angle that places them on the
-/// segment), with the straight piece between them.
+/// A spline's pieces in order for export: the halves of a span through an inflection, and
+/// a piece that meets a straight span, shortened by `flat_share` of their length at their
+/// flat end (solved again on their control triangles with the flat-side leg shortened by
+/// as much: points so near a flat end are beyond the resolution of the tangent angle that
+/// places them on the segment), with a straight piece across every gap that leaves (a
+/// straight span, and the flat stretches).
 pub fn spline_pieces(spline: &Spline) -> Result<Vec<Piece<'_>>> {
     let pieces = spline.pieces();
     let triangles = spline.control_triangles();
-    let spans = spline.spans_of_pieces();
-    let n = pieces.len();
+    let flat = lac::INFLECTION_LIMIT * spline.max_abs_curvature();
+    // A gap longer than this is a straight span.
+    let straight = 1e-9 * Curve::arc_length(spline);
     let mut out: Vec<Piece> = Vec::new();
+    // An open spline that starts on a straight span.
+    let start = Curve::start_point(spline);
+    if (pieces[0].start_point() - start).hypot() > straight {
+        out.push(Piece::Line(start, pieces[0].start_point()));
+    }
+    let end_of = |out: &[Piece]| match out.last() {
+        Some(Piece::Segment(s)) => Some(s.end_point()),
+        Some(Piece::Line(_, b)) => Some(*b),
+        None => None,
+    };
     for (k, seg) in pieces.iter().enumerate() {
         let cut = flat_share(seg.alpha()) * Curve::arc_length(seg);
-        let ends_flat = k + 1 < n && spans[k + 1] == spans[k] && cut > 0.0;
-        let starts_flat = k > 0 && spans[k - 1] == spans[k] && cut > 0.0;
+        let (k0, k1) = (seg.signed_curvature_start(), seg.signed_curvature_end());
+        let ends_flat = k1.abs() <= flat && cut > 0.0;
+        let starts_flat = k0.abs() <= flat && cut > 0.0;
         let [a, p, b] = triangles[k];
         let piece = if ends_flat {
             Segment::from_control_points([a, p, b - (b - p).normalize() * cut], seg.alpha())?
@@ -165,14 +178,30 @@ pub fn spline_pieces(spline: &Spline) -> Result<Vec<Piece<'_>>> {
         } else {
             seg.clone()
         };
-        if starts_flat {
-            let from = match out.last() {
-                Some(Piece::Segment(s)) => s.end_point(),
-                _ => seg.start_point(),
-            };
-            out.push(Piece::Line(from, piece.start_point()));
+        if let Some(from) = end_of(&out) {
+            let gap = (piece.start_point() - from).hypot();
+            if gap > 0.0 && (starts_flat || gap > straight) {
+                out.push(Piece::Line(from, piece.start_point()));
+            }
         }
         out.push(Piece::Segment(Cow::Owned(piece)));
+    }
+    // An open spline that ends on a straight span; a closed one whose last span is
+    // straight.
+    let end = Curve::end_point(spline);
+    if !spline.is_closed() {
+        if let Some(from) = end_of(&out) {
+            if (end - from).hypot() > straight {
+                out.push(Piece::Line(from, end));
+            }
+        }
+    } else {
+        if let (Some(from), Some(Piece::Segment(first))) = (end_of(&out), out.first()) {
+            let to = first.start_point();
+            if (to - from).hypot() > straight {
+                out.push(Piece::Line(from, to));
+            }
+        }
     }
     Ok(out)
 }

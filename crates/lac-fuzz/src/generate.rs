@@ -577,11 +577,53 @@ pub(crate) fn spline(rng: &mut Rng) -> Input {
     }
     let ends =
         (!closed && rng.chance(0.2)).then(|| [rng.uniform(-3.2, 3.2), rng.uniform(-3.2, 3.2)]);
+    // Point types on half the inputs: corners, tangent points (their directions near the
+    // polygon's, or anything), straight spans, end curvatures (0 now and then).
+    let (mut types, mut angles, mut lines, mut curvatures) =
+        (Vec::new(), Vec::new(), Vec::new(), [None, None]);
+    if rng.chance(0.5) && !points.is_empty() {
+        let n = points.len();
+        for i in 0..n {
+            let [x0, y0] = points[i];
+            let [x1, y1] = points[(i + 1) % n];
+            let along = (y1 - y0).atan2(x1 - x0);
+            let (kind, given) = match rng.below(8) {
+                0 => ("c", [rng.chance(0.5).then(|| rng.uniform(-3.2, 3.2)), None]),
+                1 => ("t", [Some(along + rng.uniform(-0.3, 0.3)), None]),
+                2 if rng.chance(0.2) => ("t", [Some(rng.uniform(-10.0, 10.0)), None]),
+                _ => ("s", [None, None]),
+            };
+            types.push(kind.to_string());
+            angles.push(given);
+            if rng.chance(0.12) {
+                lines.push(if rng.chance(0.05) {
+                    rng.below(2 * n)
+                } else {
+                    i
+                });
+            }
+        }
+        if !closed {
+            for c in curvatures.iter_mut() {
+                if rng.chance(0.2) {
+                    *c = Some(if rng.chance(0.2) {
+                        0.0
+                    } else {
+                        rng.uniform(-3.0, 3.0)
+                    });
+                }
+            }
+        }
+    }
     Input::Spline {
         points,
         alpha: alpha(rng),
         closed,
         ends,
+        types,
+        angles,
+        lines,
+        curvatures,
     }
 }
 

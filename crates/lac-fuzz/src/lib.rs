@@ -102,7 +102,7 @@ pub enum Input {
         /// Curvature continuous at the joints (else joints at the leg midpoints).
         g2: bool,
     },
-    /// `Spline::g2` through points.
+    /// `Spline::from_points_with` through points, with point types.
     Spline {
         /// The points it passes through.
         points: Vec<[f64; 2]>,
@@ -112,6 +112,18 @@ pub enum Input {
         closed: bool,
         /// An open spline's end tangent directions (None: the circles').
         ends: Option<[f64; 2]>,
+        /// Each point's type, `s`, `t` or `c` (empty: every point smooth).
+        #[serde(default)]
+        types: Vec<String>,
+        /// Each point's given directions (a tangent point's first; a corner's in and out).
+        #[serde(default)]
+        angles: Vec<[Option<f64>; 2]>,
+        /// The straight spans.
+        #[serde(default)]
+        lines: Vec<usize>,
+        /// An open spline's end curvatures.
+        #[serde(default)]
+        curvatures: [Option<f64>; 2],
     },
     /// `SpaceSegment::from_control_points`.
     Space {

@@ -4,7 +4,7 @@
 
 use crate::export::AnyCurveObject;
 use lac::{Alphas, Continuity, ControlPolygon};
-use lac::{Closure, Curve, SegmentChain};
+use lac::{Closure, Curve};
 use lac_io::json::AnyCurve;
 use numpy::{PyArray1, PyArray2, PyArray3};
 use pyo3::prelude::*;
@@ -152,16 +152,83 @@ impl PyPath {
 
 /// A G2 spline of log-aesthetic segments through `points` (at least three): one segment per
 /// span, the tangent angles at the points solved for continuous curvature. An open spline's
-/// end tangent directions are `ends` = (start, end) in radians, or those of the circles
-/// through its first and last three points.
+/// end tangent directions are `ends` = (start, end) in radians (either may be None), or those
+/// of the circles through its first and last three points.
+///
+/// Point types, as `lac spline` takes them: `types` one per point, "s"/"smooth", "t"/"tangent"
+/// (G2 with the direction given in `angles`), "c"/"corner" (the tangent may break), as a
+/// sequence or one string "s t c …"; `angles` maps a tangent point to its direction and a
+/// corner to its two sides (in, out), either None for free; `lines` lists the straight spans
+/// (i: from point i to the next), which the curve meets with zero curvature (alpha < 0);
+/// `start_curvature` and `end_curvature` an open spline's end curvatures (with the end's
+/// angle, a G2 Hermite end).
 ///
 /// For `alpha < 0`, a span that must inflect is an S: two segments meeting at zero
 /// curvature (`inflections`, `spans_of_pieces`).
 ///
-/// Raises `LacError` (kind `no_g2_path`, naming the span) where a span would have to inflect
-/// with `alpha >= 0`, or no continuous curvature is reached.
+/// Raises `LacError` (kind `no_g2_path`, naming the span or the point and what to change)
+/// where a span would have to inflect with `alpha >= 0`, a point's type cannot be met, or no
+/// continuous curvature is reached.
 #[pyclass(module = "lac", name = "Spline", frozen)]
 pub(crate) struct PySpline(pub(crate) lac::Spline);
+
+/// One point's measurements as Python sees them: (type, given, straight, angles,
+/// curvatures).
+type PointRow = (
+    &'static str,
+    Pair<Option<f64>>,
+    Pair<bool>,
+    Pair<Option<f64>>,
+    Pair<Option<f64>>,
+);
+
+/// Two values, arriving and leaving (a Python tuple).
+type Pair<T> = (T, T);
+
+fn pair<T: Copy>(v: [T; 2]) -> Pair<T> {
+    (v[0], v[1])
+}
+
+/// The point types of `types` (a string of letters or a sequence of names) for `n` points.
+fn point_types(
+    py: Python<'_>,
+    types: &Bound<'_, PyAny>,
+    n: usize,
+) -> PyResult<Vec<lac::PointType>> {
+    let names: Vec<String> = match types.extract::<String>() {
+        Ok(text) => text
+            .split(|c: char| c == ',' || c.is_whitespace())
+            .filter(|t| !t.is_empty())
+            .map(str::to_string)
+            .collect(),
+        Err(_) => types.extract::<Vec<String>>().map_err(|_| {
+            invalid(
+                py,
+                "types must be a string \"s t c …\" or a sequence of type names",
+            )
+        })?,
+    };
+    if names.len() != n {
+        return Err(invalid(
+            py,
+            format!(
+                "types has {} entries for {n} points: one per point",
+                names.len()
+            ),
+        ));
+    }
+    names
+        .iter()
+        .map(|name| {
+            lac_io::json::point_type_named(name).ok_or_else(|| {
+                invalid(
+                    py,
+                    format!("{name:?} is not a point type (s smooth, t tangent, c corner)"),
+                )
+            })
+        })
+        .collect()
+}
 
 #[pymethods]
 impl PySpline {
@@ -171,41 +238,140 @@ impl PySpline {
     }
 
     #[new]
-    #[pyo3(signature = (points, alpha, closed = false, ends = None))]
+    #[pyo3(signature = (
+        points, alpha, closed = false, ends = None, types = None, angles = None, lines = None,
+        start_curvature = None, end_curvature = None
+    ))]
+    #[allow(clippy::too_many_arguments)] // Python keyword arguments
     fn new(
         py: Python<'_>,
         points: &Bound<'_, PyAny>,
         alpha: f64,
         closed: bool,
         ends: Option<&Bound<'_, PyAny>>,
+        types: Option<&Bound<'_, PyAny>>,
+        angles: Option<std::collections::HashMap<usize, Bound<'_, PyAny>>>,
+        lines: Option<Vec<usize>>,
+        start_curvature: Option<f64>,
+        end_curvature: Option<f64>,
     ) -> PyResult<Self> {
         let points = point_list(py, points, "points")?;
-        let ends = match ends.map(|e| vector(e, "ends")).transpose()? {
+        if closed && (ends.is_some() || start_curvature.is_some() || end_curvature.is_some()) {
+            return Err(invalid(
+                py,
+                "ends are an open spline's (and end curvatures); closed=True",
+            ));
+        }
+        // Two angles, or a pair whose entries may be None.
+        let ends: Option<(Option<f64>, Option<f64>)> = match ends {
             None => None,
-            Some(v) => match v.as_slice() {
-                [a, b] if !closed => Some([*a, *b]),
-                [_, _] => return Err(invalid(py, "ends are an open spline's; closed=True")),
-                _ => {
-                    return Err(invalid(
-                        py,
-                        format!("ends must be two angles (start, end), got {}", v.len()),
-                    ))
-                }
+            Some(e) => match e.extract::<(Option<f64>, Option<f64>)>() {
+                Ok(pair) => Some(pair),
+                Err(_) => match vector(e, "ends")?.as_slice() {
+                    [a, b] => Some((Some(*a), Some(*b))),
+                    v => {
+                        return Err(invalid(
+                            py,
+                            format!("ends must be two angles (start, end), got {}", v.len()),
+                        ))
+                    }
+                },
             },
         };
-        Ok(PySpline(
-            lac::Spline::from_points(
-                &points,
-                alpha,
-                if closed {
-                    Closure::Closed
-                } else {
-                    Closure::Open
-                },
-                ends,
-            )
-            .or_raise(py)?,
-        ))
+        let mut types = match types {
+            Some(t) => point_types(py, t, points.len())?,
+            None => Vec::new(),
+        };
+        for (i, value) in angles.unwrap_or_default() {
+            let slot = types.get_mut(i).ok_or_else(|| {
+                invalid(py, format!("angles: point {i} has no type t or c in types"))
+            })?;
+            *slot = match *slot {
+                lac::PointType::Tangent(_) => {
+                    lac::PointType::Tangent(value.extract().map_err(|_| {
+                        invalid(
+                            py,
+                            format!("angles: point {i} is a tangent point: one angle"),
+                        )
+                    })?)
+                }
+                lac::PointType::Corner { .. } => {
+                    let (before, after): (Option<f64>, Option<f64>) =
+                        value.extract().map_err(|_| {
+                            invalid(py, format!("angles: point {i} is a corner: (in, out)"))
+                        })?;
+                    lac::PointType::Corner { before, after }
+                }
+                lac::PointType::Smooth => {
+                    return Err(invalid(
+                        py,
+                        format!("angles: point {i} is smooth: give it type t or c"),
+                    ))
+                }
+            };
+        }
+        if let Some(i) = types
+            .iter()
+            .position(|t| matches!(t, lac::PointType::Tangent(a) if a.is_nan()))
+        {
+            return Err(invalid(
+                py,
+                format!("point {i} is a tangent point: give its direction in angles"),
+            ));
+        }
+        let (start, end) = ends.unwrap_or((None, None));
+        let options = lac::SplineOptions {
+            types,
+            lines: lines.unwrap_or_default(),
+            start: lac::SplineEnd {
+                angle: start,
+                curvature: start_curvature,
+            },
+            end: lac::SplineEnd {
+                angle: end,
+                curvature: end_curvature,
+            },
+        };
+        let closure = if closed {
+            Closure::Closed
+        } else {
+            Closure::Open
+        };
+        let spline = py
+            .detach(|| lac::Spline::from_points_with(&points, alpha, closure, &options))
+            .or_raise(py)?;
+        Ok(PySpline(spline))
+    }
+
+    /// What was measured at each point: a list of (type, given directions (in, out),
+    /// straight (in, out), angles (in, out), curvatures (in, out)), None outside an open
+    /// spline's ends.
+    #[getter]
+    fn point_reports(&self) -> Vec<PointRow> {
+        self.0
+            .point_reports()
+            .iter()
+            .map(|p| {
+                let given = match p.kind {
+                    lac::PointType::Smooth => [None, None],
+                    lac::PointType::Tangent(a) => [Some(a), Some(a)],
+                    lac::PointType::Corner { before, after } => [before, after],
+                };
+                (
+                    p.kind.name(),
+                    pair(given),
+                    pair(p.straight),
+                    pair(p.angles),
+                    pair(p.curvatures),
+                )
+            })
+            .collect()
+    }
+
+    /// The knots (joints inside spans that pay for the points' conditions), shape (m, 2).
+    #[getter]
+    fn knots<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        points2(py, self.0.knots().iter().map(|k| k.point))
     }
 
     /// Whether it is closed.

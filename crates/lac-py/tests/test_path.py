@@ -122,6 +122,32 @@ def test_spline_options_and_errors(cli):
         lac.Spline(ring, 0.5, closed=True, ends=[0.1, 0.2])
 
 
+def test_spline_point_types_are_the_command_lines(cli):
+    """Point types, straight spans and end curvatures as keyword arguments: the same spline
+    as `lac spline --types --angles --lines --start-curvature`, each point's measurements in
+    `point_reports`."""
+    u = [(0.0, 4.0), (0.0, 1.5), (1.0, 0.0), (2.0, 1.5), (2.0, 4.0)]
+    spline = lac.Spline(u, -1.0, types="s s t s s", angles={2: 0.0}, lines=[0, 3])
+    ref = cli("spline", "--through", arg(u), "--alpha", "-1", "--types", "s s t s s",
+              "--angles", "2:0", "--lines", "0-1,3-4")
+    assert spline.angles.tolist() == ref["angles"]
+    rows = spline.point_reports
+    assert [r[0] for r in rows] == [p["type"] for p in ref["at_points"]]
+    assert list(rows[1][2]) == [True, False] and abs(rows[1][4][1]) <= 1e-12 * abs(rows[2][4][0])
+    assert spline.knots.shape == (2, 2)
+    ends = lac.Spline(SPLINE_POINTS, 0.5, ends=(0.1, None), start_curvature=0.2,
+                      end_curvature=0.5, types=["s"] * len(SPLINE_POINTS))
+    assert abs(ends.point_reports[0][4][1] - 0.2) <= 1e-12 * 0.2
+    corner = lac.Spline(u, -1.0, types="s s c s s", angles={2: (None, 0.5)})
+    assert abs(corner.point_reports[2][3][1] - 0.5) <= 1e-12
+    with pytest.raises(lac.LacError, match="P1.*corner"):
+        lac.Spline(u, 0.5, lines=[0])
+    with pytest.raises(lac.InvalidInput, match="tangent point"):
+        lac.Spline(u, -1.0, types="s s t s s")
+    with pytest.raises(lac.InvalidInput, match="not a point type"):
+        lac.Spline(u, -1.0, types="s s x s s")
+
+
 def test_export_equals_the_command_line(cli, tmp_path):
     seg = lac.Segment([(0.0, 0.0), (1.0, 0.0), (1.6, 0.9)], -1.0)
     for fmt in ["step", "iges", "dxf", "svg", "json"]:

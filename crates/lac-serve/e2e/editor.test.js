@@ -483,3 +483,47 @@ test('path: the S-shaped G2 path through an inflection, points dragged, added an
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('spline: point types by key, drawn with their markers; what lac spline gives for the same types', async () => {
+  const { page, context, errors } = await openEditor('#mode=spline');
+  let s = await editorState(page);
+  assert.equal(s.error, null, JSON.stringify(s.error));
+  // The U: straight sides met with zero curvature, the bottom horizontal.
+  const types = (d) => d.types.join(' ');
+  const cliSpline = (d) => lac('spline', `--through=${d.points.map((p) => p.map(String).join(',')).join(' ')}`,
+    '--alpha', String(d.alpha), '--types', types(d),
+    ...(d.types.some((t) => t === 't') ? ['--angles', d.types.map((t, i) => (t === 't' ? `${i}:${d.angles[i][0]}` : null)).filter(Boolean).join(',')] : []),
+    ...(d.lines.length ? ['--lines', d.lines.map((i) => `${i}-${i + 1}`).join(',')] : []),
+    '--samples', String(SAMPLES));
+  let cli = cliSpline(s.design);
+  assert.deepEqual(s.answer.at_points, cli.at_points);
+  assert.deepEqual(s.answer.samples, cli.samples);
+  assert.equal(s.answer.knots.length, 2);
+  await shot(page, 'spline');
+  // Drag P2 (the tangent point), then make it a corner with the C key: the tangent breaks.
+  latency.spline = await drag(page, 2, { radius: 12, end: [6, 10] });
+  s = await editorState(page);
+  assert.equal(s.error, null, JSON.stringify(s.error));
+  cli = cliSpline(s.design);
+  assert.deepEqual(s.answer.at_points, cli.at_points);
+  let updates = await page.evaluate(() => window.lacEditor.probe.updates);
+  await page.keyboard.press('c');
+  await settled(page, updates);
+  s = await editorState(page);
+  assert.equal(s.design.types[2], 'c');
+  assert.equal(s.answer.at_points[2].type, 'corner');
+  // S makes P2 smooth again.
+  updates = await page.evaluate(() => window.lacEditor.probe.updates);
+  await page.keyboard.press('s');
+  await settled(page, updates);
+  s = await editorState(page);
+  assert.equal(s.answer.at_points[2].type, 'smooth');
+  // alpha >= 0 with straight spans: refused, the point named.
+  updates = await page.evaluate(() => window.lacEditor.probe.updates);
+  await page.fill('#param-alpha', '0.5');
+  await settled(page, updates);
+  s = await editorState(page);
+  assert.ok(s.error && /P1/.test(s.error.message), JSON.stringify(s.error));
+  assert.deepEqual(errors, []);
+  await context.close();
+});

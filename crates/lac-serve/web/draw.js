@@ -163,6 +163,7 @@ function grid(ctx, view, width, height) {
  * {points, samples, stale, show, combScale,
  *  region: {image, size, extent, toWorld, wide: {image, size, extent} | null} | null,
  *  joint, joints: [[x, y]] | null, lines: [[[x, y], [x, y]]] | null, closed,
+ *  marks: [{at: [x, y], kind: 'corner' | 'tangent' | 'line', angle}] | undefined,
  *  pieces: [{points, weights, monotone, proven}] | null, pieceSamples, active, hover,
  *  underlay, curveWidth}.
  * `joints` are a path's joints (dots), `lines` its straight pieces through inflections, and
@@ -299,6 +300,39 @@ export function drawPlane(ctx, view, width, height, scene) {
       ctx.moveTo(x, y - 6); ctx.lineTo(x + 6, y); ctx.lineTo(x, y + 6); ctx.lineTo(x - 6, y);
       ctx.closePath();
       ctx.fill();
+    }
+  }
+
+  // A spline's point types as designers know them from Spiro: a corner's square, a tangent
+  // point's arrow along its direction, a half circle where a curve meets a straight span
+  // (open toward the line).
+  for (const mark of scene.marks || []) {
+    const [x, y] = view.toScreen(mark.at);
+    ctx.strokeStyle = COLORS.joint;
+    ctx.fillStyle = COLORS.joint;
+    ctx.lineWidth = 2;
+    ctx.beginPath();
+    if (mark.kind === 'corner') {
+      ctx.rect(x - 9, y - 9, 18, 18);
+      ctx.stroke();
+    } else if (mark.kind === 'tangent') {
+      const [dx, dy] = [Math.cos(mark.angle), -Math.sin(mark.angle)];
+      const [tx, ty] = [x + 22 * dx, y + 22 * dy];
+      ctx.moveTo(x - 22 * dx, y - 22 * dy);
+      ctx.lineTo(tx, ty);
+      ctx.stroke();
+      ctx.beginPath();
+      ctx.moveTo(tx, ty);
+      ctx.lineTo(tx - 8 * dx + 5 * dy, ty - 8 * dy - 5 * dx);
+      ctx.lineTo(tx - 8 * dx - 5 * dy, ty - 8 * dy + 5 * dx);
+      ctx.closePath();
+      ctx.fill();
+    } else if (mark.kind === 'line') {
+      // The half circle on the curve's side: centred on the point, its diameter across the
+      // line's direction.
+      const a = -mark.angle;
+      ctx.arc(x, y, 11, a + Math.PI / 2, a - Math.PI / 2, false);
+      ctx.stroke();
     }
   }
 

@@ -160,6 +160,17 @@ export function listen() {
 /** What a mode's own views report: a point dragged (`point` null when the drag starts; its
  * view's `scale` in pixels per unit), the drag's end, a sample hovered (or null). */
 export const stageInput = {
+  /** A change a mode makes to its own design from a key (a spline point's type): `apply(design,
+   * selected)` on the design of mode `name` when it is the one shown, then solved, a step of
+   * the history and drawn. Returns whether it applied. */
+  change(name, apply) {
+    if (state.mode !== name) return false;
+    apply(design(), state.selected);
+    solve();
+    commit();
+    render();
+    return true;
+  },
   drag(index, point, time, scale) {
     if (!state.drag) {
       state.drag = { index, pointerId: null, combScale: state.combScale };

@@ -98,14 +98,15 @@ pub use family::standard_form::{Classification, InfiniteRadiusEnd, StandardForm,
 pub use fit::{
     Fit, FitAlpha, FitJoint, FitLoss, FitOptions, FitPiece, DEFAULT_ALPHA_RANGE, MAX_FIT_SEGMENTS,
 };
-pub use foundation::error::{Error, ErrorKind, G2Failure, NotDrawable, Result};
+pub use foundation::error::{Error, ErrorKind, G2Failure, NotDrawable, PointFailure, Result};
 pub use foundation::numeric::{short_number, times_ratio};
 pub use foundation::tolerance::{Tolerance, MIN_RELATIVE_TOLERANCE};
 pub use foundation::turn::Turn;
 pub use foundation::vec3::Vec3;
 pub use path::{
-    Alphas, Closure, Continuity, ControlPolygon, G2Outcome, Joint, Path, Spline, SplineInflection,
-    StraightPiece, G2_JUMP_LIMIT, G2_TOLERANCE, INFLECTION_LIMIT, MAX_POLYGON_POINTS,
+    Alphas, Closure, Continuity, ControlPolygon, G2Outcome, Joint, Path, PointType, Spline,
+    SplineEnd, SplineInflection, SplineKnot, SplineOptions, SplinePoint, StraightPiece,
+    G2_JUMP_LIMIT, G2_TOLERANCE, INFLECTION_LIMIT, MAX_POLYGON_POINTS, MAX_TYPED_SPLINE_POINTS,
 };
 pub use quasi::{QuasiCurve, QuasiPiece, ToBezier, TurningCurve, MAX_PIECES};
 pub use segment::visible::{HIDDEN_SHARE, HIDDEN_TURNING};

@@ -1,13 +1,15 @@
 //! `lac spline`: a G2 spline of log-aesthetic segments through points (`--through`,
-//! `--alpha`, `--closed`, `--start-angle`/`--end-angle`).
+//! `--alpha`, `--closed`, `--start-angle`/`--end-angle`), with point types (`--types`,
+//! `--angles`), straight spans (`--lines`) and end curvatures (`--start-curvature`,
+//! `--end-curvature`).
 //!
 //! The spline in `lac export`: [`SplineExport`], its flags there, and its results as
 //! documents.
 
 use clap::Args;
 use kurbo::Point;
-use lac::{Curve, SegmentChain};
-use lac_io::json::{to_line, AnyCurve, ErrorBody, SplineInput, SplineReport};
+use lac::{Curve, PointType, SplineEnd, SplineOptions};
+use lac_io::json::{point_type_named, to_line, AnyCurve, ErrorBody, SplineInput, SplineReport};
 
 use crate::cli::export::{names, present, ExportSource, Flag, Input};
 use crate::cli::segment::check_output;
@@ -39,7 +41,6 @@ pub(crate) struct SplineArgs {
         long,
         value_name = "R",
         allow_hyphen_values = true,
-        requires = "end_angle",
         conflicts_with = "closed"
     )]
     pub(crate) start_angle: Option<f64>,
@@ -49,9 +50,50 @@ pub(crate) struct SplineArgs {
         long,
         value_name = "R",
         allow_hyphen_values = true,
-        requires = "start_angle"
+        conflicts_with = "closed"
     )]
     pub(crate) end_angle: Option<f64>,
+
+    /// The type of each point, one letter a point: s smooth (G2, tangent solved), t tangent
+    /// (G2, its direction given in --angles), c corner (the tangent may break; each side
+    /// free or given in --angles as i:in/out), e.g. "c s t s c"
+    #[arg(long, value_name = "TYPES")]
+    pub(crate) types: Option<String>,
+
+    /// The directions of the tangent points "i:θ,…" (radians, i counted from 0), and of
+    /// corners' sides "i:in/out" (either may be empty: free)
+    #[arg(
+        long,
+        value_name = "ANGLES",
+        allow_hyphen_values = true,
+        requires = "types"
+    )]
+    pub(crate) angles: Option<String>,
+
+    /// Straight spans "i-j,…" between consecutive points (j = i + 1, or 0 after the last
+    /// point of a closed spline): the curve on either side meets each with zero curvature
+    /// (needs alpha < 0) unless the point there is a corner
+    #[arg(long, value_name = "SPANS")]
+    pub(crate) lines: Option<String>,
+
+    /// Open splines: the signed curvature at the first point (with --start-angle, a G2
+    /// Hermite end that blends into a neighbouring curve)
+    #[arg(
+        long,
+        value_name = "K",
+        allow_hyphen_values = true,
+        conflicts_with = "closed"
+    )]
+    pub(crate) start_curvature: Option<f64>,
+
+    /// Open splines: the signed curvature at the last point
+    #[arg(
+        long,
+        value_name = "K",
+        allow_hyphen_values = true,
+        conflicts_with = "closed"
+    )]
+    pub(crate) end_curvature: Option<f64>,
 
     /// What to print and where.
     #[command(flatten)]
@@ -63,11 +105,13 @@ pub(crate) fn run(args: &SplineArgs, limits: Limits) -> Result<(), ErrorBody> {
     let output = &args.output;
     check_output(output, false)?;
     let samples = limits.samples(output.samples as usize, "--samples")?;
+    let points = through_points(&args.through)?;
+    let options = options(args, points.len())?;
     let spline = SplineInput {
-        points: through_points(&args.through)?,
+        points,
         alpha: args.alpha,
         closed: args.closed,
-        ends: args.start_angle.zip(args.end_angle).map(|(a, b)| [a, b]),
+        options,
     }
     .solve()?;
     let document = match output.format {
@@ -95,6 +139,124 @@ pub(crate) fn run(args: &SplineArgs, limits: Limits) -> Result<(), ErrorBody> {
         }
     };
     write_document(output.file.as_deref(), document.as_bytes())
+}
+
+/// The point types, straight spans and end conditions of `args` for `n` points.
+fn options(args: &SplineArgs, n: usize) -> Result<SplineOptions, ErrorBody> {
+    let mut types = match &args.types {
+        None => Vec::new(),
+        Some(text) => {
+            let letters: Vec<&str> = text
+                .split(|c: char| c == ',' || c.is_whitespace())
+                .filter(|t| !t.is_empty())
+                .collect();
+            if letters.len() != n {
+                return Err(errors::usage(format!(
+                    "--types has {} letters for {n} points: give one of s, t, c per point",
+                    letters.len()
+                )));
+            }
+            letters
+                .iter()
+                .map(|l| {
+                    point_type_named(l).ok_or_else(|| {
+                        errors::usage(format!(
+                            "--types: {l:?} is not a point type (s smooth, t tangent, c corner)"
+                        ))
+                    })
+                })
+                .collect::<Result<Vec<_>, _>>()?
+        }
+    };
+    for item in args.angles.iter().flat_map(|a| a.split(',')) {
+        let item = item.trim();
+        if item.is_empty() {
+            continue;
+        }
+        let bad = || errors::usage(format!("--angles: {item:?} is not i:θ or i:in/out"));
+        let (i, value) = item.split_once(':').ok_or_else(bad)?;
+        let i: usize = i.trim().parse().map_err(|_| bad())?;
+        let angle = |t: &str| -> Result<Option<f64>, ErrorBody> {
+            let t = t.trim();
+            if t.is_empty() {
+                return Ok(None);
+            }
+            let a: f64 = t.parse().map_err(|_| bad())?;
+            if a.is_finite() {
+                Ok(Some(a))
+            } else {
+                Err(bad())
+            }
+        };
+        match (types.get(i).copied(), value.split_once('/')) {
+            (Some(PointType::Tangent(_)), None) => {
+                types[i] = PointType::Tangent(angle(value)?.ok_or_else(bad)?);
+            }
+            (Some(PointType::Corner { .. }), Some((before, after))) => {
+                types[i] = PointType::Corner {
+                    before: angle(before)?,
+                    after: angle(after)?,
+                };
+            }
+            (Some(PointType::Corner { .. }), None) => {
+                return Err(errors::usage(format!(
+                    "--angles: point {i} is a corner: give its two sides as {i}:in/out"
+                )))
+            }
+            (Some(_), _) => {
+                return Err(errors::usage(format!(
+                    "--angles: point {i} is smooth: type it t (tangent) or c (corner) in \
+                     --types to give it a direction"
+                )))
+            }
+            (None, _) => {
+                return Err(errors::usage(format!("--angles: there is no point {i}")));
+            }
+        }
+    }
+    if let Some(i) = types
+        .iter()
+        .position(|t| matches!(t, PointType::Tangent(a) if a.is_nan()))
+    {
+        return Err(errors::usage(format!(
+            "point {i} is a tangent point: give its direction in --angles as {i}:θ"
+        )));
+    }
+    let mut lines = Vec::new();
+    for item in args.lines.iter().flat_map(|l| l.split(',')) {
+        let item = item.trim();
+        if item.is_empty() {
+            continue;
+        }
+        let bad = || {
+            errors::usage(format!(
+                "--lines: {item:?} is not a span i-j between consecutive points (j = i + 1, \
+                 or 0 after the last point of a closed spline)"
+            ))
+        };
+        let (i, j) = item.split_once('-').ok_or_else(bad)?;
+        let (i, j): (usize, usize) = (
+            i.trim().parse().map_err(|_| bad())?,
+            j.trim().parse().map_err(|_| bad())?,
+        );
+        let next = if args.closed { (i + 1) % n } else { i + 1 };
+        if i >= n || j != next {
+            return Err(bad());
+        }
+        lines.push(i);
+    }
+    Ok(SplineOptions {
+        types,
+        lines,
+        start: SplineEnd {
+            angle: args.start_angle,
+            curvature: args.start_curvature,
+        },
+        end: SplineEnd {
+            angle: args.end_angle,
+            curvature: args.end_curvature,
+        },
+    })
 }
 
 /// The points of `--through`: at least three.
@@ -178,7 +340,9 @@ impl ExportSource for SplineExport {
                         points,
                         alpha,
                         closed: curve.closed,
-                        ends: self.start_angle.zip(self.end_angle).map(|(a, b)| [a, b]),
+                        options: SplineOptions::with_ends(
+                            self.start_angle.zip(self.end_angle).map(|(a, b)| [a, b]),
+                        ),
                     }
                     .solve()
                 })

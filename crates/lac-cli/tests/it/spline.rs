@@ -140,3 +140,110 @@ fn the_svg_marks_joints_on_the_points_as_rings_that_the_points_do_not_hide() {
         "{keys:?}"
     );
 }
+
+/// A U with point types: straight sides (`--lines`) met with zero curvature, the bottom
+/// horizontal (`--types`, `--angles`); the report gives each point's type, directions and
+/// curvatures on both sides, and the knots; the same read back by `lac export`.
+#[test]
+fn point_types_straight_spans_and_end_curvatures_are_reported_per_point() {
+    let u = [
+        "spline",
+        "--through",
+        "0,4 0,1.5 1,0 2,1.5 2,4",
+        "--alpha",
+        "-1",
+        "--types",
+        "s s t s s",
+        "--angles",
+        "2:0",
+        "--lines",
+        "0-1,3-4",
+        "--samples",
+        "5",
+    ];
+    let run = lac(&u);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let v = json(&run);
+    let at = v["at_points"].as_array().unwrap();
+    assert_eq!(at.len(), 5);
+    assert_eq!(at[2]["type"], "tangent");
+    assert!(f(&at[2]["angles"][0]).abs() < 1e-12 && f(&at[2]["angles"][1]).abs() < 1e-12);
+    let (k0, k1) = (f(&at[2]["curvatures"][0]), f(&at[2]["curvatures"][1]));
+    assert!((k0 - k1).abs() <= 1e-9 * k0.abs());
+    for i in [1, 3] {
+        assert_eq!(at[i]["straight"][usize::from(i == 3)], true);
+        let k = f(&at[i]["curvatures"][usize::from(i == 1)]);
+        assert!(k.abs() <= 1e-12 * k0.abs(), "{k}");
+    }
+    assert!(at[0]["angles"][0].is_null() && at[4]["curvatures"][1].is_null());
+    assert_eq!(v["knots"].as_array().unwrap().len(), 2);
+    assert_eq!(v["lines"], serde_json::json!([0, 3]));
+    // The report read back: the same spline exported.
+    let export = common::lac_with_input(&["export", "--format", "json"], run.stdout.as_bytes());
+    assert_eq!(export.code, 0, "{}", export.stderr);
+    // A G2 Hermite start and a curvature-only end.
+    let run = lac(&[
+        "spline",
+        "--through",
+        "0,0 1,0.6 2,0.8 3,0.6 4,0",
+        "--alpha",
+        "0.5",
+        "--start-angle",
+        "0.7",
+        "--start-curvature",
+        "-0.3",
+        "--end-curvature",
+        "-0.2",
+        "--samples",
+        "2",
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let v = json(&run);
+    assert!((f(&v["at_points"][0]["curvatures"][1]) + 0.3).abs() <= 1e-12 * 0.3);
+    assert!((f(&v["at_points"][4]["curvatures"][0]) + 0.2).abs() <= 1e-12 * 0.2);
+    assert_eq!(v["start"]["curvature"], -0.3);
+}
+
+/// Refusals: a straight span for alpha >= 0 names its point and says what to change; bad
+/// types, angles and lines are usage errors.
+#[test]
+fn point_type_refusals_name_the_point() {
+    let through = "0,4 0,1.5 1,0 2,1.5 2,4";
+    let run = lac(&[
+        "spline",
+        "--through",
+        through,
+        "--alpha",
+        "0.5",
+        "--lines",
+        "0-1",
+    ]);
+    let message = assert_failure(&run, 3, "no_g2_path");
+    assert!(
+        message.contains("point P1") && message.contains("make this point a corner"),
+        "{message}"
+    );
+    for args in [
+        ["--types", "s s t s"],
+        ["--types", "s s t s s"],
+        ["--lines", "1-3"],
+        ["--types", "s s x s s"],
+    ] {
+        let mut all = vec!["spline", "--through", through, "--alpha", "-1"];
+        all.extend(args);
+        assert_failure(&lac(&all), 2, "usage");
+    }
+    let run = lac(&[
+        "spline",
+        "--through",
+        through,
+        "--alpha",
+        "-1",
+        "--types",
+        "s s s s s",
+        "--angles",
+        "2:0",
+    ]);
+    let message = assert_failure(&run, 2, "usage");
+    assert!(message.contains("type it t"), "{message}");
+}

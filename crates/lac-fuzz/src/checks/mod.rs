@@ -69,12 +69,7 @@ pub(crate) fn check(input: &Input) -> Result<bool, String> {
             cubic,
         } => quasi::check(points, *alpha, *tolerance, *cubic),
         Input::Path { closed, g2, .. } => path::check(input, *closed, *g2),
-        Input::Spline {
-            points,
-            alpha,
-            closed,
-            ends,
-        } => spline::check(points, *alpha, *closed, *ends),
+        Input::Spline { .. } => spline::check(input),
         Input::Space { points, .. } => space::check(input, points),
         Input::Export {
             curve,

@@ -54,7 +54,10 @@ pub use space::{
     SpaceGraphsReport, SpaceInput, SpaceKind, SpaceLcgReport, SpaceReport, SpaceSampleRow,
     TransformRow, PLANAR_NOTE,
 };
-pub use spline::{SplineInflectionRow, SplineInput, SplineKind, SplinePieceRow, SplineReport};
+pub use spline::{
+    point_type_named, SplineEndRow, SplineInflectionRow, SplineInput, SplineKind, SplineKnotRow,
+    SplinePieceRow, SplinePointRow, SplineReport, SplineRequest,
+};
 
 // The curve kinds, in the order they are asked to claim a document (`kind.rs`): a new kind
 // is its file here, its `mod` line above and one line in this list.

@@ -1,7 +1,7 @@
 """Type stubs of the extension module `lac._lac` (re-exported by `lac`)."""
 
-from collections.abc import Sequence
-from typing import Any, Literal, Optional, Union
+from collections.abc import Mapping, Sequence
+from typing import Any, List, Literal, Optional, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -327,8 +327,27 @@ class Spline:
         points: npt.ArrayLike,
         alpha: float,
         closed: bool = False,
-        ends: Optional[npt.ArrayLike] = None,
+        ends: Optional[Tuple[Optional[float], Optional[float]]] = None,
+        types: Optional[Union[str, Sequence[str]]] = None,
+        angles: Optional[Mapping[int, Union[float, Tuple[Optional[float], Optional[float]]]]] = None,
+        lines: Optional[Sequence[int]] = None,
+        start_curvature: Optional[float] = None,
+        end_curvature: Optional[float] = None,
     ) -> None: ...
+    @property
+    def point_reports(
+        self,
+    ) -> List[
+        Tuple[
+            str,
+            Tuple[Optional[float], Optional[float]],
+            Tuple[bool, bool],
+            Tuple[Optional[float], Optional[float]],
+            Tuple[Optional[float], Optional[float]],
+        ]
+    ]: ...
+    @property
+    def knots(self) -> FloatArray: ...
     @property
     def closed(self) -> bool: ...
     @property

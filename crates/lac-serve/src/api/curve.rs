@@ -1,10 +1,10 @@
-//! `/api/segment`, `/api/compound`, `/api/path` and `/api/lcg`: a curve solved and sampled,
-//! with its curvature plot and logarithmic curvature graph.
+//! `/api/segment`, `/api/compound`, `/api/path`, `/api/spline` and `/api/lcg`: a curve
+//! solved and sampled, with its curvature plot and logarithmic curvature graph.
 
 use lac::Curve;
 use lac_io::json::{
     parse, to_line, CompoundInput, CompoundReport, LcgReport, LcgRow, PathInput, PathReport,
-    PiecesInput, Report, SegmentInput, SegmentReport,
+    PiecesInput, Report, SegmentInput, SegmentReport, SplineReport, SplineRequest,
 };
 use serde::Serialize;
 
@@ -66,15 +66,25 @@ pub(crate) fn compound(app: &App, text: &str) -> Result<String, ApiError> {
     Ok(to_line(&compound_answer(&request.input, n)?))
 }
 
-/// A path's report with each segment's line of the logarithmic curvature graph (null for a
-/// circular arc): `{…lac path's report…, "lcg":[…]}`.
+/// A path's or spline's report with each segment's line of the logarithmic curvature graph
+/// (null for a circular arc): `{…lac path's or lac spline's report…, "lcg":[…]}`.
 #[derive(Debug, Serialize)]
-pub(crate) struct PathAnswer {
-    /// The report, as `lac path` prints it.
+pub(crate) struct LcgAnswer<R> {
+    /// The report, as `lac path` or `lac spline` prints it.
     #[serde(flatten)]
-    pub(crate) report: PathReport,
+    pub(crate) report: R,
     /// Each segment's line ln(ρ ds/dρ) = α ln ρ + c over its range of ln ρ.
     pub(crate) lcg: Vec<Option<LcgRow>>,
+}
+
+impl<R> LcgAnswer<R> {
+    /// `report` with the lines of `segments`.
+    fn new(report: R, segments: &[lac::Segment]) -> Self {
+        LcgAnswer {
+            report,
+            lcg: segments.iter().map(|s| s.lcg().map(LcgRow::from)).collect(),
+        }
+    }
 }
 
 /// `POST /api/path`: `{"points":[[x,y],…],"alpha":A (or "alphas":[…]),"g2":true,
@@ -83,15 +93,23 @@ pub(crate) fn path(app: &App, text: &str) -> Result<String, ApiError> {
     let request: WithSamples<PathInput> = parse(text, PathInput::SHAPE)?;
     let n = app.limits.samples(request.samples)?;
     let path = request.input.solve()?;
-    let answer = PathAnswer {
-        report: PathReport::new(&path, n)?,
-        lcg: path
-            .segments()
-            .iter()
-            .map(|s| s.lcg().map(LcgRow::from))
-            .collect(),
-    };
-    Ok(to_line(&answer))
+    Ok(to_line(&LcgAnswer::new(
+        PathReport::new(&path, n)?,
+        path.segments(),
+    )))
+}
+
+/// `POST /api/spline`: a spline through points with point types ([`SplineRequest`]), answered
+/// as `lac spline` prints it with each piece's line of the logarithmic curvature graph.
+pub(crate) fn spline(app: &App, text: &str) -> Result<String, ApiError> {
+    let request: WithSamples<SplineRequest> = parse(text, SplineRequest::SHAPE)?;
+    let n = app.limits.samples(request.samples)?;
+    let input = request.input.input()?;
+    let spline = input.solve()?;
+    Ok(to_line(&LcgAnswer::new(
+        SplineReport::new(&spline, input.alpha, n)?,
+        spline.pieces(),
+    )))
 }
 
 /// The shapes `/api/lcg` reads, for error messages.

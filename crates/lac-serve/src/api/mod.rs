@@ -53,6 +53,7 @@ pub(crate) const ENDPOINTS: &[(&str, Endpoint)] = &[
     ("/api/segment", curve::segment),
     ("/api/compound", curve::compound),
     ("/api/path", curve::path),
+    ("/api/spline", curve::spline),
     ("/api/quasi", quasi::quasi),
     ("/api/lcg", curve::lcg),
     ("/api/region", region::region),

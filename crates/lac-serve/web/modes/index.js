@@ -52,11 +52,12 @@ import segment from './segment.js';
 import compound from './compound.js';
 import compound4 from './compound4.js';
 import path from './path.js';
+import spline from './spline.js';
 import quasi from './quasi.js';
 import space from './space.js';
 import fit from './fit.js';
 
-const LIST = [segment, compound, compound4, path, quasi, space, fit];
+const LIST = [segment, compound, compound4, path, spline, quasi, space, fit];
 
 /** What a mode need not say. */
 const DEFAULTS = {

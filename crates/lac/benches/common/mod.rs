@@ -32,3 +32,5 @@ pub(crate) fn median_per_call<T>(iters: u64, set: &[T], mut f: impl FnMut(&T)) -
     times.sort_unstable();
     times[times.len() / 2] * iters as u32
 }
+#[allow(dead_code)] // the benchmark `spline` and the tests use it
+pub(crate) mod glyphs;

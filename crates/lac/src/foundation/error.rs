@@ -162,6 +162,15 @@ pub enum Error {
         /// Why.
         reason: G2Failure,
     },
+    /// A spline's point whose type (or a straight span or end condition there) cannot be
+    /// met: the point and what to change.
+    #[error("no spline: at point P{point}, {reason}")]
+    SplinePoint {
+        /// The point (0-based).
+        point: usize,
+        /// Why.
+        reason: PointFailure,
+    },
     /// Too few points to fit a curve to.
     #[error("a fit needs at least {needed} distinct points, got {got}; give more points")]
     TooFewPoints {
@@ -247,7 +256,7 @@ pub enum ErrorKind {
     Unrepresentable,
     /// [`Error::NumericalFailure`].
     NumericalFailure,
-    /// [`Error::NoG2Path`] and [`Error::NoG2Spline`].
+    /// [`Error::NoG2Path`], [`Error::NoG2Spline`] and [`Error::SplinePoint`].
     NoG2Path,
     /// [`Error::TooFewPoints`].
     TooFewPoints,
@@ -300,7 +309,9 @@ impl Error {
             Error::FitToleranceNotMet { .. } => ErrorKind::FitToleranceNotMet,
             Error::FitNotClosed { .. } => ErrorKind::FitNotClosed,
             Error::PathSegment { source, .. } => source.kind(),
-            Error::NoG2Path { .. } | Error::NoG2Spline { .. } => ErrorKind::NoG2Path,
+            Error::NoG2Path { .. } | Error::NoG2Spline { .. } | Error::SplinePoint { .. } => {
+                ErrorKind::NoG2Path
+            }
             Error::SplineSpan { source, .. } => source.kind(),
         }
     }
@@ -519,6 +530,67 @@ impl fmt::Display for NotDrawable {
                  tangents); move P1 or P2 so that the tangent lines meet",
                 turning.to_degrees(),
                 chord_angle.to_degrees()
+            ),
+        }
+    }
+}
+
+/// Why a spline's point cannot have what its type, a straight span or an end condition asks
+/// (docs/math.md, splines with point types).
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum PointFailure {
+    /// The point ends a straight span (or has an end curvature of zero), where the curve
+    /// must reach zero curvature, which a log-aesthetic curve does only for α < 0.
+    ZeroCurvature {
+        /// The spline's slope.
+        alpha: f64,
+    },
+    /// The point joins two straight spans that are not in line, so its tangent breaks.
+    StraightSpansNotInLine,
+    /// The point ends a straight span, whose direction is its tangent, and has an angle of
+    /// its own.
+    AngleOnStraightSpan,
+    /// The type or option does not fit where the point is (e.g. a corner's two directions
+    /// at an open spline's end).
+    Misplaced {
+        /// What does not fit.
+        what: &'static str,
+    },
+    /// The solver could not meet the condition at this point: `what`, missed by `miss`
+    /// (relative, or radians for a direction).
+    Unmet {
+        /// The condition, in words.
+        what: &'static str,
+        /// How far from it the best answer reached stayed.
+        miss: f64,
+    },
+}
+
+impl fmt::Display for PointFailure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            PointFailure::ZeroCurvature { alpha } => write!(
+                f,
+                "the curve must reach zero curvature (it meets a straight span, or its end \
+                 curvature is 0), which a log-aesthetic curve does only for alpha < 0 (here \
+                 alpha = {alpha}): use alpha < 0, or make this point a corner"
+            ),
+            PointFailure::StraightSpansNotInLine => write!(
+                f,
+                "it joins two straight spans that are not in line: make it a corner"
+            ),
+            PointFailure::AngleOnStraightSpan => write!(
+                f,
+                "it ends a straight span, whose direction is its tangent there: drop its \
+                 angle (make it smooth) or make it a corner"
+            ),
+            PointFailure::Misplaced { what } => write!(f, "{what}"),
+            PointFailure::Unmet { what, miss } => write!(
+                f,
+                "the curve could not be made to meet {what} there (missed by {miss:.1e}); \
+                 move this point or its neighbours, give it another tangent, or make it a \
+                 corner"
             ),
         }
     }

@@ -1,6 +1,7 @@
-//! Tridiagonal and cyclic tridiagonal linear systems: the Jacobian of the G2 joint
-//! equations, where the curvature jump at a joint depends only on that joint's fraction
-//! and those of its two neighbours.
+//! The linear systems of the G2 joint equations: tridiagonal and cyclic tridiagonal, where
+//! the curvature jump at a joint depends only on that joint's unknown and those of its two
+//! neighbours, and dense (Gaussian elimination with partial pivoting) for a spline's point
+//! conditions, whose unknowns and equations do not pair up one to one.
 
 /// Solve `sub[i] x[i−1] + diag[i] x[i] + sup[i] x[i+1] = rhs[i]` for `i = 0..n`.
 ///
@@ -46,6 +47,42 @@ pub(crate) fn solve(
     let z = thomas(sub, &d, sup, &u)?;
     let factor = (y[0] + a / gamma * y[n - 1]) / (1.0 + z[0] + a / gamma * z[n - 1]);
     let x: Vec<f64> = y.iter().zip(&z).map(|(y, z)| y - factor * z).collect();
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
+/// Solve the dense `n`×`n` system `a x = rhs` (`a` row by row) by Gaussian elimination with
+/// partial pivoting; `None` when a pivot vanishes or the answer is not finite.
+pub(crate) fn dense(mut a: Vec<f64>, mut rhs: Vec<f64>) -> Option<Vec<f64>> {
+    let n = rhs.len();
+    debug_assert_eq!(a.len(), n * n);
+    for col in 0..n {
+        let pivot =
+            (col..n).max_by(|&i, &j| a[i * n + col].abs().total_cmp(&a[j * n + col].abs()))?;
+        if a[pivot * n + col] == 0.0 {
+            return None;
+        }
+        if pivot != col {
+            for k in 0..n {
+                a.swap(pivot * n + k, col * n + k);
+            }
+            rhs.swap(pivot, col);
+        }
+        let p = a[col * n + col];
+        for row in col + 1..n {
+            let f = a[row * n + col] / p;
+            if f != 0.0 {
+                for k in col..n {
+                    a[row * n + k] -= f * a[col * n + k];
+                }
+                rhs[row] -= f * rhs[col];
+            }
+        }
+    }
+    let mut x = vec![0.0; n];
+    for row in (0..n).rev() {
+        let tail: f64 = (row + 1..n).map(|k| a[row * n + k] * x[k]).sum();
+        x[row] = (rhs[row] - tail) / a[row * n + row];
+    }
     x.iter().all(|v| v.is_finite()).then_some(x)
 }
 
@@ -98,6 +135,34 @@ mod tests {
                 r.abs()
             })
             .fold(0.0, f64::max)
+    }
+
+    /// Dense elimination against the same tridiagonal systems, and a system that needs a
+    /// row exchange (a zero on the diagonal).
+    #[test]
+    fn dense_systems_are_solved_to_rounding() {
+        for n in 1..9 {
+            let sub: Vec<f64> = (0..n).map(|i| 0.3 + 0.1 * i as f64).collect();
+            let sup: Vec<f64> = (0..n).map(|i| -0.7 + 0.05 * i as f64).collect();
+            let diag: Vec<f64> = (0..n).map(|i| 3.0 + (i % 3) as f64).collect();
+            let rhs: Vec<f64> = (0..n).map(|i| (i as f64).sin() + 1.0).collect();
+            let mut a = vec![0.0; n * n];
+            for i in 0..n {
+                a[i * n + i] = diag[i];
+                a[i * n + (i + n - 1) % n] += sub[i];
+                a[i * n + (i + 1) % n] += sup[i];
+            }
+            if n == 1 {
+                a[0] = diag[0] + sub[0] + sup[0];
+            }
+            let x = super::dense(a, rhs.clone()).unwrap();
+            assert!(residual(&sub, &diag, &sup, &rhs, &x, true) < 1e-14, "n {n}");
+        }
+        let x = super::dense(vec![0.0, 2.0, 3.0, 1.0], vec![4.0, 5.0]).unwrap();
+        assert!(
+            (x[0] - 1.0).abs() < 1e-15 && (x[1] - 2.0).abs() < 1e-15,
+            "{x:?}"
+        );
     }
 
     #[test]

@@ -50,7 +50,9 @@
 mod banded;
 mod g2;
 mod inflection;
+mod point_type;
 mod polygon;
+mod run;
 mod s_span;
 mod spline;
 
@@ -64,8 +66,9 @@ use crate::segment::Segment;
 
 use crate::foundation::error::G2Failure;
 pub use g2::{G2Outcome, G2_TOLERANCE};
+pub use point_type::{PointType, SplineEnd, SplineOptions};
 pub use polygon::{Alphas, Closure, ControlPolygon, MAX_POLYGON_POINTS};
-pub use spline::{Spline, SplineInflection};
+pub use spline::{Spline, SplineInflection, SplineKnot, SplinePoint, MAX_TYPED_SPLINE_POINTS};
 
 /// The largest relative curvature jump a G2 path may have at a joint,
 /// |κ⁻ − κ⁺| / max(|κ⁻|, |κ⁺|).

@@ -103,6 +103,69 @@ impl Unit {
             .min_by(|x, y| (x.theta[0] + x.theta[1]).total_cmp(&(y.theta[0] + y.theta[1])))
     }
 
+    /// The half S from a point to its inflection, or from its inflection to a point: the
+    /// span of chord length `chord` that meets a straight span with zero curvature
+    /// (docs/math.md, splines with point types). `t_inflection` is the angle of the tangent
+    /// at the inflection end from the chord (in (−π, π], not 0); `at_end` puts the inflection
+    /// at the span's end. Returns the half and the angle from the chord of the tangent at
+    /// its other end, or `None` when no half turning by at most [`MAX_HALF_TURNING`] fits.
+    ///
+    /// With one half of the S of zero turning, A = |t_inflection| and σ = −sign(t_inflection):
+    /// the turning θ of the other half solves arg F(θ) = A, which grows from 0 with θ.
+    pub(super) fn half(&self, t_inflection: f64, chord: f64, at_end: bool) -> Option<(SSpan, f64)> {
+        if !(t_inflection != 0.0 && t_inflection.is_finite() && chord > 0.0) {
+            return None;
+        }
+        let sigma = -t_inflection.signum();
+        let target = t_inflection.abs();
+        let g = |theta: f64| self.chord(theta).arg() - target;
+        let (mut lo, mut hi) = (0.0, MAX_HALF_TURNING);
+        if g(hi).is_nan() || g(hi) < 0.0 {
+            return None;
+        }
+        // arg F(θ) = θ a/(1 + a) + O(θ³): the first guess.
+        let mut x = (target * (1.0 + self.a) / self.a).clamp(0.05 * hi, 0.95 * hi);
+        for _ in 0..100 {
+            let c = self.chord(x);
+            let gx = c.arg() - target;
+            if gx < 0.0 {
+                lo = x;
+            } else {
+                hi = x;
+            }
+            // d arg F/dθ = Im(F′/F).
+            let slope = self.chord_derivative(x).div(c).im;
+            let newton = x - gx / slope;
+            let next = if slope > 0.0 && newton > lo && newton < hi {
+                newton
+            } else {
+                0.5 * (lo + hi)
+            };
+            if (next - x).abs() <= 4.0 * f64::EPSILON * x.abs().max(1e-300) || hi - lo <= 1e-16 {
+                x = next;
+                break;
+            }
+            x = next;
+        }
+        let c = self.chord(x);
+        let scale = chord / c.norm();
+        if !(x > 0.0 && scale.is_finite() && scale > 0.0) {
+            return None;
+        }
+        let other = sigma * (x - target);
+        let theta = if at_end { [x, 0.0] } else { [0.0, x] };
+        Some((
+            SSpan {
+                unit: *self,
+                sigma,
+                theta,
+                angle: target,
+                scale,
+            },
+            other,
+        ))
+    }
+
     /// The S of orientation `sigma` (+1: it turns right first): the root A of
     /// g(A) = arg(F(σ·ta + A) + F(σ·tb + A)) − A nearest to its smallest admissible value.
     fn s_span_of(&self, sigma: f64, ta: f64, tb: f64, chord: f64) -> Option<SSpan> {
@@ -213,6 +276,25 @@ impl SSpan {
         self.place(start, end)(Complex::ZERO)
     }
 
+    /// The control triangles of its halves that turn (both of an S, one of a half S), each
+    /// stopping a share `hair` of its length short of the inflection.
+    pub(super) fn turning_halves(&self, start: Point, end: Point, hair: f64) -> Vec<[Point; 3]> {
+        let [first, second] = self.halves(start, end, hair);
+        let mut out = Vec::with_capacity(2);
+        if self.theta[0] > 0.0 {
+            out.push(first);
+        }
+        if self.theta[1] > 0.0 {
+            out.push(second);
+        }
+        out
+    }
+
+    /// Whether one of its halves has zero turning: it starts or ends at its inflection.
+    pub(super) fn is_half(&self) -> bool {
+        self.theta[0] == 0.0 || self.theta[1] == 0.0
+    }
+
     /// The control triangles of the two halves from `start` and to `end`, each stopping a
     /// share `hair` of its length short of the inflection.
     pub(super) fn halves(&self, start: Point, end: Point, hair: f64) -> [[Point; 3]; 2] {
@@ -299,6 +381,46 @@ mod tests {
             assert!((s.sigma * (t2 - s.angle) - tb).abs() < 1e-14);
             assert!((c.norm() * s.scale - 2.0).abs() < 1e-14);
         }
+    }
+
+    /// A half S: zero curvature at its inflection end, whose tangent makes the given angle
+    /// with the chord, and the other end's angle as returned; built as one segment, the same.
+    #[test]
+    fn a_half_s_meets_its_tangents_with_zero_curvature_at_its_inflection() {
+        use crate::segment::Segment;
+        for alpha in [-0.25, -0.5, -1.0] {
+            let unit = Unit::new(alpha).unwrap();
+            for t in [0.05, 0.3, -0.25] {
+                for at_end in [true, false] {
+                    let (s, other) = unit
+                        .half(t, 2.0, at_end)
+                        .unwrap_or_else(|| panic!("a half: {alpha} {t} {at_end}"));
+                    let theta = s.theta[0].max(s.theta[1]);
+                    let c = unit.chord(theta);
+                    assert!((c.arg() - s.angle).abs() < 1e-14, "{alpha} {t}");
+                    assert!((c.norm() * s.scale - 2.0).abs() < 1e-14);
+                    // The tangents from the chord: the inflection's t, the other end's.
+                    assert!((s.sigma * (theta - s.angle) - other).abs() < 1e-14);
+                    assert!((-s.sigma * s.angle - t).abs() < 1e-15, "{alpha} {t}");
+                    let (k0, k1) = s.end_curvatures();
+                    assert_eq!(if at_end { k1 } else { k0 }, 0.0);
+                    let (a, b) = (Point::new(0.5, -1.0), Point::new(0.5, 1.0));
+                    let [tri] = s.turning_halves(a, b, HAIR)[..] else {
+                        panic!("one half")
+                    };
+                    let seg = Segment::from_control_points(tri, alpha).unwrap();
+                    let (f0, f1) = seg.end_curvatures();
+                    let (far, near) = if at_end { (f0, f1) } else { (f1, f0) };
+                    let want = if at_end { k0 } else { k1 };
+                    assert!(
+                        (far - want).abs() <= 1e-12 * want.abs(),
+                        "{alpha} {t} {at_end}"
+                    );
+                    assert!(near.abs() <= 1e-11 * want.abs(), "{alpha} {t} {at_end}");
+                }
+            }
+        }
+        assert!(Unit::new(-1.0).unwrap().half(0.0, 1.0, true).is_none());
     }
 
     /// The halves built as segments (by the chord-angle solver, on their triangles) have

@@ -27,4 +27,5 @@ mod space_cubics;
 mod space_segment;
 mod space_serde;
 mod spline;
+mod spline_types;
 mod standard_form;

@@ -4,7 +4,7 @@
 //! curvature; spans that must inflect for α ≥ 0 refused and named.
 
 use kurbo::Point;
-use lac::{Closure, SegmentChain};
+use lac::Closure;
 use lac::{Curve, Error, G2Failure, Spline, INFLECTION_LIMIT};
 
 /// The largest (gap, tangent jump, relative curvature jump) over the joints at the points,

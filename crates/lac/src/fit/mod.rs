@@ -413,8 +413,10 @@ impl Fit {
             if n >= target {
                 return Err(not_met(target));
             }
+            // (Refused as at the most segments asked: the pieces it would split further
+            // are the ones that keep collapsing.)
             if rounds > MOST_ROUNDS_PER_SEGMENT * target {
-                return Err(not_met(n));
+                return Err(not_met(target));
             }
             if let Some(cuts) = extrema.take().filter(|c| !c.is_empty()) {
                 // One segment is not enough: start again from the runs of the data.

@@ -20,16 +20,21 @@
 //! image). The spline's Newton iteration sees an S span like any other, through its two end
 //! curvatures, which depend on the two end tangents only.
 //!
-//! The two halves are built as segments by [`Segment::from_control_points`] on the control
-//! triangles of the pieces from each end to a hair short of the inflection: a share
-//! [`HAIR`] of the half's length, so that the halves' ends are within rounding of one
-//! another (a [`Segment`] has no station at zero curvature).
+//! The two halves are built as segments by [`Segment::from_curvatures`] from what the unit
+//! curve says of the pieces from each end to a hair short of the inflection (their end
+//! curvatures and lengths): a share [`HAIR`] of the half's length, so that the halves' ends
+//! are within rounding of one another (a [`Segment`] has no station at zero curvature).
+//! Their control triangles are what a caller sees of them. A half may turn by as little as
+//! 1e-9 rad (the inflection almost at a point), so the smaller half's turning is solved as
+//! its own unknown, not as a difference of larger angles.
 
 use std::f64::consts::PI;
 
 use kurbo::{Point, Vec2};
 
+use crate::foundation::error::Result;
 use crate::foundation::numeric::Complex;
+use crate::segment::Segment;
 
 /// Largest turning of one half, radians: the series for F loses about a digit per radian
 /// beyond π, and a spline's span that turns by more is a loop, not an S.
@@ -218,8 +223,37 @@ impl Unit {
             }
             x = next;
         }
-        let c = self.chord(d + x) + self.chord(e + x);
-        let theta = [d + x, e + x];
+        // The smaller half's turning d + A (or e + A) carries A's rounding, 1e-16, which is
+        // most of it when it turns by 1e-9, and F's slope there (θ^(a−1)) turns that into
+        // 1e-11 rad of the chord's direction: polish with the smaller turning itself as the
+        // unknown, to its own rounding, so that the S closes on its chord.
+        let (small, other) = if d <= e { (d, e) } else { (e, d) };
+        let mut t = small + x;
+        for _ in 0..8 {
+            let (tb, a) = (t + (other - small), t - small);
+            let c = self.chord(t) + self.chord(tb);
+            let g = c.arg() - a;
+            let slope = (self.chord_derivative(t) + self.chord_derivative(tb))
+                .div(c)
+                .im
+                - 1.0;
+            let next = t - g / slope;
+            if !(next > 0.0 && slope < 0.0 && next.is_finite()) {
+                break;
+            }
+            let done = (next - t).abs() <= 4.0 * f64::EPSILON * t;
+            t = next;
+            if done {
+                break;
+            }
+        }
+        let x = t - small;
+        let theta = if d <= e {
+            [t, t + (other - small)]
+        } else {
+            [t + (other - small), t]
+        };
+        let c = self.chord(theta[0]) + self.chord(theta[1]);
         let scale = chord / c.norm();
         (theta.iter().all(|t| *t >= 0.0) && scale.is_finite() && scale > 0.0).then_some(SSpan {
             unit: *self,
@@ -290,6 +324,55 @@ impl SSpan {
         out
     }
 
+    /// The segments of its halves that turn (both of an S, one of a half S), slope `alpha`,
+    /// each stopping a share `hair` of its length short of the inflection, for the chord
+    /// from `start` to `end`. Built from what the unit curve says of each half (its end
+    /// curvatures, its length, its tangent at its far end), not from its control triangle:
+    /// a half that turns by 1e-5 rad has a triangle whose apex lies 1e-8 of its length off
+    /// its chord, where the coordinates' rounding costs the curvature 1e-7 of itself.
+    /// The first half starts at `start`; the second ends within rounding of `end`.
+    pub(super) fn turning_segments(
+        &self,
+        start: Point,
+        end: Point,
+        hair: f64,
+        alpha: f64,
+    ) -> Result<Vec<Segment>> {
+        let unit = self.unit;
+        let chord = end - start;
+        // The caller's direction of a unit-frame direction t (the frame is mirrored for
+        // σ < 0): ψ + σ t.
+        let psi = chord.y.atan2(chord.x) - self.sigma * self.angle;
+        // Arc length from the inflection to the point of angle θ: (θ/a)^a, and the curvature
+        // a share `hair` of it from the inflection: a share hair^(1/a − 1) of the far end's.
+        let length = |theta: f64| self.scale * (theta / unit.a).powf(unit.a) * (1.0 - hair);
+        let thin = hair.powf(1.0 / unit.a - 1.0);
+        let [t1, t2] = self.theta;
+        let mut out = Vec::with_capacity(2);
+        if t1 > 0.0 {
+            let k = -self.sigma * unit.kappa(t1) / self.scale;
+            out.push(Segment::from_curvatures(
+                start,
+                psi + self.sigma * t1,
+                [k, k * thin],
+                length(t1),
+                alpha,
+            )?);
+        }
+        if t2 > 0.0 {
+            let k = self.sigma * unit.kappa(t2) / self.scale;
+            let near = t2 * hair.powf(1.0 / unit.a);
+            out.push(Segment::from_curvatures(
+                self.place(start, end)(unit.chord(near)),
+                psi + self.sigma * near,
+                [k * thin, k],
+                length(t2),
+                alpha,
+            )?);
+        }
+        Ok(out)
+    }
+
     /// Whether one of its halves has zero turning: it starts or ends at its inflection.
     pub(super) fn is_half(&self) -> bool {
         self.theta[0] == 0.0 || self.theta[1] == 0.0
@@ -329,8 +412,8 @@ fn triangle(p: Complex, tp: f64, q: Complex, tq: f64) -> [Complex; 3] {
 /// The share of a half's length left out next to the inflection. The curvature there is
 /// a share HAIR^(1/|α|) of the half's other end: 1e-12 for α = −1, below
 /// [`INFLECTION_LIMIT`](super::INFLECTION_LIMIT) down to α ≈ −1.3 (a spline checks it).
-/// Shorter hairs put the halves' triangles closer to the edge of the drawable region than
-/// the segment solver resolves.
+/// Shorter hairs would put the halves' triangles, which a caller sees, closer to the edge
+/// of the drawable region than the segment solver resolves.
 pub(super) const HAIR: f64 = 1e-12;
 
 #[cfg(test)]
@@ -421,6 +504,48 @@ mod tests {
             }
         }
         assert!(Unit::new(-1.0).unwrap().half(0.0, 1.0, true).is_none());
+    }
+
+    /// An S whose inflection lies almost at one of its ends (a half turning by 1e-9 rad
+    /// down to 1e-3) closes on its chord to rounding, and its halves, built from their
+    /// curvatures, reach its end there with the end curvatures of the formula (built on their
+    /// triangles, the flat half's curvature was off by up to 1e-6 of itself).
+    #[test]
+    fn an_s_with_its_inflection_almost_at_an_end_closes_and_builds() {
+        for alpha in [-0.5, -1.0] {
+            let unit = Unit::new(alpha).unwrap();
+            for small in [1e-9, 1e-7, 1e-5, 1e-3] {
+                for (big, sigma, flip) in [(0.6, 1.0, false), (0.6, -1.0, true), (1.9, 1.0, true)] {
+                    // The tangents of the S whose halves turn by `big` and `small` (the small
+                    // one second, or first when flipped): θᵢ = σ·tᵢ + A.
+                    let theta = if flip { [small, big] } else { [big, small] };
+                    let a = (unit.chord(theta[0]) + unit.chord(theta[1])).arg();
+                    let (ta, tb) = (sigma * (theta[0] - a), sigma * (theta[1] - a));
+                    let s = unit.s_span(ta, tb, 2.0).expect("an S");
+                    let [p, q] = [Point::new(0.5, -1.0), Point::new(0.5, 1.0)];
+                    let turned = s.theta[0].min(s.theta[1]);
+                    assert!(
+                        (turned - small).abs() <= 1e-6 * small,
+                        "{alpha} {small} {flip}: {:?}",
+                        s.theta
+                    );
+                    let end = s.place(p, q)(unit.chord(s.theta[1]));
+                    assert!((end - q).hypot() <= 1e-15, "{alpha} {small}: {end:?}");
+                    let segs = s.turning_segments(p, q, HAIR, alpha).unwrap();
+                    let (k0, k1) = s.end_curvatures();
+                    let (first, last) = (&segs[0], &segs[1]);
+                    assert!((first.end_curvatures().0 - k0).abs() <= 1e-14 * k0.abs());
+                    assert!((last.end_curvatures().1 - k1).abs() <= 1e-14 * k1.abs());
+                    assert!((first.first_point() - p).hypot() == 0.0);
+                    // (The second half is integrated from its flat end: a few ulps of the
+                    // chord per radian it turns.)
+                    let miss = (last.last_point() - q).hypot();
+                    assert!(miss <= 1e-14 * 2.0, "{alpha} {small} {flip}: {miss:e}");
+                    let gap = (first.last_point() - last.first_point()).hypot();
+                    assert!(gap <= 1e-11, "{gap}");
+                }
+            }
+        }
     }
 
     /// The halves built as segments (by the chord-angle solver, on their triangles) have

@@ -465,11 +465,7 @@ pub(super) fn segments_of(
 ) -> Result<Vec<Segment>> {
     match shape {
         Shape::Plain(t) => Ok(vec![Segment::from_control_points(*t, alpha)?]),
-        Shape::S(s) => s
-            .turning_halves(a, b, hair)
-            .into_iter()
-            .map(|t| Segment::from_control_points(t, alpha))
-            .collect(),
+        Shape::S(s) => s.turning_segments(a, b, hair, alpha),
         Shape::Line => Ok(Vec::new()),
     }
 }

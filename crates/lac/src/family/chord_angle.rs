@@ -73,6 +73,9 @@ pub(crate) struct ChordAngle {
     /// For a single clothoid piece (α = −1, θ ∈ [0, θd], θd ≥ `CLOTHOID_MIN_TURN`): e^{iθd},
     /// and e^{−iθe}, for the closed form of [`ChordAngle::eval_clothoid`].
     clothoid: Option<(Complex, Complex)>,
+    /// A first μ to try instead of the circle's or the clothoid table's (a caller's last
+    /// answer to a nearby problem).
+    hint: Option<f64>,
 }
 
 struct Eval {
@@ -118,7 +121,14 @@ impl ChordAngle {
             nodes: [OnceCell::new(), OnceCell::new()],
             clothoid: (alpha == [-1.0, -1.0] && theta[0] == 0.0 && theta[1] >= CLOTHOID_MIN_TURN)
                 .then(|| (Complex::cis(theta[1]), Complex::cis(theta_e).conj())),
+            hint: None,
         }
+    }
+
+    /// The same problem, its search started at `mu` when that is a finite positive number.
+    pub(crate) fn with_hint(mut self, mu: Option<f64>) -> Self {
+        self.hint = mu.filter(|m| m.is_finite() && *m > 0.0);
+        self
     }
 
     /// The far station of piece `i` (θ = −θ0 or θ1) for Λ, with w = ρ^(α−1) there taken
@@ -406,8 +416,12 @@ impl ChordAngle {
         let (g0, slope0, first) = self.at_circle();
         // The circle's model is good near μ = 0 only; a clothoid has its table.
         let first = self
-            .clothoid
-            .and_then(|_| guess::clothoid(self.theta[1], self.theta_e))
+            .hint
+            .filter(|m| *m < mu_max)
+            .or_else(|| {
+                self.clothoid
+                    .and_then(|_| guess::clothoid(self.theta[1], self.theta_e))
+            })
             .unwrap_or(first);
         let (mut mu, mut g, mut slope) = (0.0, g0, slope0);
         let mut first = Some(first);
@@ -538,9 +552,19 @@ impl Solution {
 
 /// Find the single piece whose chord angle at its start is `theta_e`, for turning
 /// `theta_d`. Requires 0 < θd < π and θd/2 ≤ θe < θd (the shorter leg first).
-pub(crate) fn solve(alpha: f64, theta_d: f64, theta_e: f64) -> Result<Solution> {
+/// The search starts at `hint` (e.g. the μ of a nearby problem's solution) when given: the
+/// same solution (g increases with μ, so there is one), in fewer evaluations when the hint
+/// is close.
+pub(crate) fn solve_near(
+    alpha: f64,
+    theta_d: f64,
+    theta_e: f64,
+    hint: Option<f64>,
+) -> Result<Solution> {
     let (theta, i) = single(alpha, theta_d);
-    let e = ChordAngle::new([alpha, alpha], theta, theta_e).solve_eval()?;
+    let e = ChordAngle::new([alpha, alpha], theta, theta_e)
+        .with_hint(hint)
+        .solve_eval()?;
     Ok(Solution::of(e, i))
 }
 
@@ -586,6 +610,37 @@ mod tests {
     /// The chord angle's limit for turning `theta_d` (at μ = 40 it is within e^{−40}).
     fn phi_max(theta_d: f64) -> f64 {
         ChordAngle::new([-1.0; 2], [0.0, theta_d], 0.0).eval(40.0).g
+    }
+
+    /// A hint, near or far (even past the search's range), gives the solution found
+    /// without one: g increases with μ, so there is one root.
+    #[test]
+    fn a_hint_gives_the_same_solution() {
+        for alpha in [-1.0, -0.5, 0.0, 0.7, 2.0] {
+            for (theta_d, r) in [(0.8, 0.52), (2.0, 0.7), (0.01, 0.6)] {
+                let theta_e = r * theta_d;
+                let Ok(cold) = solve_near(alpha, theta_d, theta_e, None) else {
+                    // Not drawable: not with a hint either.
+                    assert!(solve_near(alpha, theta_d, theta_e, Some(0.5)).is_err());
+                    continue;
+                };
+                for hint in [
+                    cold.mu * (1.0 + 1e-6),
+                    cold.mu * 2.0 + 0.1,
+                    1e-9,
+                    1e6,
+                    f64::NAN,
+                ] {
+                    let warm = solve_near(alpha, theta_d, theta_e, Some(hint)).unwrap();
+                    assert!(
+                        (warm.mu - cold.mu).abs() <= 1e-12 * cold.mu.max(1.0),
+                        "{alpha} {theta_d} {r} {hint}: {} {}",
+                        warm.mu,
+                        cold.mu
+                    );
+                }
+            }
+        }
     }
 
     /// The guess table is what the solver makes of its grid (so it can be regenerated, and a

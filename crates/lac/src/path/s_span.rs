@@ -102,10 +102,29 @@ impl Unit {
     /// chord of length `chord`, or `None` when there is none that turns by at most
     /// [`MAX_HALF_TURNING`] each way. Of the two mirror images, the one that turns less.
     pub(super) fn s_span(&self, ta: f64, tb: f64, chord: f64) -> Option<SSpan> {
-        [1.0, -1.0]
-            .into_iter()
-            .filter_map(|sigma| self.s_span_of(sigma, ta, tb, chord))
-            .min_by(|x, y| (x.theta[0] + x.theta[1]).total_cmp(&(y.theta[0] + y.theta[1])))
+        self.s_span_near(ta, tb, chord, None)
+    }
+
+    /// [`Unit::s_span`], started from `hint`, the [`SSpan::hint`] of the S of nearby
+    /// tangents, when given: Newton's method from its A on its mirror image, and the other
+    /// image searched only as far as it could turn less. Without a hint, or when Newton's
+    /// method does not converge from it, the search from the smallest admissible A.
+    pub(super) fn s_span_near(
+        &self,
+        ta: f64,
+        tb: f64,
+        chord: f64,
+        hint: Option<(f64, f64)>,
+    ) -> Option<SSpan> {
+        let (first, a0) = hint.map_or((1.0, None), |(sigma, a)| (sigma, Some(a)));
+        let found = a0
+            .and_then(|a0| self.s_span_from(first, ta, tb, chord, a0))
+            .or_else(|| self.s_span_of(first, ta, tb, chord, f64::INFINITY));
+        let bound = found.map_or(f64::INFINITY, |s| s.theta[0] + s.theta[1]);
+        match self.s_span_of(-first, ta, tb, chord, bound) {
+            Some(other) if other.theta[0] + other.theta[1] < bound => Some(other),
+            _ => found,
+        }
     }
 
     /// The half S from a point to its inflection, or from its inflection to a point: the
@@ -117,7 +136,16 @@ impl Unit {
     ///
     /// With one half of the S of zero turning, A = |t_inflection| and σ = −sign(t_inflection):
     /// the turning θ of the other half solves arg F(θ) = A, which grows from 0 with θ.
-    pub(super) fn half(&self, t_inflection: f64, chord: f64, at_end: bool) -> Option<(SSpan, f64)> {
+    ///
+    /// `hint`, the turning of a nearby half's, starts the search when given (arg F grows
+    /// with θ, so the answer is the same).
+    pub(super) fn half(
+        &self,
+        t_inflection: f64,
+        chord: f64,
+        at_end: bool,
+        hint: Option<f64>,
+    ) -> Option<(SSpan, f64)> {
         if !(t_inflection != 0.0 && t_inflection.is_finite() && chord > 0.0) {
             return None;
         }
@@ -129,7 +157,9 @@ impl Unit {
             return None;
         }
         // arg F(θ) = θ a/(1 + a) + O(θ³): the first guess.
-        let mut x = (target * (1.0 + self.a) / self.a).clamp(0.05 * hi, 0.95 * hi);
+        let mut x = hint
+            .filter(|h| *h > 0.0 && *h < hi)
+            .unwrap_or_else(|| (target * (1.0 + self.a) / self.a).clamp(0.05 * hi, 0.95 * hi));
         for _ in 0..100 {
             let c = self.chord(x);
             let gx = c.arg() - target;
@@ -172,14 +202,17 @@ impl Unit {
     }
 
     /// The S of orientation `sigma` (+1: it turns right first): the root A of
-    /// g(A) = arg(F(σ·ta + A) + F(σ·tb + A)) − A nearest to its smallest admissible value.
-    fn s_span_of(&self, sigma: f64, ta: f64, tb: f64, chord: f64) -> Option<SSpan> {
+    /// g(A) = arg(F(σ·ta + A) + F(σ·tb + A)) − A nearest to its smallest admissible value,
+    /// or `None` when there is none, or none that turns by less than `within` in all.
+    fn s_span_of(&self, sigma: f64, ta: f64, tb: f64, chord: f64, within: f64) -> Option<SSpan> {
         let (d, e) = (sigma * ta, sigma * tb);
         let g = |a: f64| -> (f64, Complex) {
             let c = self.chord(d + a) + self.chord(e + a);
             (c.arg() - a, c)
         };
-        let admissible = |a: f64| (d + a).max(e + a) <= MAX_HALF_TURNING;
+        // The S turns by d + e + 2A in all.
+        let admissible =
+            |a: f64| (d + a).max(e + a) <= MAX_HALF_TURNING && d + e + 2.0 * a < within;
         // At the smallest A one half has zero turning: g > 0 there, or no root follows.
         let mut lo = 0.0f64.max(-d).max(-e);
         if !admissible(lo) || g(lo).0 <= 0.0 {
@@ -223,13 +256,47 @@ impl Unit {
             }
             x = next;
         }
+        self.finish(sigma, d, e, x, chord)
+    }
+
+    /// The S of orientation `sigma` by Newton's method from A = `a0` (a nearby S's), or
+    /// `None` when it leaves the admissible range or does not settle in a few steps.
+    fn s_span_from(&self, sigma: f64, ta: f64, tb: f64, chord: f64, a0: f64) -> Option<SSpan> {
+        let (d, e) = (sigma * ta, sigma * tb);
+        let lo = 0.0f64.max(-d).max(-e);
+        let mut x = a0;
+        for _ in 0..8 {
+            let c = self.chord(d + x) + self.chord(e + x);
+            let gx = c.arg() - x;
+            let dc = self.chord_derivative(d + x) + self.chord_derivative(e + x);
+            let slope = dc.div(c).im - 1.0;
+            let next = x - gx / slope;
+            if !(slope < 0.0 && next > lo && (d + next).max(e + next) <= MAX_HALF_TURNING) {
+                return None;
+            }
+            let done = (next - x).abs() <= 4.0 * f64::EPSILON * x.abs().max(1.0);
+            x = next;
+            if done {
+                return self.finish(sigma, d, e, x, chord);
+            }
+        }
+        None
+    }
+
+    /// The S of orientation `sigma` whose chord makes the angle A ≈ `x` with its inflection
+    /// tangent, its halves turning by d + A and e + A, scaled to a chord of length `chord`.
+    fn finish(&self, sigma: f64, d: f64, e: f64, x: f64, chord: f64) -> Option<SSpan> {
         // The smaller half's turning d + A (or e + A) carries A's rounding, 1e-16, which is
         // most of it when it turns by 1e-9, and F's slope there (θ^(a−1)) turns that into
         // 1e-11 rad of the chord's direction: polish with the smaller turning itself as the
-        // unknown, to its own rounding, so that the S closes on its chord.
+        // unknown, to its own rounding, so that the S closes on its chord. (Where it turns by
+        // more than 0.01 rad, A's rounding is below its own.)
         let (small, other) = if d <= e { (d, e) } else { (e, d) };
         let mut t = small + x;
         for _ in 0..8 {
+            if t > 1e-2 {
+                break;
+            }
             let (tb, a) = (t + (other - small), t - small);
             let c = self.chord(t) + self.chord(tb);
             let g = c.arg() - a;
@@ -280,6 +347,11 @@ pub(super) struct SSpan {
 }
 
 impl SSpan {
+    /// What [`Unit::s_span_near`] starts from for nearby tangents: its mirror image and A.
+    pub(super) fn hint(&self) -> (f64, f64) {
+        (self.sigma, self.angle)
+    }
+
     /// The signed curvature at its start and end.
     pub(super) fn end_curvatures(&self) -> (f64, f64) {
         let [t1, t2] = self.theta;
@@ -476,7 +548,7 @@ mod tests {
             for t in [0.05, 0.3, -0.25] {
                 for at_end in [true, false] {
                     let (s, other) = unit
-                        .half(t, 2.0, at_end)
+                        .half(t, 2.0, at_end, None)
                         .unwrap_or_else(|| panic!("a half: {alpha} {t} {at_end}"));
                     let theta = s.theta[0].max(s.theta[1]);
                     let c = unit.chord(theta);
@@ -503,7 +575,10 @@ mod tests {
                 }
             }
         }
-        assert!(Unit::new(-1.0).unwrap().half(0.0, 1.0, true).is_none());
+        assert!(Unit::new(-1.0)
+            .unwrap()
+            .half(0.0, 1.0, true, None)
+            .is_none());
     }
 
     /// An S whose inflection lies almost at one of its ends (a half turning by 1e-9 rad
@@ -545,6 +620,41 @@ mod tests {
                     assert!(gap <= 1e-11, "{gap}");
                 }
             }
+        }
+    }
+
+    /// Started from a nearby S (as a spline's Newton iteration does), the search finds the
+    /// S it finds from scratch, mirror image and all; a half S likewise.
+    #[test]
+    fn a_hint_finds_the_same_s() {
+        for alpha in [-0.5, -1.0] {
+            let unit = Unit::new(alpha).unwrap();
+            for (ta, tb) in [
+                (0.4, 0.3),
+                (-0.2, -0.7),
+                (0.05, 0.9),
+                (0.3, 0.001),
+                (1.2, 0.2),
+            ] {
+                let near = unit.s_span(ta, tb, 2.0).expect("an S");
+                for d in [1e-7, 1e-3, -2e-2] {
+                    let cold = unit.s_span(ta + d, tb - d, 2.0);
+                    let warm = unit.s_span_near(ta + d, tb - d, 2.0, Some(near.hint()));
+                    let (cold, warm) = (cold.expect("an S"), warm.expect("an S"));
+                    assert_eq!(cold.sigma, warm.sigma, "{alpha} {ta} {tb} {d}");
+                    for i in 0..2 {
+                        let gap = (cold.theta[i] - warm.theta[i]).abs();
+                        assert!(
+                            gap <= 1e-14 * cold.theta[i].max(1.0),
+                            "{alpha} {ta} {tb} {d}"
+                        );
+                    }
+                }
+            }
+            let (half, _) = unit.half(0.3, 2.0, true, None).unwrap();
+            let hinted = unit.half(0.31, 2.0, true, Some(half.theta[0])).unwrap().0;
+            let cold = unit.half(0.31, 2.0, true, None).unwrap().0;
+            assert!((hinted.theta[0] - cold.theta[0]).abs() <= 1e-14);
         }
     }
 

@@ -158,9 +158,24 @@ impl SegmentSolution {
     /// Solve the segment on `points` with slope `alpha` (not checked: see
     /// [`Segment::from_control_points`]).
     pub(crate) fn new(points: [Point; 3], alpha: f64) -> Result<SegmentSolution> {
+        Self::near(points, alpha, None)
+    }
+
+    /// [`SegmentSolution::new`], the chord-angle search started at μ = `hint` when given
+    /// (the [`SegmentSolution::mu`] of a nearby triangle's solution).
+    pub(crate) fn near(
+        points: [Point; 3],
+        alpha: f64,
+        hint: Option<f64>,
+    ) -> Result<SegmentSolution> {
         let arranged = Self::arrange(points)?;
-        let solution = chord_angle::solve(alpha, arranged.0.turning, arranged.2)?;
+        let solution = chord_angle::solve_near(alpha, arranged.0.turning, arranged.2, hint)?;
         Ok(Self::with(points, alpha, arranged, solution))
+    }
+
+    /// The solution's μ, a hint for a nearby triangle's.
+    pub(crate) fn mu(&self) -> f64 {
+        self.solution.mu
     }
 
     /// The segment on `points`, arranged by [`SegmentSolution::arrange`], with its piece.

@@ -8,11 +8,11 @@ use super::super::run::Item;
 use super::super::s_span::HAIR;
 use super::super::{joint_limits, G2_JUMP_LIMIT, INFLECTION_LIMIT};
 use super::layout::{dir, wrap, At, Condition, Kind, Layout, Plan, Tangent};
-use super::solve::{point_of, segments_of, Problem, Shape};
+use super::solve::{point_of, segments_of, Memo, Problem, Shape};
 use super::{Spline, SplineInflection, SplineKnot, SplinePoint};
 use crate::foundation::error::{Error, G2Failure, PointFailure, Result};
 use crate::foundation::numeric::length;
-use crate::segment::Segment;
+use crate::segment::{Segment, SegmentSolution};
 
 /// An S whose half turns by less than this (radians) has its inflection within a hair of
 /// a point.
@@ -79,26 +79,28 @@ fn built_span(p: &Problem, x: &[f64], k: usize) -> Result<Built> {
     };
     match value.shape {
         Shape::Line => Ok((Vec::new(), Vec::new(), None)),
-        Shape::Plain(t) => match Segment::from_control_points(t, p.alpha) {
-            Ok(seg) => Ok((vec![seg], vec![t], None)),
-            Err(e) => {
-                let psi = dir(b - a);
-                let (ta, tb) = (
-                    wrap(l.tangent(x, k, true) - psi),
-                    wrap(l.tangent(x, l.end_of(k), false) - psi),
-                );
-                let s = p.unit.and_then(|u| u.s_span(ta, tb, length(b - a))).ok_or(
-                    Error::SplineSpan {
-                        span,
-                        source: Box::new(e),
-                    },
-                )?;
-                let shape = Shape::S(s);
-                let segs =
-                    segments_of(&shape, a, b, p.alpha, HAIR).map_err(|_| s_failure(&shape))?;
-                Ok((segs, s_triangles(&shape), Some(shape)))
+        Shape::Plain(t) => {
+            match SegmentSolution::near(t, p.alpha, p.mu_of(k)).and_then(|s| s.into_segment()) {
+                Ok(seg) => Ok((vec![seg], vec![t], None)),
+                Err(e) => {
+                    let psi = dir(b - a);
+                    let (ta, tb) = (
+                        wrap(l.tangent(x, k, true) - psi),
+                        wrap(l.tangent(x, l.end_of(k), false) - psi),
+                    );
+                    let s = p.unit.and_then(|u| u.s_span(ta, tb, length(b - a))).ok_or(
+                        Error::SplineSpan {
+                            span,
+                            source: Box::new(e),
+                        },
+                    )?;
+                    let shape = Shape::S(s);
+                    let segs =
+                        segments_of(&shape, a, b, p.alpha, HAIR).map_err(|_| s_failure(&shape))?;
+                    Ok((segs, s_triangles(&shape), Some(shape)))
+                }
             }
-        },
+        }
         shape @ Shape::S(_) => {
             let segs =
                 segments_of(&shape, a, b, p.alpha, hair(&shape)).map_err(|_| s_failure(&shape))?;
@@ -132,10 +134,17 @@ fn start_of(seg: &Segment) -> Result<Side> {
 }
 
 /// Build the segments and lines of answer `x` into `s`, checking every node and inflection.
-pub(super) fn build(s: &mut Spline, plan: &Plan, layout: &Layout, x: Vec<f64>) -> Result<()> {
+pub(super) fn build(
+    s: &mut Spline,
+    plan: &Plan,
+    layout: &Layout,
+    x: Vec<f64>,
+    memo: &[Memo],
+) -> Result<()> {
     let points = s.points.clone();
     let alpha = s.alpha;
     let p = Problem::new(&points, layout, alpha);
+    p.seed(memo);
     let m = layout.nodes.len();
     let spans = layout.spans.len();
     let (mut segments, mut triangles, mut spans_of_pieces, mut items) =

@@ -82,6 +82,8 @@ pub struct Spline {
     tangents_before: bool,
     /// The last Jacobian of the point conditions (empty: none).
     jacobian: solve::Entries,
+    /// Where each span's own search ended (the warm start of a re-solve's spans).
+    memo: Vec<solve::Memo>,
 }
 
 /// Where a span of a [`Spline`] passes through an inflection, as measured on its two
@@ -199,6 +201,7 @@ impl Spline {
             share: near.knot_share,
             before: near.tangents_before,
             jacobian: &near.jacobian,
+            memo: &near.memo,
         }))
     }
 
@@ -211,13 +214,13 @@ impl Spline {
         let mut built: Option<(Vec<f64>, Spline)> = None;
         let mut accept = |l: &layout::Layout, x: &[f64]| {
             let mut trial = self.clone();
-            let ok = build::build(&mut trial, &plan, l, x.to_vec()).is_ok();
+            let ok = build::build(&mut trial, &plan, l, x.to_vec(), &[]).is_ok();
             if ok {
                 built = Some((x.to_vec(), trial));
             }
             ok
         };
-        let (layout, x, jacobian) = solve::solve(
+        let (layout, x, jacobian, memo) = solve::solve(
             &self.points,
             self.closed,
             self.alpha,
@@ -227,9 +230,10 @@ impl Spline {
         )?;
         match built {
             Some((bx, trial)) if bx == x => self = trial,
-            _ => build::build(&mut self, &plan, &layout, x)?,
+            _ => build::build(&mut self, &plan, &layout, x, &memo)?,
         }
         self.jacobian = jacobian.unwrap_or_default();
+        self.memo = memo;
         check_total_length(&self)?;
         Ok(self)
     }
@@ -308,6 +312,7 @@ impl Spline {
             knot_share: 0.5,
             tangents_before: false,
             jacobian: Vec::new(),
+            memo: Vec::new(),
         })
     }
 

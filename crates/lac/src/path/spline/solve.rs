@@ -17,7 +17,7 @@ use crate::curve::chain::Chain;
 use crate::curve::Curve;
 use crate::foundation::error::{Error, G2Failure, PointFailure, Result};
 use crate::foundation::numeric::length;
-use crate::segment::{end_curvatures_of, Segment};
+use crate::segment::{Segment, SegmentSolution};
 
 /// Most Newton steps.
 const MAX_STEPS: usize = 60;
@@ -52,8 +52,19 @@ pub(super) struct Value {
     pub(super) other: f64,
 }
 
+/// Where each span's own search ended last time: a plain segment's μ, an S's mirror image
+/// and A, a half S's turning. The next evaluation of the span, a Newton step or a
+/// difference away, starts there (each search has one answer, or is checked, so the hint
+/// only saves evaluations).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(super) struct Memo {
+    mu: Option<f64>,
+    s: Option<(f64, f64)>,
+    half: Option<f64>,
+}
+
 /// One problem: the points, the layout, the slope; the Jacobian Newton's method starts from
-/// (an earlier answer's, for a warm re-solve) and the last one it made.
+/// (an earlier answer's, for a warm re-solve) and the last one it made; each span's memo.
 pub(super) struct Problem<'a> {
     pub(super) points: &'a [Point],
     pub(super) layout: &'a Layout,
@@ -61,6 +72,7 @@ pub(super) struct Problem<'a> {
     pub(super) unit: Option<Unit>,
     start: RefCell<Option<Entries>>,
     last: RefCell<Option<Entries>>,
+    memo: RefCell<Vec<Memo>>,
 }
 
 impl Problem<'_> {
@@ -72,7 +84,26 @@ impl Problem<'_> {
             unit: Unit::new(alpha),
             start: RefCell::new(None),
             last: RefCell::new(None),
+            memo: RefCell::new(vec![Memo::default(); layout.spans.len()]),
         }
+    }
+
+    /// Every span's memo.
+    pub(super) fn memos(&self) -> Vec<Memo> {
+        self.memo.borrow().clone()
+    }
+
+    /// Start each span's search from `memo` (another problem's on the same layout).
+    pub(super) fn seed(&self, memo: &[Memo]) {
+        let mut mine = self.memo.borrow_mut();
+        if memo.len() == mine.len() {
+            mine.copy_from_slice(memo);
+        }
+    }
+
+    /// The μ span `k`'s plain segment was last solved with, if it was.
+    pub(super) fn mu_of(&self, k: usize) -> Option<f64> {
+        self.memo.borrow().get(k).and_then(|m| m.mu)
     }
 
     /// Span `k` (from node k to the next) for unknowns `x`.
@@ -90,6 +121,12 @@ impl Problem<'_> {
             wrap(l.tangent(x, ka, true) - psi),
             wrap(l.tangent(x, kb, false) - psi),
         );
+        let memo = self.memo.borrow().get(k).copied().unwrap_or_default();
+        let remember = |m: Memo| {
+            if let Some(slot) = self.memo.borrow_mut().get_mut(k) {
+                *slot = m;
+            }
+        };
         let half = |t: f64, at_end: bool| -> Result<Value> {
             let fail = || Error::SplinePoint {
                 point: point_of(l, if at_end { kb } else { ka }),
@@ -100,8 +137,12 @@ impl Problem<'_> {
             };
             let (s, other) = self
                 .unit
-                .and_then(|u| u.half(t, c, at_end))
+                .and_then(|u| u.half(t, c, at_end, memo.half))
                 .ok_or_else(fail)?;
+            remember(Memo {
+                half: Some(s.theta[0].max(s.theta[1])),
+                ..memo
+            });
             Ok(Value {
                 shape: Shape::S(s),
                 kappa: s.end_curvatures(),
@@ -118,8 +159,17 @@ impl Problem<'_> {
             Kind::HalfFromStart => half(ta, false),
             Kind::Curve => {
                 let phi_a = l.tangent(x, ka, true);
-                let (shape, kappa) =
-                    curve(self.alpha, self.unit.as_ref(), a, b, [phi_a, ta, tb], span)?;
+                let mut m = memo;
+                let (shape, kappa) = curve(
+                    self.alpha,
+                    self.unit.as_ref(),
+                    a,
+                    b,
+                    [phi_a, ta, tb],
+                    span,
+                    &mut m,
+                )?;
+                remember(m);
                 Ok(Value {
                     shape,
                     kappa,
@@ -410,7 +460,7 @@ pub(super) fn point_of(layout: &Layout, k: usize) -> usize {
 /// The shape of a curve span from `a` to `b` whose start tangent has direction `phi_a` and
 /// whose end tangents make the angles `ta`, `tb` with its chord, at slope `alpha` (`unit`
 /// the unit curve through the inflection, for α < 0), and its signed end curvatures, or why
-/// it has none (`span` names it).
+/// it has none (`span` names it). Its searches start from `memo`, which it updates.
 pub(super) fn curve(
     alpha: f64,
     unit: Option<&Unit>,
@@ -418,18 +468,29 @@ pub(super) fn curve(
     b: Point,
     [phi_a, ta, tb]: [f64; 3],
     span: usize,
+    memo: &mut Memo,
 ) -> Result<(Shape, (f64, f64))> {
     let c = length(b - a);
-    let s_span = || unit.and_then(|u| u.s_span(ta, tb, c));
+    let hint = memo.s;
+    let s_span = || unit.and_then(|u| u.s_span_near(ta, tb, c, hint));
+    let s_found = |memo: &mut Memo, s: SSpan| {
+        memo.s = Some(s.hint());
+        Ok((Shape::S(s), s.end_curvatures()))
+    };
     // One segment turns one way: its tangents leave and reach the chord from opposite
     // sides, and turn by less than π.
     if ta * tb < 0.0 && ta.abs() + tb.abs() < PI {
         let u = c * tb.abs().sin() / (ta.abs() + tb.abs()).sin();
         let t = [a, a + Vec2::from_angle(phi_a) * u, b];
-        return match end_curvatures_of(t, alpha) {
-            Ok(k) => Ok((Shape::Plain(t), k)),
+        let solved = SegmentSolution::near(t, alpha, memo.mu)
+            .and_then(|s| Ok((s.end_curvatures()?, s.mu())));
+        return match solved {
+            Ok((k, mu)) => {
+                memo.mu = Some(mu);
+                Ok((Shape::Plain(t), k))
+            }
             Err(e) => match s_span() {
-                Some(s) => Ok((Shape::S(s), s.end_curvatures())),
+                Some(s) => s_found(memo, s),
                 None => Err(Error::SplineSpan {
                     span,
                     // Points near 1e308 can put the tangents' meeting point beyond double
@@ -446,7 +507,7 @@ pub(super) fn curve(
         };
     }
     match s_span() {
-        Some(s) => Ok((Shape::S(s), s.end_curvatures())),
+        Some(s) => s_found(memo, s),
         None => Err(Error::NoG2Spline {
             span,
             reason: G2Failure::SpanInflects,
@@ -477,14 +538,15 @@ pub(super) struct Warm<'a> {
     pub(super) share: f64,
     pub(super) before: bool,
     pub(super) jacobian: &'a Entries,
+    pub(super) memo: &'a [Memo],
 }
 
 /// The answer of one problem: the unknowns and the rows' misses.
 type Answer = (Vec<f64>, Vec<f64>);
 
-/// A solved problem: its layout, its unknowns, and the last Jacobian of the point conditions'
-/// Newton's method (the warm start of a re-solve), if it made one.
-pub(super) type Solved = (Layout, Vec<f64>, Option<Entries>);
+/// A solved problem: its layout, its unknowns, the last Jacobian of the point conditions'
+/// Newton's method (the warm start of a re-solve), if it made one, and its spans' memos.
+pub(super) type Solved = (Layout, Vec<f64>, Option<Entries>, Vec<Memo>);
 
 /// Solve the relaxed problem, then (when the plan asks more) the full one from it, or from
 /// `warm` (an earlier answer's unknowns for the same plan, and its knots' share). `accept` builds and checks a
@@ -504,6 +566,7 @@ pub(super) fn solve(
         share,
         before,
         jacobian,
+        memo,
     }) = warm
     {
         let placed = if before {
@@ -526,10 +589,11 @@ pub(super) fn solve(
         if let Some((layout, x)) = start {
             let p = Problem::new(points, &layout, alpha);
             *p.start.borrow_mut() = (!jacobian.is_empty()).then(|| jacobian.clone());
+            p.seed(memo);
             if let Ok((x, misses)) = p.newton(x, &vec![0.0; layout.rows.len()]) {
                 if converged(&misses) {
-                    let jacobian = p.last.take();
-                    return Ok((layout, x, jacobian));
+                    let (jacobian, memo) = (p.last.take(), p.memos());
+                    return Ok((layout, x, jacobian, memo));
                 }
             }
         }
@@ -542,7 +606,7 @@ pub(super) fn solve(
         })?
     };
     if plan.is_relaxed() {
-        return Ok((relaxed, x, None));
+        return Ok((relaxed, x, None, Vec::new()));
     }
     // The full problem from the relaxed answer, its knots' lines across their chords at
     // each of KNOT_SHARES in turn until one converges (the spline depends on where they
@@ -623,8 +687,8 @@ fn full(
     let mut best: Option<Answer> = None;
     if let Ok(answer) = p.newton(x0.clone(), &zero) {
         if converged(&answer.1) {
-            let jacobian = p.last.take();
-            return Ok((layout, answer.0, jacobian));
+            let (jacobian, memo) = (p.last.take(), p.memos());
+            return Ok((layout, answer.0, jacobian, memo));
         }
         best = Some(answer);
     }
@@ -638,8 +702,8 @@ fn full(
                 x = x2;
                 if t == 1.0 {
                     if converged(&misses) {
-                        let jacobian = p.last.take();
-                        return Ok((layout, x, jacobian));
+                        let (jacobian, memo) = (p.last.take(), p.memos());
+                        return Ok((layout, x, jacobian, memo));
                     }
                     if best
                         .as_ref()

@@ -196,17 +196,20 @@ pub(crate) enum Command {
                                 [--samples N] [--format json|csv|svg] [-o FILE|-] [--comb] [--evolute]"
     )]
     Path(PathArgs),
-    /// Export a segment, compound curve, path or space segment for CAD: rational degree-3
-    /// B-splines within a tolerance (DXF, STEP, IGES, JSON) or plain cubic Béziers (SVG), with
-    /// the achieved deviation measured densely
+    /// Export a segment, compound curve, path, spline or space segment for CAD: rational
+    /// degree-3 B-splines within a tolerance (DXF, STEP, IGES, JSON) or plain cubic Béziers
+    /// (SVG), with the achieved deviation measured densely
     ///
     /// The curve is given as for lac segment, lac compound or lac space (--points with
     /// --alpha; --alpha0, --alpha1 and --ratio; or four 3-D points with --alpha and --beta), or
     /// as one result of those commands (or of lac fit) in FILE or on standard input; or a path (--polygon with
     /// --alpha or --alphas, --closed, --g2 or --fractions, as lac path takes them, or lac
-    /// path's result). Planar curves become the quasi-aesthetic rational cubics of lac quasi
-    /// (joined G2, each piece's curvature proven monotone; a path segment by segment, its
-    /// joints knots with the path's continuity, G2 or G1), space curves cubic Hermite pieces (joined C1); the pieces are written as one
+    /// path's result); or a spline (--through with --alpha, --closed, --start-angle,
+    /// --end-angle, --types, --angles, --lines, --start-curvature and --end-curvature, as lac
+    /// spline takes them, or lac spline's result). Planar curves become the quasi-aesthetic rational cubics of lac quasi
+    /// (joined G2, each piece's curvature proven monotone; a path or spline piece by piece,
+    /// its joints knots with the curve's continuity: G2, G1 at a G1 path's joints, G0 at a
+    /// spline's corners), space curves cubic Hermite pieces (joined C1); the pieces are written as one
     /// clamped B-spline (interior knots of multiplicity 3), or with --pieces as one curve per
     /// piece. Lengths are in model units, declared as millimetres in DXF, STEP and IGES.
     ///
@@ -222,10 +225,15 @@ pub(crate) enum Command {
                                 --omega W --type 1|2]\n       \
                                 lac export --format … -o FILE --polygon … (--alpha A | \
                                 --alphas …) [--closed] [--g2 | --fractions …]\n       \
+                                lac export --format … -o FILE --through … --alpha A [--closed] \
+                                [--start-angle R] [--end-angle R] [--types \"s t c …\"]\n                  \
+                                [--angles \"i:θ,…\"] [--lines \"i-j,…\"] [--start-curvature K] \
+                                [--end-curvature K]\n       \
                                 lac export [FILE|-] --format … -o FILE      \
                                 # a lac segment, compound, path, spline, space or fit result"
     )]
-    Export(ExportArgs),
+    // Boxed: its groups of flags make it several times the size of the other variants.
+    Export(Box<ExportArgs>),
     /// Draw a G2 spline of log-aesthetic segments through points: one segment per span (for
     /// alpha < 0, an S of two segments meeting at zero curvature where the span must
     /// inflect), the tangent angles at the points solved so that the curvature is continuous

@@ -25,7 +25,7 @@ pub struct ExportCurve<'a> {
     /// Its arc length (a relative tolerance is a share of it).
     pub length: f64,
     /// The continuity the B-spline has at the knots between parts: `"G2"`, `"G1"` (a G1
-    /// path) or `"C1"` (space curves).
+    /// path), `"G0"` (a spline with corners) or `"C1"` (space curves).
     pub continuity: &'static str,
     /// The parts it is fitted by.
     pub parts: Parts<'a>,

@@ -527,3 +527,107 @@ test('spline: point types by key, drawn with their markers; what lac spline give
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('spline: the point menu sets a corner and a straight span; the copied link gives a fresh page the same types', async () => {
+  // A link written before point types (points, no types): every point smooth.
+  const through = [[0, 0], [1, 2], [3, 2.5], [5, 2.5], [6, 1.5], [7, 2.5], [8, 4.5]];
+  const { page, context, errors } = await openEditor(
+    `#mode=spline&points=${through.map((p) => p.join(',')).join(';')}&alpha=-1&closed=0`,
+    { permissions: ['clipboard-read', 'clipboard-write'] });
+  let s = await editorState(page);
+  assert.equal(s.error, null, JSON.stringify(s.error));
+  assert.deepEqual(s.design.types, through.map(() => 's'));
+  assert.deepEqual(s.design.lines, []);
+  assert.ok(s.answer.at_points.every((p) => p.type === 'smooth'));
+
+  const menu = page.locator('#point-menu');
+  /** Right-click control point `i`: its menu opens, the point's type checked and focused. */
+  async function openMenu(i) {
+    const [x, y] = await page.evaluate((k) => window.lacEditor.screenOf(k), i);
+    await page.mouse.click(x, y, { button: 'right' });
+    await menu.waitFor({ state: 'visible' });
+    assert.equal(await menu.getAttribute('role'), 'menu');
+    assert.equal(await menu.locator('.menu-title').textContent(), `P${i}`);
+  }
+  /** Do `act`, then wait for the answer it asks for. */
+  async function answered(act) {
+    const updates = await page.evaluate(() => window.lacEditor.probe.updates);
+    await act();
+    await settled(page, updates);
+    return editorState(page);
+  }
+
+  // P4 a corner, by mouse. The menu's focus starts on the point's type (smooth).
+  await openMenu(4);
+  const focused = () => page.evaluate(() => document.activeElement.textContent);
+  assert.match(await focused(), /^●?SmoothS$/);
+  assert.equal(await menu.getByRole('menuitemradio', { name: /Smooth/ }).getAttribute('aria-checked'), 'true');
+  assert.equal(await menu.getByRole('menuitemcheckbox', { name: /Straight span to P5/ }).getAttribute('aria-checked'), 'false');
+  await page.screenshot({ path: join(ARTIFACTS, 'spline-point-menu.png') });
+  s = await answered(() => menu.getByRole('menuitemradio', { name: /Corner/ }).click());
+  assert.equal(await menu.count(), 0, 'a choice closes the menu');
+  assert.equal(s.design.types[4], 'c');
+  assert.equal(s.answer.at_points[4].type, 'corner');
+  const [inAngle, outAngle] = s.answer.at_points[4].angles;
+  assert.ok(Math.abs(outAngle - inAngle) > 1, 'the tangent breaks at the corner');
+
+  // P2 to P3 straight, by keyboard: End reaches the span's checkbox, Enter chooses it.
+  await openMenu(2);
+  await page.keyboard.press('End');
+  assert.match(await focused(), /Straight span to P3/);
+  s = await answered(() => page.keyboard.press('Enter'));
+  assert.deepEqual(s.design.lines, [2]);
+  assert.deepEqual(s.answer.at_points[2].straight, [false, true]);
+  assert.deepEqual(s.answer.at_points[3].straight, [true, false]);
+  // P1 a tangent point, by its letter in the menu: the direction the curve has there.
+  await openMenu(1);
+  s = await answered(() => page.keyboard.press('t'));
+  assert.equal(s.design.types[1], 't');
+  assert.equal(typeof s.design.angles[1][0], 'number');
+  assert.equal(await menu.count(), 0);
+
+  // Escape closes the menu, and so does a click elsewhere; neither changes the design.
+  const before = JSON.stringify((await editorState(page)).design);
+  await openMenu(5);
+  await page.keyboard.press('Escape');
+  assert.equal(await menu.count(), 0, 'Escape closes the menu');
+  await openMenu(5);
+  await page.mouse.click(20, 400);
+  assert.equal(await menu.count(), 0, 'a click elsewhere closes the menu');
+  // Shift+F10 opens the selected point's menu (P5, right-clicked last) from the keyboard.
+  await page.keyboard.press('Shift+F10');
+  await menu.waitFor({ state: 'visible' });
+  assert.equal(await menu.locator('.menu-title').textContent(), 'P5');
+  await page.keyboard.press('Escape');
+  assert.equal(await menu.count(), 0);
+  // The last point of an open spline has no span after it.
+  await openMenu(6);
+  assert.equal(await menu.getByRole('menuitemcheckbox').isDisabled(), true);
+  await page.keyboard.press('Escape');
+  assert.equal(JSON.stringify((await editorState(page)).design), before);
+
+  // Copy the link; a fresh page finds the same types, directions and straight spans, and the
+  // spline lac spline draws with them.
+  const original = await editorState(page);
+  await page.click('#share');
+  await page.locator('#toast', { hasText: 'Link copied' }).waitFor();
+  const link = await page.evaluate(() => navigator.clipboard.readText());
+  assert.equal(link, page.url());
+  assert.match(link, /&types=stsscss&/);
+  assert.match(link, new RegExp(`&angles=1:${original.design.angles[1][0]}&`));
+  assert.match(link, /&lines=2&/);
+  const other = await openEditor(link.slice(link.indexOf('#')));
+  const copy = await editorState(other.page);
+  assert.equal(copy.error, null, JSON.stringify(copy.error));
+  assert.deepEqual(copy.design, original.design);
+  assert.deepEqual(copy.answer.at_points, original.answer.at_points);
+  const d = copy.design;
+  const cli = lac('spline', `--through=${d.points.map((p) => p.join(',')).join(' ')}`, '--alpha', String(d.alpha),
+    '--types', d.types.join(' '), '--angles', `1:${d.angles[1][0]}`, '--lines', '2-3', '--samples', String(SAMPLES));
+  assert.deepEqual(copy.answer.at_points, cli.at_points);
+  assert.deepEqual(copy.answer.samples, cli.samples);
+  assert.deepEqual(other.errors, []);
+  await other.context.close();
+  assert.deepEqual(errors, []);
+  await context.close();
+});

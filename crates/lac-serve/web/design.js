@@ -37,7 +37,8 @@ export function request(mode, design, samples) {
 const num = (x) => String(x);
 
 /** The URL fragment of a design and the display options, e.g.
- * `#mode=segment&points=-1,0;-0.2,0.8;1,0&alpha=0.5&show=comb,evolute,polygon&region=drag`. */
+ * `#mode=segment&points=-1,0;-0.2,0.8;1,0&alpha=0.5&show=comb,evolute,polygon&region=drag`;
+ * after the parameters, what the mode says of its own (`link`: a spline's point types). */
 export function toFragment(mode, design, show) {
   const parts = [`mode=${mode}`];
   parts.push(`points=${design.points.map((p) => p.map(num).join(',')).join(';')}`);
@@ -45,6 +46,7 @@ export function toFragment(mode, design, show) {
     const value = design[param.key];
     parts.push(`${param.key}=${param.boolean ? (value ? 1 : 0) : num(value)}`);
   }
+  for (const [key, value] of MODES[mode].link(design)) parts.push(`${key}=${value}`);
   const on = Object.entries(show).filter(([, v]) => v === true).map(([k]) => k);
   parts.push(`show=${on.join(',')}`);
   parts.push(`region=${show.region}`);
@@ -81,6 +83,8 @@ export function fromFragment(fragment) {
     if (raw === '' || !Number.isFinite(value)) return { error: `the link's ${param.key} is not a number (${raw})` };
     design[param.key] = value;
   }
+  const error = m.fromLink(fields, design);
+  if (error) return { error };
   let show = null;
   if (fields.has('show')) {
     const on = new Set(fields.get('show').split(',').filter(Boolean));

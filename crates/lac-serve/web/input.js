@@ -1,6 +1,8 @@
 // Pointer input: on the plane canvas (drag a point, pan, zoom, hover the curve; in a path,
-// Shift+click adds a point and Alt+click removes one), and the reports of a mode's own views
-// (modes/: `init`), which drag points and hover samples there.
+// Shift+click adds a point and Alt+click removes one; a right click on a point opens its menu
+// in a mode that has one, as the context-menu key or Shift+F10 does for the selected point),
+// and the reports of a mode's own views (modes/: `init`), which drag points and hover samples
+// there.
 
 import { state, view, canvas, $, mode, design, isStale } from './state.js';
 import { fmt } from './format.js';
@@ -9,6 +11,7 @@ import { solve, busy, autoCombScale } from './loop.js';
 import { updateRegion, viewMoved } from './region.js';
 import { render, renderStage, fitView } from './render.js';
 import { syncPanel } from './panel.js';
+import { openMenu } from './menu.js';
 
 function hit(sx, sy, radius) {
   let best = null;
@@ -76,9 +79,36 @@ function endPointer(e) {
   }
 }
 
+/** Open the menu of control point `index` (modes/: `menu`) at client position (`x`, `y`);
+ * whether the mode has one. The point becomes the selected one. */
+function pointMenu(index, x, y) {
+  const menu = mode().menu(design(), index);
+  if (!menu) return false;
+  state.selected = index;
+  render();
+  openMenu(menu, x, y, (item) => stageInput.change(state.mode, (d) => item.apply(d, index)));
+  return true;
+}
+
 /** Listen to the plane canvas. */
 export function listen() {
+  canvas.addEventListener('contextmenu', (e) => {
+    const index = hit(e.offsetX, e.offsetY, 12);
+    // Elsewhere than on a point: the browser's own menu.
+    if (index !== null && pointMenu(index, e.clientX, e.clientY)) e.preventDefault();
+  });
+  window.addEventListener('keydown', (e) => {
+    const asked = e.key === 'ContextMenu' || (e.key === 'F10' && e.shiftKey);
+    if (!asked || e.target.tagName === 'INPUT' || mode().stage !== 'plane') return;
+    const p = design().points[state.selected];
+    if (!p) return;
+    const [sx, sy] = view.toScreen(p);
+    const box = canvas.getBoundingClientRect();
+    if (pointMenu(state.selected, box.left + sx, box.top + sy)) e.preventDefault();
+  });
   canvas.addEventListener('pointerdown', (e) => {
+    // The right button opens a point's menu (contextmenu, above): it neither drags nor pans.
+    if (e.button === 2) return;
     canvas.setPointerCapture(e.pointerId);
     const index = hit(e.offsetX, e.offsetY, e.pointerType === 'touch' ? 24 : 12);
     if (!mode().count) {

@@ -36,64 +36,9 @@ pub(crate) struct SplineArgs {
     #[arg(long)]
     pub(crate) closed: bool,
 
-    /// Open splines: the tangent direction at the first point, radians
-    #[arg(
-        long,
-        value_name = "R",
-        allow_hyphen_values = true,
-        conflicts_with = "closed"
-    )]
-    pub(crate) start_angle: Option<f64>,
-
-    /// Open splines: the tangent direction at the last point, radians
-    #[arg(
-        long,
-        value_name = "R",
-        allow_hyphen_values = true,
-        conflicts_with = "closed"
-    )]
-    pub(crate) end_angle: Option<f64>,
-
-    /// The type of each point, one letter a point: s smooth (G2, tangent solved), t tangent
-    /// (G2, its direction given in --angles), c corner (the tangent may break; each side
-    /// free or given in --angles as i:in/out), e.g. "c s t s c"
-    #[arg(long, value_name = "TYPES")]
-    pub(crate) types: Option<String>,
-
-    /// The directions of the tangent points "i:θ,…" (radians, i counted from 0), and of
-    /// corners' sides "i:in/out" (either may be empty: free)
-    #[arg(
-        long,
-        value_name = "ANGLES",
-        allow_hyphen_values = true,
-        requires = "types"
-    )]
-    pub(crate) angles: Option<String>,
-
-    /// Straight spans "i-j,…" between consecutive points (j = i + 1, or 0 after the last
-    /// point of a closed spline): the curve on either side meets each with zero curvature
-    /// (needs alpha < 0) unless the point there is a corner
-    #[arg(long, value_name = "SPANS")]
-    pub(crate) lines: Option<String>,
-
-    /// Open splines: the signed curvature at the first point (with --start-angle, a G2
-    /// Hermite end that blends into a neighbouring curve)
-    #[arg(
-        long,
-        value_name = "K",
-        allow_hyphen_values = true,
-        conflicts_with = "closed"
-    )]
-    pub(crate) start_curvature: Option<f64>,
-
-    /// Open splines: the signed curvature at the last point
-    #[arg(
-        long,
-        value_name = "K",
-        allow_hyphen_values = true,
-        conflicts_with = "closed"
-    )]
-    pub(crate) end_curvature: Option<f64>,
+    /// Point types, straight spans and end conditions.
+    #[command(flatten)]
+    pub(crate) conditions: SplineConditions,
 
     /// What to print and where.
     #[command(flatten)]
@@ -106,7 +51,7 @@ pub(crate) fn run(args: &SplineArgs, limits: Limits) -> Result<(), ErrorBody> {
     check_output(output, false)?;
     let samples = limits.samples(output.samples as usize, "--samples")?;
     let points = through_points(&args.through)?;
-    let options = options(args, points.len())?;
+    let options = args.conditions.options(points.len(), args.closed)?;
     let spline = SplineInput {
         points,
         alpha: args.alpha,
@@ -141,122 +86,206 @@ pub(crate) fn run(args: &SplineArgs, limits: Limits) -> Result<(), ErrorBody> {
     write_document(output.file.as_deref(), document.as_bytes())
 }
 
-/// The point types, straight spans and end conditions of `args` for `n` points.
-fn options(args: &SplineArgs, n: usize) -> Result<SplineOptions, ErrorBody> {
-    let mut types = match &args.types {
-        None => Vec::new(),
-        Some(text) => {
-            let letters: Vec<&str> = text
-                .split(|c: char| c == ',' || c.is_whitespace())
-                .filter(|t| !t.is_empty())
-                .collect();
-            if letters.len() != n {
-                return Err(errors::usage(format!(
-                    "--types has {} letters for {n} points: give one of s, t, c per point",
-                    letters.len()
-                )));
-            }
-            letters
-                .iter()
-                .map(|l| {
-                    point_type_named(l).ok_or_else(|| {
-                        errors::usage(format!(
+/// A spline's conditions beyond its points, slope and closure: point types, straight spans
+/// and an open spline's end directions and curvatures. The same flags in `lac spline` and,
+/// with `--through`, in `lac export`.
+#[derive(Args, Debug)]
+pub(crate) struct SplineConditions {
+    /// Open splines: the tangent direction at the first point, radians
+    #[arg(
+        long,
+        value_name = "R",
+        allow_hyphen_values = true,
+        requires = "through",
+        conflicts_with = "closed"
+    )]
+    pub(crate) start_angle: Option<f64>,
+
+    /// Open splines: the tangent direction at the last point, radians
+    #[arg(
+        long,
+        value_name = "R",
+        allow_hyphen_values = true,
+        requires = "through",
+        conflicts_with = "closed"
+    )]
+    pub(crate) end_angle: Option<f64>,
+
+    /// The type of each point, one letter a point: s smooth (G2, tangent solved), t tangent
+    /// (G2, its direction given in --angles), c corner (the tangent may break; each side
+    /// free or given in --angles as i:in/out), e.g. "c s t s c"
+    #[arg(long, value_name = "TYPES", requires = "through")]
+    pub(crate) types: Option<String>,
+
+    /// The directions of the tangent points "i:θ,…" (radians, i counted from 0), and of
+    /// corners' sides "i:in/out" (either may be empty: free)
+    #[arg(
+        long,
+        value_name = "ANGLES",
+        allow_hyphen_values = true,
+        requires_all = ["through", "types"]
+    )]
+    pub(crate) angles: Option<String>,
+
+    /// Straight spans "i-j,…" between consecutive points (j = i + 1, or 0 after the last
+    /// point of a closed spline): the curve on either side meets each with zero curvature
+    /// (needs alpha < 0) unless the point there is a corner
+    #[arg(long, value_name = "SPANS", requires = "through")]
+    pub(crate) lines: Option<String>,
+
+    /// Open splines: the signed curvature at the first point (with --start-angle, a G2
+    /// Hermite end that blends into a neighbouring curve)
+    #[arg(
+        long,
+        value_name = "K",
+        allow_hyphen_values = true,
+        requires = "through",
+        conflicts_with = "closed"
+    )]
+    pub(crate) start_curvature: Option<f64>,
+
+    /// Open splines: the signed curvature at the last point
+    #[arg(
+        long,
+        value_name = "K",
+        allow_hyphen_values = true,
+        requires = "through",
+        conflicts_with = "closed"
+    )]
+    pub(crate) end_curvature: Option<f64>,
+}
+
+impl SplineConditions {
+    /// The flags given, for `lac export`'s usage errors (the end angles aside: see
+    /// [`SplineExport::given`]).
+    pub(crate) fn given(&self) -> Vec<Flag> {
+        present([
+            Flag::other("--types", self.types.is_some()),
+            Flag::other("--angles", self.angles.is_some()),
+            Flag::other("--lines", self.lines.is_some()),
+            Flag::other("--start-curvature", self.start_curvature.is_some()),
+            Flag::other("--end-curvature", self.end_curvature.is_some()),
+        ])
+    }
+
+    /// The point types, straight spans and end conditions for `n` points of a spline,
+    /// `closed` or open; malformed or misplaced ones are usage errors.
+    pub(crate) fn options(&self, n: usize, closed: bool) -> Result<SplineOptions, ErrorBody> {
+        let mut types = match &self.types {
+            None => Vec::new(),
+            Some(text) => {
+                let letters: Vec<&str> = text
+                    .split(|c: char| c == ',' || c.is_whitespace())
+                    .filter(|t| !t.is_empty())
+                    .collect();
+                if letters.len() != n {
+                    return Err(errors::usage(format!(
+                        "--types has {} letters for {n} points: give one of s, t, c per point",
+                        letters.len()
+                    )));
+                }
+                letters
+                    .iter()
+                    .map(|l| {
+                        point_type_named(l).ok_or_else(|| {
+                            errors::usage(format!(
                             "--types: {l:?} is not a point type (s smooth, t tangent, c corner)"
                         ))
+                        })
                     })
-                })
-                .collect::<Result<Vec<_>, _>>()?
-        }
-    };
-    for item in args.angles.iter().flat_map(|a| a.split(',')) {
-        let item = item.trim();
-        if item.is_empty() {
-            continue;
-        }
-        let bad = || errors::usage(format!("--angles: {item:?} is not i:θ or i:in/out"));
-        let (i, value) = item.split_once(':').ok_or_else(bad)?;
-        let i: usize = i.trim().parse().map_err(|_| bad())?;
-        let angle = |t: &str| -> Result<Option<f64>, ErrorBody> {
-            let t = t.trim();
-            if t.is_empty() {
-                return Ok(None);
-            }
-            let a: f64 = t.parse().map_err(|_| bad())?;
-            if a.is_finite() {
-                Ok(Some(a))
-            } else {
-                Err(bad())
+                    .collect::<Result<Vec<_>, _>>()?
             }
         };
-        match (types.get(i).copied(), value.split_once('/')) {
-            (Some(PointType::Tangent(_)), None) => {
-                types[i] = PointType::Tangent(angle(value)?.ok_or_else(bad)?);
+        for item in self.angles.iter().flat_map(|a| a.split(',')) {
+            let item = item.trim();
+            if item.is_empty() {
+                continue;
             }
-            (Some(PointType::Corner { .. }), Some((before, after))) => {
-                types[i] = PointType::Corner {
-                    before: angle(before)?,
-                    after: angle(after)?,
-                };
-            }
-            (Some(PointType::Corner { .. }), None) => {
-                return Err(errors::usage(format!(
-                    "--angles: point {i} is a corner: give its two sides as {i}:in/out"
-                )))
-            }
-            (Some(_), _) => {
-                return Err(errors::usage(format!(
-                    "--angles: point {i} is smooth: type it t (tangent) or c (corner) in \
+            let bad = || errors::usage(format!("--angles: {item:?} is not i:θ or i:in/out"));
+            let (i, value) = item.split_once(':').ok_or_else(bad)?;
+            let i: usize = i.trim().parse().map_err(|_| bad())?;
+            let angle = |t: &str| -> Result<Option<f64>, ErrorBody> {
+                let t = t.trim();
+                if t.is_empty() {
+                    return Ok(None);
+                }
+                let a: f64 = t.parse().map_err(|_| bad())?;
+                if a.is_finite() {
+                    Ok(Some(a))
+                } else {
+                    Err(bad())
+                }
+            };
+            match (types.get(i).copied(), value.split_once('/')) {
+                (Some(PointType::Tangent(_)), None) => {
+                    types[i] = PointType::Tangent(angle(value)?.ok_or_else(bad)?);
+                }
+                (Some(PointType::Corner { .. }), Some((before, after))) => {
+                    types[i] = PointType::Corner {
+                        before: angle(before)?,
+                        after: angle(after)?,
+                    };
+                }
+                (Some(PointType::Corner { .. }), None) => {
+                    return Err(errors::usage(format!(
+                        "--angles: point {i} is a corner: give its two sides as {i}:in/out"
+                    )))
+                }
+                (Some(_), _) => {
+                    return Err(errors::usage(format!(
+                        "--angles: point {i} is smooth: type it t (tangent) or c (corner) in \
                      --types to give it a direction"
-                )))
-            }
-            (None, _) => {
-                return Err(errors::usage(format!("--angles: there is no point {i}")));
+                    )))
+                }
+                (None, _) => {
+                    return Err(errors::usage(format!("--angles: there is no point {i}")));
+                }
             }
         }
-    }
-    if let Some(i) = types
-        .iter()
-        .position(|t| matches!(t, PointType::Tangent(a) if a.is_nan()))
-    {
-        return Err(errors::usage(format!(
-            "point {i} is a tangent point: give its direction in --angles as {i}:θ"
-        )));
-    }
-    let mut lines = Vec::new();
-    for item in args.lines.iter().flat_map(|l| l.split(',')) {
-        let item = item.trim();
-        if item.is_empty() {
-            continue;
+        if let Some(i) = types
+            .iter()
+            .position(|t| matches!(t, PointType::Tangent(a) if a.is_nan()))
+        {
+            return Err(errors::usage(format!(
+                "point {i} is a tangent point: give its direction in --angles as {i}:θ"
+            )));
         }
-        let bad = || {
-            errors::usage(format!(
-                "--lines: {item:?} is not a span i-j between consecutive points (j = i + 1, \
+        let mut lines = Vec::new();
+        for item in self.lines.iter().flat_map(|l| l.split(',')) {
+            let item = item.trim();
+            if item.is_empty() {
+                continue;
+            }
+            let bad = || {
+                errors::usage(format!(
+                    "--lines: {item:?} is not a span i-j between consecutive points (j = i + 1, \
                  or 0 after the last point of a closed spline)"
-            ))
-        };
-        let (i, j) = item.split_once('-').ok_or_else(bad)?;
-        let (i, j): (usize, usize) = (
-            i.trim().parse().map_err(|_| bad())?,
-            j.trim().parse().map_err(|_| bad())?,
-        );
-        let next = if args.closed { (i + 1) % n } else { i + 1 };
-        if i >= n || j != next {
-            return Err(bad());
+                ))
+            };
+            let (i, j) = item.split_once('-').ok_or_else(bad)?;
+            let (i, j): (usize, usize) = (
+                i.trim().parse().map_err(|_| bad())?,
+                j.trim().parse().map_err(|_| bad())?,
+            );
+            let next = if closed { (i + 1) % n } else { i + 1 };
+            if i >= n || j != next {
+                return Err(bad());
+            }
+            lines.push(i);
         }
-        lines.push(i);
+        Ok(SplineOptions {
+            types,
+            lines,
+            start: SplineEnd {
+                angle: self.start_angle,
+                curvature: self.start_curvature,
+            },
+            end: SplineEnd {
+                angle: self.end_angle,
+                curvature: self.end_curvature,
+            },
+        })
     }
-    Ok(SplineOptions {
-        types,
-        lines,
-        start: SplineEnd {
-            angle: args.start_angle,
-            curvature: args.start_curvature,
-        },
-        end: SplineEnd {
-            angle: args.end_angle,
-            curvature: args.end_curvature,
-        },
-    })
 }
 
 /// The points of `--through`: at least three.
@@ -272,7 +301,8 @@ fn through_points(text: &str) -> Result<Vec<Point>, ErrorBody> {
 #[derive(Debug, Args)]
 pub(crate) struct SplineExport {
     /// A spline: the points it passes through "x0,y0 x1,y1 …" (at least three), with
-    /// --alpha, and --closed or --start-angle/--end-angle as lac spline takes them
+    /// --alpha, --closed, and the end angles, point types, straight spans and end curvatures
+    /// below as lac spline takes them
     #[arg(
         long,
         value_name = "POINTS",
@@ -281,48 +311,46 @@ pub(crate) struct SplineExport {
     )]
     pub(crate) through: Option<String>,
 
-    /// A spline: the tangent direction at the first point, radians
-    #[arg(
-        long,
-        value_name = "R",
-        allow_hyphen_values = true,
-        requires_all = ["through", "end_angle"],
-        conflicts_with = "closed"
-    )]
-    pub(crate) start_angle: Option<f64>,
-
-    /// A spline: the tangent direction at the last point, radians
-    #[arg(
-        long,
-        value_name = "R",
-        allow_hyphen_values = true,
-        requires_all = ["through", "start_angle"]
-    )]
-    pub(crate) end_angle: Option<f64>,
+    /// Point types, straight spans and end conditions, as in `lac spline`.
+    #[command(flatten)]
+    pub(crate) conditions: SplineConditions,
 }
 
 impl ExportSource for SplineExport {
-    /// The flags given, none without `--through`: clap refuses `--start-angle` and
-    /// `--end-angle` without it, except beside `--points`, which rules `--through` out; they
-    /// are ignored there, as they always were.
+    /// The flags given. Without `--through`, clap refuses them all, except beside
+    /// `--points`, `--polygon` or FILE, which rule `--through` out: there `--start-angle` and
+    /// `--end-angle` are ignored, as they always were, and the others are listed, so that
+    /// no other kind answers and [`SplineExport::export_input`] refuses them.
     fn given(&self) -> Vec<Flag> {
+        let conditions = self.conditions.given();
         if self.through.is_none() {
-            return Vec::new();
+            return conditions;
         }
-        present([
+        let mut given = present([
             Flag::other("--through", true),
-            Flag::other("--start-angle", self.start_angle.is_some()),
-            Flag::other("--end-angle", self.end_angle.is_some()),
-        ])
+            Flag::other("--start-angle", self.conditions.start_angle.is_some()),
+            Flag::other("--end-angle", self.conditions.end_angle.is_some()),
+        ]);
+        given.extend(conditions);
+        given
     }
 
-    /// The spline through `--through`, with `--alpha`; other kinds' slopes are refused.
+    /// The spline through `--through`, with `--alpha` and the conditions given; other kinds'
+    /// slopes are refused, and so are the conditions without `--through`.
     fn export_input(
         &self,
         curve: &CurveFlags,
         others: &[Flag],
     ) -> Option<Result<Input, ErrorBody>> {
-        let through = self.through.as_deref()?;
+        let Some(through) = self.through.as_deref() else {
+            let stray = self.conditions.given();
+            return (!stray.is_empty()).then(|| {
+                Err(errors::usage(format!(
+                    "there is no spline for {} without --through (the points it passes through)",
+                    names(&stray)
+                )))
+            });
+        };
         let Some(alpha) = curve.alpha else {
             return Some(Err(errors::usage("a spline (--through) needs --alpha")));
         };
@@ -336,13 +364,12 @@ impl ExportSource for SplineExport {
         Some(
             through_points(through)
                 .and_then(|points| {
+                    let options = self.conditions.options(points.len(), curve.closed)?;
                     SplineInput {
                         points,
                         alpha,
                         closed: curve.closed,
-                        options: SplineOptions::with_ends(
-                            self.start_angle.zip(self.end_angle).map(|(a, b)| [a, b]),
-                        ),
+                        options,
                     }
                     .solve()
                 })

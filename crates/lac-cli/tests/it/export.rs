@@ -436,3 +436,208 @@ fn a_spline_exports_from_its_arguments_or_from_lac_splines_result() {
         "no_g2_path",
     );
 }
+
+/// A spline with a straight span from P2 to P3 and a corner at P4, for `lac export
+/// --through` with the point-type flags of `lac spline`.
+const TYPED: [&str; 8] = [
+    "--through",
+    "0,0 1,2 3,2.5 5,2.5 6,1.5 7,2.5 8,4.5",
+    "--alpha",
+    "-1",
+    "--types",
+    "s s s s c s s",
+    "--lines",
+    "2-3",
+];
+
+/// The pieces of the first curve of an exported JSON document: its clamped B-spline's
+/// knot spans (interior knots of multiplicity 3), each a rational cubic Bézier as control
+/// points and weights.
+fn bezier_pieces(doc: &serde_json::Value) -> Vec<([[f64; 2]; 4], [f64; 4])> {
+    let curve = &doc["curves"][0];
+    let points: Vec<[f64; 2]> = curve["control_points"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| [p[0].as_f64().unwrap(), p[1].as_f64().unwrap()])
+        .collect();
+    let weights: Vec<f64> = curve["weights"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|w| w.as_f64().unwrap())
+        .collect();
+    assert_eq!(curve["degree"], 3);
+    assert_eq!(points.len() % 3, 1, "one shared end point between spans");
+    let knots = curve["knots"].as_array().unwrap();
+    assert_eq!(
+        knots.len(),
+        points.len() + 4,
+        "a clamped B-spline, knots of multiplicity 3"
+    );
+    (0..points.len() / 3)
+        .map(|k| {
+            (
+                [
+                    points[3 * k],
+                    points[3 * k + 1],
+                    points[3 * k + 2],
+                    points[3 * k + 3],
+                ],
+                [
+                    weights[3 * k],
+                    weights[3 * k + 1],
+                    weights[3 * k + 2],
+                    weights[3 * k + 3],
+                ],
+            )
+        })
+        .collect()
+}
+
+/// A rational cubic Bézier at `t`.
+fn rational_at((points, weights): &([[f64; 2]; 4], [f64; 4]), t: f64) -> [f64; 2] {
+    let b = [
+        (1.0 - t).powi(3),
+        3.0 * t * (1.0 - t).powi(2),
+        3.0 * t * t * (1.0 - t),
+        t.powi(3),
+    ];
+    let w: f64 = (0..4).map(|i| b[i] * weights[i]).sum();
+    let coordinate = |c: usize| {
+        (0..4)
+            .map(|i| b[i] * weights[i] * points[i][c])
+            .sum::<f64>()
+            / w
+    };
+    [coordinate(0), coordinate(1)]
+}
+
+/// The direction, radians, from `a` to `b`.
+fn direction(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (b[1] - a[1]).atan2(b[0] - a[0])
+}
+
+/// `lac export --through` takes lac spline's point types: the straight span is written as a
+/// straight piece from P2 to P3 (every point of it on the line) and the corner's two
+/// tangents are the solved spline's, different on either side; the report says G0. The
+/// same file as exporting lac spline's result with the same flags.
+#[test]
+fn a_spline_exports_with_its_corners_and_straight_spans() {
+    let direct = lac(&args(&TYPED, &["--format", "json", "--tolerance", "1e-7"]));
+    assert_eq!(direct.code, 0, "{}", direct.stderr);
+    let doc: serde_json::Value = serde_json::from_str(&direct.stdout).unwrap();
+    assert_eq!(doc["kind"], "spline");
+    assert_eq!(doc["continuity"], "G0", "a corner breaks the tangent");
+    assert!(doc["max_deviation"].as_f64().unwrap() <= 1e-7);
+    let pieces = bezier_pieces(&doc);
+    assert_eq!(pieces.len() as u64, doc["pieces"].as_u64().unwrap());
+    let near = |p: [f64; 2], q: [f64; 2]| (p[0] - q[0]).hypot(p[1] - q[1]) <= 1e-9;
+
+    // The straight span: one piece from P2 to P3 whose every point is on y = 2.5.
+    let (p2, p3) = ([3.0, 2.5], [5.0, 2.5]);
+    let line = pieces
+        .iter()
+        .find(|(p, _)| near(p[0], p2) && near(p[3], p3))
+        .expect("a piece from P2 to P3");
+    for k in 0..=20 {
+        let [x, y] = rational_at(line, f64::from(k) / 20.0);
+        assert!((y - 2.5).abs() <= 1e-12, "({x}, {y}) is off the line");
+        assert!((3.0 - 1e-12..=5.0 + 1e-12).contains(&x), "({x}, {y})");
+    }
+    // The curve meets the line along it.
+    let before = pieces.iter().find(|(p, _)| near(p[3], p2)).unwrap();
+    let after = pieces.iter().find(|(p, _)| near(p[0], p3)).unwrap();
+    assert!(direction(before.0[2], before.0[3]).abs() <= 1e-9);
+    assert!(direction(after.0[0], after.0[1]).abs() <= 1e-9);
+
+    // The corner: the tangents on either side are the spline's, about 1.8 rad apart.
+    let mut spline = vec!["spline"];
+    spline.extend_from_slice(&TYPED);
+    let solved = lac(&spline);
+    assert_eq!(solved.code, 0, "{}", solved.stderr);
+    let v: serde_json::Value = serde_json::from_str(&solved.stdout).unwrap();
+    let at = &v["at_points"][4];
+    assert_eq!(at["type"], "corner");
+    let (in_, out) = (
+        at["angles"][0].as_f64().unwrap(),
+        at["angles"][1].as_f64().unwrap(),
+    );
+    assert!((out - in_).abs() > 1.0, "{in_} {out}");
+    let p4 = [6.0, 1.5];
+    let arriving = pieces.iter().find(|(p, _)| near(p[3], p4)).unwrap();
+    let leaving = pieces.iter().find(|(p, _)| near(p[0], p4)).unwrap();
+    let (a, b) = (
+        direction(arriving.0[2], arriving.0[3]),
+        direction(leaving.0[0], leaving.0[1]),
+    );
+    assert!((a - in_).abs() <= 1e-6, "arriving {a}, the spline's {in_}");
+    assert!((b - out).abs() <= 1e-6, "leaving {b}, the spline's {out}");
+
+    // lac spline's result with the same flags, piped in: the same file.
+    let piped = lac_with_input(
+        &["export", "--format", "json", "--tolerance", "1e-7"],
+        solved.stdout.as_bytes(),
+    );
+    assert_eq!(piped.code, 0, "{}", piped.stderr);
+    assert_eq!(piped.stdout, direct.stdout);
+    // And as STEP, through -o.
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("typed.step");
+    let run = lac(&args(&TYPED, &["-o", path.to_str().unwrap()]));
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert!(std::fs::read_to_string(&path)
+        .unwrap()
+        .contains("B_SPLINE_CURVE_WITH_KNOTS"));
+}
+
+/// Malformed or misplaced point-type flags are usage errors (one line of JSON, exit code
+/// 2) that leave an existing file alone, as in lac spline; so are the flags without
+/// --through, where another curve is given.
+#[test]
+fn bad_point_type_flags_of_an_export_are_usage_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("kept.json");
+    std::fs::write(&path, "old").unwrap();
+    let out = path.to_str().unwrap();
+    let through = TYPED[1];
+    for (flags, says) in [
+        (&["--types", "s s x s c s s"][..], "not a point type"),
+        (&["--types", "s s s c"], "4 letters for 7 points"),
+        (&["--lines", "2-4"], "between consecutive points"),
+        (
+            &["--types", "s s s s c s s", "--angles", "4:0"],
+            "two sides",
+        ),
+        (&["--types", "s s t s s s s"], "give its direction"),
+    ] {
+        let mut all = vec!["export", "--through", through, "--alpha", "-1", "-o", out];
+        all.extend_from_slice(flags);
+        let message = assert_failure(&lac(&all), 2, "usage");
+        assert!(message.contains(says), "{flags:?}: {message}");
+    }
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "old");
+    // An end curvature of a closed spline; point types beside a segment's --points.
+    assert_failure(
+        &lac(&[
+            "export",
+            "--through",
+            through,
+            "--alpha",
+            "-1",
+            "--closed",
+            "--end-curvature",
+            "0.5",
+            "-o",
+            out,
+        ]),
+        2,
+        "usage",
+    );
+    let message = assert_failure(
+        &lac(&args(&SEGMENT, &["--types", "s c s", "--format", "json"])),
+        2,
+        "usage",
+    );
+    assert!(message.contains("--through"), "{message}");
+}

@@ -429,12 +429,22 @@ impl Kind for SplineKind {
     }
 
     /// Piece by piece, like a path: every point, and the two halves of a span through an
-    /// inflection (with the straight piece where they are flat), is a knot.
+    /// inflection (with the straight piece where they are flat), is a knot. The joins are G2
+    /// but at corners, where the tangent may break (G0); an open spline's end points have one
+    /// side only.
     fn export(spline: &Spline) -> Result<ExportCurve<'_>, ErrorBody> {
+        let n = spline.points().len();
+        let ends = |i: usize| !spline.is_closed() && (i == 0 || i + 1 == n);
+        let corner = spline
+            .options()
+            .types
+            .iter()
+            .enumerate()
+            .any(|(i, t)| matches!(t, PointType::Corner { .. }) && !ends(i));
         Ok(ExportCurve::pieces(
             Self::NAME,
             spline.arc_length(),
-            "G2",
+            if corner { "G0" } else { "G2" },
             spline_pieces(spline)?,
         ))
     }

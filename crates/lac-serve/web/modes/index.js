@@ -19,6 +19,11 @@
 //   fileRank,          a file without "mode" is the design of the first mode, by fileRank,
 //   recognises(json)   that recognises it; adopt(json, design) reads what such a file says
 //   adopt(json, d)     in words of its own
+//   link(design)       the link's fields of what the design holds beyond its points and
+//   fromLink(fields, d)  params, as [key, value] pairs; reading them back into design d
+//                      (fields: the link's Map), an error message or null
+//   menu(design, i)    the menu of control point i (right click): {title, items: [{label,
+//                      key, checked, disabled, apply(design, i)}]}, or null for none
 //   region(frame)      the drawable region's request {key, path, body, canonical, wide}, or
 //                      null (`wide`: the request of a map around a canonical one, or null)
 //   regionInView       its region covers the visible plane: asked again when the view moves
@@ -64,6 +69,9 @@ const DEFAULTS = {
   fileRank: Infinity,
   recognises: () => false,
   adopt: () => {},
+  link: () => [],
+  fromLink: () => null,
+  menu: () => null,
   region: null,
   regionInView: false,
   init: () => {},

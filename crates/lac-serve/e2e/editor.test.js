@@ -490,15 +490,23 @@ test('spline: point types by key, drawn with their markers; what lac spline give
   assert.equal(s.error, null, JSON.stringify(s.error));
   // The U: straight sides met with zero curvature, the bottom horizontal.
   const types = (d) => d.types.join(' ');
-  const cliSpline = (d) => lac('spline', `--through=${d.points.map((p) => p.map(String).join(',')).join(' ')}`,
+  const splineArgs = (d) => [`--through=${d.points.map((p) => p.map(String).join(',')).join(' ')}`,
     '--alpha', String(d.alpha), '--types', types(d),
     ...(d.types.some((t) => t === 't') ? ['--angles', d.types.map((t, i) => (t === 't' ? `${i}:${d.angles[i][0]}` : null)).filter(Boolean).join(',')] : []),
-    ...(d.lines.length ? ['--lines', d.lines.map((i) => `${i}-${i + 1}`).join(',')] : []),
-    '--samples', String(SAMPLES));
+    ...(d.lines.length ? ['--lines', d.lines.map((i) => `${i}-${i + 1}`).join(',')] : [])];
+  const cliSpline = (d) => lac('spline', ...splineArgs(d), '--samples', String(SAMPLES));
   let cli = cliSpline(s.design);
   assert.deepEqual(s.answer.at_points, cli.at_points);
   assert.deepEqual(s.answer.samples, cli.samples);
   assert.equal(s.answer.knots.length, 2);
+  // The CAD menu writes this spline, not a path through its points: the DXF that lac export
+  // --through writes for the same types, directions and straight spans, byte for byte.
+  const download = page.waitForEvent('download');
+  await page.selectOption('#export-cad', 'dxf');
+  const dxf = await download;
+  assert.equal(dxf.suggestedFilename(), 'lac-spline.dxf');
+  assert.equal(readFileSync(await dxf.path(), 'utf8'), execFileSync(LAC_BIN,
+    ['export', ...splineArgs(s.design), '--format', 'dxf', '--tolerance', '1e-6', '-o', '-'], { encoding: 'utf8' }));
   await shot(page, 'spline');
   // Drag P2 (the tangent point), then make it a corner with the C key: the tangent breaks.
   latency.spline = await drag(page, 2, { radius: 12, end: [6, 10] });
@@ -626,6 +634,13 @@ test('spline: the point menu sets a corner and a straight span; the copied link 
     '--types', d.types.join(' '), '--angles', `1:${d.angles[1][0]}`, '--lines', '2-3', '--samples', String(SAMPLES));
   assert.deepEqual(copy.answer.at_points, cli.at_points);
   assert.deepEqual(copy.answer.samples, cli.samples);
+  // Its CAD file is the spline with the corner: G0 there, within the tolerance.
+  const download = other.page.waitForEvent('download');
+  await other.page.selectOption('#export-cad', 'json');
+  const json = JSON.parse(readFileSync(await (await download).path(), 'utf8'));
+  assert.equal(json.kind, 'spline');
+  assert.equal(json.continuity, 'G0');
+  assert.ok(json.max_deviation <= 1e-6);
   assert.deepEqual(other.errors, []);
   await other.context.close();
   assert.deepEqual(errors, []);

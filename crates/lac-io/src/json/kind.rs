@@ -102,8 +102,9 @@ macro_rules! kinds {
 pub const ANY_SHAPE: &str = "a lac segment, compound, path, spline, space or fit result, or the \
                              input of one ({\"points\":…,\"alpha\":A}, {\"points\":…,\
                              \"alpha0\":A,\"alpha1\":B,…}, {\"points\":…,\"alpha\":A,\
-                             \"closed\"|\"g2\"|\"fractions\":…} or {\"points\":…,\"alpha\":A,\
-                             \"beta\":B,…})";
+                             \"closed\"|\"g2\"|\"fractions\":…}, {\"points\":…,\"alpha\":A,\
+                             \"types\":[\"s\"|\"t\"|\"c\",…],…} or {\"points\":…,\
+                             \"alpha\":A,\"beta\":B,…})";
 
 impl AnyCurve {
     /// The curve of a JSON document: a result of `lac segment`, `compound`, `path`,

@@ -411,7 +411,8 @@ impl SplineReport {
 }
 
 /// A spline through points: `lac spline`'s result, told by its `"pieces"` and `"angles"`,
-/// solved again through its points with its end tangents.
+/// solved again through its points with its end tangents; or a spline as the editor asks
+/// for it ([`SplineRequest`]), told by its `"types"`.
 pub struct SplineKind;
 
 impl Kind for SplineKind {
@@ -419,10 +420,15 @@ impl Kind for SplineKind {
     type Curve = Spline;
 
     fn claims(document: &Map<String, Value>) -> bool {
-        document.contains_key("pieces") && document.contains_key("angles")
+        let has = |key: &str| document.contains_key(key);
+        (has("pieces") && has("angles")) || has("types")
     }
 
     fn solve(document: Map<String, Value>) -> Result<Spline, ErrorBody> {
+        if !document.contains_key("pieces") {
+            let request: SplineRequest = fields(document, "a spline", SplineRequest::SHAPE)?;
+            return request.input()?.solve();
+        }
         let report: SplineReport =
             fields(document, "a lac spline result", "what lac spline prints")?;
         report.input().solve()

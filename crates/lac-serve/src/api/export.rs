@@ -12,7 +12,7 @@ use super::App;
 use crate::error::ApiError;
 
 /// The request's shape, for error messages.
-const SHAPE: &str = r#"{…a segment, compound, path or space curve as /api/segment, /api/compound, /api/path or /api/space take it, or a lac spline result…, "format":"dxf"|"step"|"iges"|"svg"|"json", "tolerance":T (model units, default 1e-6) or "relative_tolerance":R, "pieces":false, "name":"lac-curve"}"#;
+const SHAPE: &str = r#"{…a segment, compound, path, spline or space curve as /api/segment, /api/compound, /api/path, /api/spline or /api/space take it, or a lac spline result…, "format":"dxf"|"step"|"iges"|"svg"|"json", "tolerance":T (model units, default 1e-6) or "relative_tolerance":R, "pieces":false, "name":"lac-curve"}"#;
 
 /// The options of the request, removed from the curve's fields before they are read (the
 /// page's `samples` is ignored).

@@ -720,6 +720,108 @@ async fn export_writes_what_lac_export_writes() {
 }
 
 #[tokio::test]
+async fn export_of_a_spline_design_is_the_spline_lac_export_through_writes() {
+    // The Spline mode's design (its "types" tell it from a path through the same points):
+    // P4 a corner, the span from P2 to P3 straight.
+    let design = r#""points":[[0,0],[1,2],[3,2.5],[5,2.5],[6,1.5],[7,2.5],[8,4.5]],"alpha":-1,"closed":false,"types":["s","s","s","s","c","s","s"],"angles":[[null,null],[null,null],[null,null],[null,null],[null,null],[null,null],[null,null]],"lines":[2]"#;
+    let answer = post(
+        &app(),
+        "/api/export",
+        &format!(r#"{{{design},"samples":257,"format":"dxf"}}"#),
+    )
+    .await;
+    assert_eq!(answer.status, StatusCode::OK, "{}", answer.text);
+    let report: Value = serde_json::from_str(header(&answer, "x-lac-export")).unwrap();
+    assert_eq!(report["kind"], "spline");
+    assert_eq!(report["continuity"], "G0", "the corner breaks the tangent");
+    // What `lac export --through "…" --alpha -1 --types "s s s s c s s" --lines 2-3` writes.
+    let spline = lac_io::json::SplineInput {
+        points: [
+            (0., 0.),
+            (1., 2.),
+            (3., 2.5),
+            (5., 2.5),
+            (6., 1.5),
+            (7., 2.5),
+            (8., 4.5),
+        ]
+        .map(kurbo::Point::from)
+        .to_vec(),
+        alpha: -1.0,
+        closed: false,
+        options: lac::SplineOptions {
+            types: (0..7)
+                .map(|i| {
+                    if i == 4 {
+                        lac::PointType::CORNER
+                    } else {
+                        lac::PointType::Smooth
+                    }
+                })
+                .collect(),
+            lines: vec![2],
+            ..Default::default()
+        },
+    }
+    .solve()
+    .unwrap();
+    let curve = lac_io::json::AnyCurve::Spline(spline);
+    let expected = lac_export::export(
+        &curve.export_curve().unwrap(),
+        lac_export::Format::Dxf,
+        lac::Tolerance::Absolute(lac_export::DEFAULT_TOLERANCE),
+        false,
+        &lac_export::Meta::now("x"),
+    )
+    .unwrap();
+    assert_eq!(answer.text, expected.document);
+    // One B-spline a piece: the straight span's control points all lie on its line.
+    let answer = post(
+        &app(),
+        "/api/export",
+        &format!(r#"{{{design},"format":"json","pieces":true}}"#),
+    )
+    .await;
+    assert_eq!(answer.status, StatusCode::OK, "{}", answer.text);
+    let document: lac_export::json::ExportDocument = serde_json::from_str(&answer.text).unwrap();
+    let on_span = |row: &lac_export::json::NurbsRow| {
+        row.control_points
+            .iter()
+            .all(|p| (p[1] - 2.5).abs() < 1e-9 && (3.0 - 1e-9..=5.0 + 1e-9).contains(&p[0]))
+    };
+    assert!(document.curves.iter().any(on_span), "{}", answer.text);
+    // Every format the editor's menu offers.
+    for format in ["step", "iges", "svg"] {
+        let answer = post(
+            &app(),
+            "/api/export",
+            &format!(r#"{{{design},"format":"{format}"}}"#),
+        )
+        .await;
+        assert_eq!(answer.status, StatusCode::OK, "{format}: {}", answer.text);
+        let report: Value = serde_json::from_str(header(&answer, "x-lac-export")).unwrap();
+        assert_eq!(report["kind"], "spline");
+    }
+    // A type that is none, and a tangent point without its direction: 400 with the point.
+    for (types, says) in [
+        (r#"["s","s","s","s","x","s","s"]"#, "types[4]"),
+        (r#"["s","t","s","s","c","s","s"]"#, "point 1"),
+    ] {
+        let body = design.replace(r#"["s","s","s","s","c","s","s"]"#, types);
+        let answer = post(
+            &app(),
+            "/api/export",
+            &format!(r#"{{{body},"format":"step"}}"#),
+        )
+        .await;
+        assert_eq!(answer.status, StatusCode::BAD_REQUEST, "{}", answer.text);
+        assert_eq!(answer.content_type, "application/json");
+        assert_eq!(answer.kind(), "invalid_input");
+        assert!(answer.text.contains(says), "{}", answer.text);
+    }
+}
+
+#[tokio::test]
 async fn export_refusals_are_json_4xx() {
     let segment = r#""points":[[-1,0],[-0.2,0.8],[1,0]],"alpha":0.5"#;
     for (extra, status, kind) in [

@@ -167,6 +167,11 @@ export default {
   request(body) {
     return { ...body, ...fitted(body) };
   },
+  /** The CAD file is the spline the page shows, as /api/spline solves it (its `types` tell
+   * /api/export it is one, as --through tells lac export), not a path through its points. */
+  cad(body) {
+    return { ...body, ...fitted(body) };
+  },
 
   /** Point `i` of design `d` made smooth, tangent or a corner (`key` s, t or c), or the
    * span from it to the next made straight or curved again (l). */

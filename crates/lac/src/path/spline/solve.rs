@@ -19,6 +19,10 @@ use crate::foundation::error::{Error, G2Failure, PointFailure, Result};
 use crate::foundation::numeric::length;
 use crate::segment::{Segment, SegmentSolution};
 
+/// A kept Jacobian's steps must shrink the residual by this factor or it is made afresh.
+const KEEP_WHILE: f64 = 0.01;
+/// A residual norm at rounding: below it a step that does not lower it ends the descent.
+const RESIDUAL_FLOOR: f64 = 1e-12;
 /// Most Newton steps.
 const MAX_STEPS: usize = 60;
 /// Most stages of the continuation in α.
@@ -372,8 +376,9 @@ impl Problem<'_> {
         };
         let norm = |r: &[f64]| r.iter().map(|x| x * x).sum::<f64>().sqrt();
         let (mut values, mut r) = eval(&x)?;
-        // A Jacobian is kept while the steps it gives shrink the residual fourfold (the
-        // point conditions' dense systems: each Jacobian costs two span solves an unknown);
+        // A Jacobian is kept while the steps it gives shrink the residual a hundredfold (the
+        // point conditions' dense systems: each Jacobian costs two span solves an unknown,
+        // a step one; a Jacobian kept through slower steps costs more steps than it saves);
         // the smooth spline's is made afresh at every step, as it always was.
         let keep = !self.layout.is_tridiagonal();
         let mut jacobian: Option<Entries> = self.start.take();
@@ -405,7 +410,10 @@ impl Problem<'_> {
             let mut lambda = if big > MAX_STEP { MAX_STEP / big } else { 1.0 };
             let now = norm(&r);
             let mut next = None;
-            for _ in 0..30 {
+            // At the residual's rounding (1e-14 here), a step that does not lower it is
+            // rounding too: two halvings, not thirty full evaluations.
+            let tries = if now <= RESIDUAL_FLOOR { 2 } else { 30 };
+            for _ in 0..tries {
                 let trial: Vec<f64> = x.iter().zip(&dx).map(|(x, d)| x + lambda * d).collect();
                 if let Ok((v2, r2)) = eval(&trial) {
                     if norm(&r2) < now * (1.0 - 1e-4 * lambda) {
@@ -425,7 +433,7 @@ impl Problem<'_> {
             if keep {
                 *self.last.borrow_mut() = Some(entries.clone());
             }
-            if keep && lambda == 1.0 && norm(&r2) < 0.25 * now {
+            if keep && lambda == 1.0 && norm(&r2) < KEEP_WHILE * now {
                 jacobian = Some(entries);
             }
             (x, values, r) = (x2, v2, r2);

@@ -413,16 +413,21 @@ impl ChordAngle {
         // Newton from the circle end. g is increasing; the bracket [lo, hi] only shrinks and
         // its top is evaluated only if an iterate wants to go there.
         let (mut lo, mut hi, mut top_known) = (0.0, mu_max, false);
-        let (g0, slope0, first) = self.at_circle();
-        // The circle's model is good near μ = 0 only; a clothoid has its table.
-        let first = self
-            .hint
-            .filter(|m| *m < mu_max)
-            .or_else(|| {
-                self.clothoid
+        // A caller's hint first; else the circle's model, good near μ = 0 only, or for a
+        // clothoid its table. (With a hint the circle end is not evaluated: the first
+        // Newton step after the hint is a plain one.)
+        let hint = self.hint.filter(|m| *m < mu_max);
+        let (g0, slope0, first) = match hint {
+            Some(h) => (f64::NAN, f64::NAN, h),
+            None => {
+                let (g0, slope0, first) = self.at_circle();
+                let first = self
+                    .clothoid
                     .and_then(|_| guess::clothoid(self.theta[1], self.theta_e))
-            })
-            .unwrap_or(first);
+                    .unwrap_or(first);
+                (g0, slope0, first)
+            }
+        };
         let (mut mu, mut g, mut slope) = (0.0, g0, slope0);
         let mut first = Some(first);
         let tolerance = 4.0 * f64::EPSILON * self.total;
@@ -442,7 +447,7 @@ impl ChordAngle {
                 mu - g / slope
             };
             previous = (mu, slope);
-            let next = if slope > 0.0 && newton > lo && newton < hi {
+            let next = if (guessed || slope > 0.0) && newton > lo && newton < hi {
                 newton
             } else if !top_known && hi == mu_max {
                 hi

@@ -26,6 +26,21 @@ CASES = [
 JUMP = mpf("1e-9")
 
 
+def triangle_rounding(tri):
+    """The relative error that the rounding of a reported control triangle's coordinates
+    (to doubles) puts into its turning angle, and so into any curvature solved again from
+    it: each leg's direction is known to about two ulps of the largest coordinate over the
+    leg's length. Negligible for most pieces (below 1e-13); not for a half S that turns by
+    1e-4 rad next to a point, whose apex lies 1e-7 off its chord: there the triangle, not
+    the curve, limits the reference."""
+    (x0, y0), (x1, y1), (x2, y2) = tri
+    big = max(abs(c) for p in tri for c in p)
+    (ux, uy), (vx, vy) = (x1 - x0, y1 - y0), (x2 - x1, y2 - y1)
+    leg = min(math.hypot(ux, uy), math.hypot(vx, vy))
+    turning = abs(math.atan2(ux * vy - uy * vx, ux * vx + uy * vy))
+    return 2 * math.ulp(big) / (leg * turning)
+
+
 @pytest.fixture(autouse=True)
 def _keep_precision():
     """These tests work at 30 digits; the modules run after them expect their own 40."""
@@ -203,7 +218,7 @@ def test_g2_spline_joints_are_continuous_in_the_mpmath_reference():
     require("spline")
     mp.dps = 30
     checked, worst, worst_self, worst_tangent = 0, mpf(0), mpf(0), mpf(0)
-    inflections, worst_zero = 0, mpf(0)
+    inflections, worst_zero, flat, worst_flat = 0, mpf(0), 0, mpf(0)
     for through, closed, alphas in SPLINE_CASES:
         points = [tuple(map(float, p.split(","))) for p in through.split()]
         for alpha in alphas:
@@ -235,12 +250,20 @@ def test_g2_spline_joints_are_continuous_in_the_mpmath_reference():
                     ends.append((ref["curvature_start"], ref["curvature_end"]))
                 legs.append((pb - pa, pc - pb, pa, pc))
                 scale = max(abs(e) for e in ends[-1])
+                # The reference can be no better than the triangle it starts from (ten times
+                # its rounding, where that exceeds 1e-13).
+                rounding = triangle_rounding(tri)
+                allowed = max(mpf("1e-12"), 10 * mpf(rounding))
                 for got, want in zip(piece["curvature"], ends[-1]):
                     if abs(want) < mpf("1e-9") * scale:
                         continue  # a half's end at the inflection: checked below
                     err = abs(mpf(got) - want) / abs(want)
-                    worst_self = max(worst_self, err)
-                    assert err <= mpf("1e-12"), (got, want)
+                    if rounding <= 1e-13:
+                        worst_self = max(worst_self, err)
+                    else:
+                        flat += 1
+                        worst_flat = max(worst_flat, err / mpf(rounding))
+                    assert err <= allowed, (through, alpha, k, got, want, rounding)
             pairs = len(pieces) if closed else len(pieces) - 1
             for k in range(pairs):
                 nxt = (k + 1) % len(pieces)
@@ -266,8 +289,10 @@ def test_g2_spline_joints_are_continuous_in_the_mpmath_reference():
                 checked += 1
     print(f"{checked} spline joints: largest curvature jump in the reference "
           f"{float(worst):.2e}, tangent mismatch {float(worst_tangent):.2e}; largest "
-          f"end-curvature error of lac {float(worst_self):.2e}; {inflections} inflections, "
-          f"|κ| there at most {float(worst_zero):.2e} of the halves' other ends")
+          f"end-curvature error of lac {float(worst_self):.2e} ({flat} ends of pieces whose "
+          f"triangles' rounding exceeds 1e-13: at most {float(worst_flat):.2f} times it); "
+          f"{inflections} inflections, |κ| there at most {float(worst_zero):.2e} of the "
+          f"halves' other ends")
     assert checked == 6 * 3 + 3 * 4 + 2 * 4 + 3 * 6
     assert inflections == 3
 

@@ -240,7 +240,7 @@ impl PySpline {
     #[new]
     #[pyo3(signature = (
         points, alpha, closed = false, ends = None, types = None, angles = None, lines = None,
-        start_curvature = None, end_curvature = None
+        start_curvature = None, end_curvature = None, warm = None
     ))]
     #[allow(clippy::too_many_arguments)] // Python keyword arguments
     fn new(
@@ -254,6 +254,7 @@ impl PySpline {
         lines: Option<Vec<usize>>,
         start_curvature: Option<f64>,
         end_curvature: Option<f64>,
+        warm: Option<Bound<'_, PySpline>>,
     ) -> PyResult<Self> {
         let points = point_list(py, points, "points")?;
         if closed && (ends.is_some() || start_curvature.is_some() || end_curvature.is_some()) {
@@ -337,8 +338,14 @@ impl PySpline {
         } else {
             Closure::Open
         };
+        let near = warm.as_ref().map(|w| &w.get().0);
         let spline = py
-            .detach(|| lac::Spline::from_points_with(&points, alpha, closure, &options))
+            .detach(|| match near {
+                Some(near) => {
+                    lac::Spline::from_points_near(&points, alpha, closure, &options, near)
+                }
+                None => lac::Spline::from_points_with(&points, alpha, closure, &options),
+            })
             .or_raise(py)?;
         Ok(PySpline(spline))
     }

@@ -148,6 +148,20 @@ def test_spline_point_types_are_the_command_lines(cli):
         lac.Spline(u, -1.0, types="s s x s s")
 
 
+def test_spline_warm_from_an_earlier_one_is_the_cold_one():
+    """`warm=` an earlier spline (a point dragged): the same spline as solved afresh; a warm
+    spline of another shape (other types) is solved afresh too."""
+    u = [(0.0, 4.0), (0.0, 1.5), (1.0, 0.0), (2.0, 1.5), (2.0, 4.0)]
+    first = lac.Spline(u, -1.0, types="s s t s s", angles={2: 0.0}, lines=[0, 3])
+    moved = list(u)
+    moved[2] = (1.004, -0.003)
+    warm = lac.Spline(moved, -1.0, types="s s t s s", angles={2: 0.0}, lines=[0, 3], warm=first)
+    cold = lac.Spline(moved, -1.0, types="s s t s s", angles={2: 0.0}, lines=[0, 3])
+    assert abs(warm.angles - cold.angles).max() <= 1e-9
+    other = lac.Spline(moved, -1.0, warm=first)
+    assert abs(other.angles - lac.Spline(moved, -1.0).angles).max() <= 1e-9
+
+
 def test_export_equals_the_command_line(cli, tmp_path):
     seg = lac.Segment([(0.0, 0.0), (1.0, 0.0), (1.6, 0.9)], -1.0)
     for fmt in ["step", "iges", "dxf", "svg", "json"]:

@@ -333,6 +333,7 @@ class Spline:
         lines: Optional[Sequence[int]] = None,
         start_curvature: Optional[float] = None,
         end_curvature: Optional[float] = None,
+        warm: Optional["Spline"] = None,
     ) -> None: ...
     @property
     def point_reports(

@@ -202,6 +202,7 @@ impl Spline {
             before: near.tangents_before,
             jacobian: &near.jacobian,
             memo: &near.memo,
+            points: &near.points,
         }))
     }
 

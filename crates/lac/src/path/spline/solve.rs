@@ -12,7 +12,7 @@ use kurbo::{Point, Vec2};
 
 use super::super::s_span::{SSpan, Unit};
 use super::super::{banded, G2_JUMP_LIMIT, G2_TOLERANCE};
-use super::layout::{dir, wrap, At, Condition, Kind, Layout, Plan};
+use super::layout::{dir, wrap, At, Condition, Kind, Layout, Plan, Tangent};
 use crate::curve::chain::Chain;
 use crate::curve::Curve;
 use crate::foundation::error::{Error, G2Failure, PointFailure, Result};
@@ -547,6 +547,37 @@ pub(super) struct Warm<'a> {
     pub(super) before: bool,
     pub(super) jacobian: &'a Entries,
     pub(super) memo: &'a [Memo],
+    pub(super) points: &'a [Point],
+}
+
+/// An earlier answer's unknowns `x` (for the points `old`) made a start for `points`: a free
+/// tangent at a point turns by the mean of the turns of the chords on either side of it, so
+/// that the spans next to a moved point keep their shapes to first order. (The knots'
+/// unknowns are placed in their spans' own frames, which move with the points already.)
+fn turn_with_chords(layout: &Layout, points: &[Point], old: &[Point], x: &mut [f64]) {
+    let n = points.len();
+    if old.len() != n {
+        return;
+    }
+    let turn = |s: usize| {
+        let (a, b) = (s % n, (s + 1) % n);
+        wrap(dir(points[b] - points[a]) - dir(old[b] - old[a]))
+    };
+    let spans = if layout.closed { n } else { n - 1 };
+    for (v, &node) in layout.owner.iter().enumerate() {
+        let At::Point(i) = layout.nodes[node].at else {
+            continue;
+        };
+        if !layout.nodes[node].tangent.contains(&Tangent::Free(v)) {
+            continue;
+        }
+        let before = (i > 0 || layout.closed).then(|| turn(i + n - 1));
+        let after = (i < spans).then(|| turn(i));
+        let sides: Vec<f64> = [before, after].into_iter().flatten().collect();
+        if !sides.is_empty() {
+            x[v] += sides.iter().sum::<f64>() / sides.len() as f64;
+        }
+    }
 }
 
 /// The answer of one problem: the unknowns and the rows' misses.
@@ -575,6 +606,7 @@ pub(super) fn solve(
         before,
         jacobian,
         memo,
+        points: old,
     }) = warm
     {
         let placed = if before {
@@ -594,7 +626,8 @@ pub(super) fn solve(
                 .filter(|(l, _)| l.owner.len() == w.len())
                 .map(|(l, _)| (l, w.to_vec()))
         };
-        if let Some((layout, x)) = start {
+        if let Some((layout, mut x)) = start {
+            turn_with_chords(&layout, points, old, &mut x);
             let p = Problem::new(points, &layout, alpha);
             *p.start.borrow_mut() = (!jacobian.is_empty()).then(|| jacobian.clone());
             p.seed(memo);

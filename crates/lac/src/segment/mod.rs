@@ -19,6 +19,7 @@ pub use kurbo::SegmentDerivative;
 pub(crate) use kurbo::{central_difference, Travel};
 
 /// The angles of a three-point control polygon (docs/math.md §3 steps 1 and 3).
+#[derive(Clone)]
 pub(crate) struct Triangle {
     /// Turning angle θd ∈ (0, π).
     pub(crate) turning: f64,
@@ -141,6 +142,7 @@ pub(crate) fn control_triangle(points: [Point; 3]) -> Result<Triangle> {
 /// A segment solved from its control points but not yet built: its end curvatures and
 /// their derivatives for a solver that iterates on control points (a path's G2 joints),
 /// and the segment itself once that solver is done, without solving again.
+#[derive(Clone)]
 pub(crate) struct SegmentSolution {
     points: [Point; 3],
     alpha: f64,

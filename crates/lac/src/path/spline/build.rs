@@ -8,7 +8,7 @@ use super::super::run::Item;
 use super::super::s_span::HAIR;
 use super::super::{joint_limits, G2_JUMP_LIMIT, INFLECTION_LIMIT};
 use super::layout::{dir, wrap, At, Condition, Kind, Layout, Plan, Tangent};
-use super::solve::{point_of, segments_of, Memo, Problem, Shape};
+use super::solve::{point_of, segments_of, Memo, Problem, Reached, Shape};
 use super::{Spline, SplineInflection, SplineKnot, SplinePoint};
 use crate::foundation::error::{Error, G2Failure, PointFailure, Result};
 use crate::foundation::numeric::length;
@@ -34,7 +34,7 @@ fn hair(shape: &Shape) -> f64 {
 /// Whether every span of the answer `x` can be built as segments.
 pub(super) fn builds(points: &[Point], layout: &Layout, alpha: f64, x: &[f64]) -> bool {
     let p = Problem::new(points, layout, alpha);
-    (0..layout.spans.len()).all(|k| built_span(&p, x, k).is_ok())
+    (0..layout.spans.len()).all(|k| built_span(&p, x, k, None).is_ok())
 }
 
 /// The segments of span `k` (none for a line), as `segments_of` builds them, a plain
@@ -43,14 +43,17 @@ pub(super) fn builds(points: &[Point], layout: &Layout, alpha: f64, x: &[f64]) -
 /// A span's segments, their control triangles and its S, if it has one.
 type Built = (Vec<Segment>, Vec<[Point; 3]>, Option<Shape>);
 
-fn built_span(p: &Problem, x: &[f64], k: usize) -> Result<Built> {
+fn built_span(p: &Problem, x: &[f64], k: usize, reached: Option<&Reached>) -> Result<Built> {
     let l = p.layout;
     let span = l.spans[k].span;
     let (a, b) = (
         l.position(p.points, x, k),
         l.position(p.points, x, l.end_of(k)),
     );
-    let value = p.span(x, k)?;
+    let value = match reached {
+        Some((v, _)) => *v,
+        None => p.span(x, k)?,
+    };
     let s_failure = |shape: &Shape| {
         let Shape::S(s) = shape else {
             unreachable!("an S")
@@ -80,7 +83,12 @@ fn built_span(p: &Problem, x: &[f64], k: usize) -> Result<Built> {
     match value.shape {
         Shape::Line => Ok((Vec::new(), Vec::new(), None)),
         Shape::Plain(t) => {
-            match SegmentSolution::near(t, p.alpha, p.mu_of(k)).and_then(|s| s.into_segment()) {
+            // The solver's own segment where it has it (the same triangle), else solved.
+            let solved = reached
+                .and_then(|r| r.1.clone())
+                .filter(|s| s.points() == t)
+                .map_or_else(|| SegmentSolution::near(t, p.alpha, p.mu_of(k)), Ok);
+            match solved.and_then(|s| s.into_segment()) {
                 Ok(seg) => Ok((vec![seg], vec![t], None)),
                 Err(e) => {
                     let psi = dir(b - a);
@@ -140,6 +148,7 @@ pub(super) fn build(
     layout: &Layout,
     x: Vec<f64>,
     memo: &[Memo],
+    reached: &[Reached],
 ) -> Result<()> {
     let points = s.points.clone();
     let alpha = s.alpha;
@@ -153,7 +162,7 @@ pub(super) fn build(
     let mut ranges = Vec::with_capacity(spans);
     let mut inflection_points = Vec::new();
     for k in 0..spans {
-        let (segs, tris, shape) = built_span(&p, &x, k)?;
+        let (segs, tris, shape) = built_span(&p, &x, k, reached.get(k))?;
         let start = segments.len();
         if layout.spans[k].kind == Kind::Line {
             let (a, b) = (

@@ -215,13 +215,13 @@ impl Spline {
         let mut built: Option<(Vec<f64>, Spline)> = None;
         let mut accept = |l: &layout::Layout, x: &[f64]| {
             let mut trial = self.clone();
-            let ok = build::build(&mut trial, &plan, l, x.to_vec(), &[]).is_ok();
+            let ok = build::build(&mut trial, &plan, l, x.to_vec(), &[], &[]).is_ok();
             if ok {
                 built = Some((x.to_vec(), trial));
             }
             ok
         };
-        let (layout, x, jacobian, memo) = solve::solve(
+        let (layout, x, jacobian, memo, reached) = solve::solve(
             &self.points,
             self.closed,
             self.alpha,
@@ -231,7 +231,7 @@ impl Spline {
         )?;
         match built {
             Some((bx, trial)) if bx == x => self = trial,
-            _ => build::build(&mut self, &plan, &layout, x, &memo)?,
+            _ => build::build(&mut self, &plan, &layout, x, &memo, &reached)?,
         }
         self.jacobian = jacobian.unwrap_or_default();
         self.memo = memo;

@@ -77,7 +77,15 @@ pub(super) struct Problem<'a> {
     start: RefCell<Option<Entries>>,
     last: RefCell<Option<Entries>>,
     memo: RefCell<Vec<Memo>>,
+    /// Each plain span's segment as the last evaluation solved it.
+    made: RefCell<Vec<Option<SegmentSolution>>>,
+    /// The spans at the last answer Newton's method reached, and their plain segments, so
+    /// that the build need not solve them again.
+    reached: RefCell<Vec<Reached>>,
 }
+
+/// A span at an answer: its value and, for a plain segment, its solution.
+pub(super) type Reached = (Value, Option<SegmentSolution>);
 
 impl Problem<'_> {
     pub(super) fn new<'a>(points: &'a [Point], layout: &'a Layout, alpha: f64) -> Problem<'a> {
@@ -89,7 +97,24 @@ impl Problem<'_> {
             start: RefCell::new(None),
             last: RefCell::new(None),
             memo: RefCell::new(vec![Memo::default(); layout.spans.len()]),
+            made: RefCell::new(vec![None; layout.spans.len()]),
+            reached: RefCell::new(Vec::new()),
         }
+    }
+
+    /// The spans at the last answer [`Problem::newton`] reached, with their plain segments.
+    pub(super) fn reached(&self) -> Vec<Reached> {
+        self.reached.take()
+    }
+
+    /// Keep `values`, just evaluated, and the segments that evaluation solved, as reached.
+    fn reach(&self, values: &[Value]) {
+        let made = self.made.borrow();
+        *self.reached.borrow_mut() = values
+            .iter()
+            .zip(made.iter())
+            .map(|(v, m)| (*v, m.clone()))
+            .collect();
     }
 
     /// Every span's memo.
@@ -164,6 +189,7 @@ impl Problem<'_> {
             Kind::Curve => {
                 let phi_a = l.tangent(x, ka, true);
                 let mut m = memo;
+                let mut made = None;
                 let (shape, kappa) = curve(
                     self.alpha,
                     self.unit.as_ref(),
@@ -171,8 +197,11 @@ impl Problem<'_> {
                     b,
                     [phi_a, ta, tb],
                     span,
-                    &mut m,
+                    (&mut m, &mut made),
                 )?;
+                if let Some(slot) = self.made.borrow_mut().get_mut(k) {
+                    *slot = made;
+                }
                 remember(m);
                 Ok(Value {
                     shape,
@@ -185,6 +214,7 @@ impl Problem<'_> {
 
     /// Every span.
     pub(super) fn spans(&self, x: &[f64]) -> Result<Vec<Value>> {
+        self.made.borrow_mut().iter_mut().for_each(|m| *m = None);
         (0..self.layout.spans.len())
             .map(|k| self.span(x, k))
             .collect()
@@ -376,6 +406,7 @@ impl Problem<'_> {
         };
         let norm = |r: &[f64]| r.iter().map(|x| x * x).sum::<f64>().sqrt();
         let (mut values, mut r) = eval(&x)?;
+        self.reach(&values);
         // A Jacobian is kept while the steps it gives shrink the residual a hundredfold (the
         // point conditions' dense systems: each Jacobian costs two span solves an unknown,
         // a step one; a Jacobian kept through slower steps costs more steps than it saves);
@@ -437,6 +468,7 @@ impl Problem<'_> {
                 jacobian = Some(entries);
             }
             (x, values, r) = (x2, v2, r2);
+            self.reach(&values);
         }
         let misses = self.misses(&x, &values);
         Ok((x, misses))
@@ -468,7 +500,8 @@ pub(super) fn point_of(layout: &Layout, k: usize) -> usize {
 /// The shape of a curve span from `a` to `b` whose start tangent has direction `phi_a` and
 /// whose end tangents make the angles `ta`, `tb` with its chord, at slope `alpha` (`unit`
 /// the unit curve through the inflection, for α < 0), and its signed end curvatures, or why
-/// it has none (`span` names it). Its searches start from `memo`, which it updates.
+/// it has none (`span` names it). Its searches start from `memo`, which it updates; a plain
+/// segment's solution goes to `made`.
 pub(super) fn curve(
     alpha: f64,
     unit: Option<&Unit>,
@@ -476,7 +509,7 @@ pub(super) fn curve(
     b: Point,
     [phi_a, ta, tb]: [f64; 3],
     span: usize,
-    memo: &mut Memo,
+    (memo, made): (&mut Memo, &mut Option<SegmentSolution>),
 ) -> Result<(Shape, (f64, f64))> {
     let c = length(b - a);
     let hint = memo.s;
@@ -490,11 +523,12 @@ pub(super) fn curve(
     if ta * tb < 0.0 && ta.abs() + tb.abs() < PI {
         let u = c * tb.abs().sin() / (ta.abs() + tb.abs()).sin();
         let t = [a, a + Vec2::from_angle(phi_a) * u, b];
-        let solved = SegmentSolution::near(t, alpha, memo.mu)
-            .and_then(|s| Ok((s.end_curvatures()?, s.mu())));
+        let solved =
+            SegmentSolution::near(t, alpha, memo.mu).and_then(|s| Ok((s.end_curvatures()?, s)));
         return match solved {
-            Ok((k, mu)) => {
-                memo.mu = Some(mu);
+            Ok((k, s)) => {
+                memo.mu = Some(s.mu());
+                *made = Some(s);
                 Ok((Shape::Plain(t), k))
             }
             Err(e) => match s_span() {
@@ -585,7 +619,7 @@ type Answer = (Vec<f64>, Vec<f64>);
 
 /// A solved problem: its layout, its unknowns, the last Jacobian of the point conditions'
 /// Newton's method (the warm start of a re-solve), if it made one, and its spans' memos.
-pub(super) type Solved = (Layout, Vec<f64>, Option<Entries>, Vec<Memo>);
+pub(super) type Solved = (Layout, Vec<f64>, Option<Entries>, Vec<Memo>, Vec<Reached>);
 
 /// Solve the relaxed problem, then (when the plan asks more) the full one from it, or from
 /// `warm` (an earlier answer's unknowns for the same plan, and its knots' share). `accept` builds and checks a
@@ -634,7 +668,8 @@ pub(super) fn solve(
             if let Ok((x, misses)) = p.newton(x, &vec![0.0; layout.rows.len()]) {
                 if converged(&misses) {
                     let (jacobian, memo) = (p.last.take(), p.memos());
-                    return Ok((layout, x, jacobian, memo));
+                    let reached = p.reached();
+                    return Ok((layout, x, jacobian, memo, reached));
                 }
             }
         }
@@ -647,7 +682,7 @@ pub(super) fn solve(
         })?
     };
     if plan.is_relaxed() {
-        return Ok((relaxed, x, None, Vec::new()));
+        return Ok((relaxed, x, None, Vec::new(), Vec::new()));
     }
     // The full problem from the relaxed answer, its knots' lines across their chords at
     // each of KNOT_SHARES in turn until one converges (the spline depends on where they
@@ -728,8 +763,8 @@ fn full(
     let mut best: Option<Answer> = None;
     if let Ok(answer) = p.newton(x0.clone(), &zero) {
         if converged(&answer.1) {
-            let (jacobian, memo) = (p.last.take(), p.memos());
-            return Ok((layout, answer.0, jacobian, memo));
+            let (jacobian, memo, reached) = (p.last.take(), p.memos(), p.reached());
+            return Ok((layout, answer.0, jacobian, memo, reached));
         }
         best = Some(answer);
     }
@@ -743,8 +778,8 @@ fn full(
                 x = x2;
                 if t == 1.0 {
                     if converged(&misses) {
-                        let (jacobian, memo) = (p.last.take(), p.memos());
-                        return Ok((layout, x, jacobian, memo));
+                        let (jacobian, memo, reached) = (p.last.take(), p.memos(), p.reached());
+                        return Ok((layout, x, jacobian, memo, reached));
                     }
                     if best
                         .as_ref()

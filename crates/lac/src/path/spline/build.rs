@@ -58,10 +58,10 @@ fn built_span(p: &Problem, x: &[f64], k: usize, reached: Option<&Reached>) -> Re
         let Shape::S(s) = shape else {
             unreachable!("an S")
         };
-        // A half that cannot be drawn lies too near the edge of the drawable region for the
-        // segment solver: its inflection end is unresolved, or the inflection falls within a
-        // hair of a point (the half turns by almost nothing, its triangle flat to the
-        // rounding of its angles).
+        // A half that cannot be built from its curvatures and length: its numbers leave
+        // double range or its ends disagree on the points between them (the curvature
+        // falls by 1e-12 and more to the hair), and when it turns by almost nothing, the
+        // inflection falls within a hair of a point.
         let turning = if s.is_half() {
             s.theta[0].max(s.theta[1])
         } else {

@@ -76,7 +76,14 @@ pub(crate) struct ChordAngle {
     /// A first μ to try instead of the circle's or the clothoid table's (a caller's last
     /// answer to a nearby problem).
     hint: Option<f64>,
+    /// Whether the search may stop at a Newton step within [`LOOSE_STEP`] of μ.
+    loose: bool,
 }
+
+/// A loose search (see [`solve_near`]) stops at a Newton step no longer than this share of
+/// μ: the iterate is then within about its square of the root, which is far closer than a
+/// difference quotient's step needs.
+const LOOSE_STEP: f64 = 1e-6;
 
 struct Eval {
     mu: f64,
@@ -122,6 +129,7 @@ impl ChordAngle {
             clothoid: (alpha == [-1.0, -1.0] && theta[0] == 0.0 && theta[1] >= CLOTHOID_MIN_TURN)
                 .then(|| (Complex::cis(theta[1]), Complex::cis(theta_e).conj())),
             hint: None,
+            loose: false,
         }
     }
 
@@ -485,6 +493,7 @@ impl ChordAngle {
             };
             let converged = g.abs() <= tolerance
                 || (newton_step && step.abs() <= 1e-9 * mu.max(1.0))
+                || (self.loose && newton_step && step.abs() <= LOOSE_STEP * mu.max(1.0))
                 || (newton_step
                     && step.abs() <= 1e-3 * mu.max(1.0)
                     && predicted <= 1e-16 * mu.max(1.0))
@@ -559,17 +568,19 @@ impl Solution {
 /// `theta_d`. Requires 0 < θd < π and θd/2 ≤ θe < θd (the shorter leg first).
 /// The search starts at `hint` (e.g. the μ of a nearby problem's solution) when given: the
 /// same solution (g increases with μ, so there is one), in fewer evaluations when the hint
-/// is close.
+/// is close. With `loose` it stops at a Newton step shorter than 1e-6 of μ, without the
+/// evaluation that would confirm it (μ then within about 1e-12 of itself: for a difference
+/// quotient taken over a far larger step).
 pub(crate) fn solve_near(
     alpha: f64,
     theta_d: f64,
     theta_e: f64,
-    hint: Option<f64>,
+    (hint, loose): (Option<f64>, bool),
 ) -> Result<Solution> {
     let (theta, i) = single(alpha, theta_d);
-    let e = ChordAngle::new([alpha, alpha], theta, theta_e)
-        .with_hint(hint)
-        .solve_eval()?;
+    let mut problem = ChordAngle::new([alpha, alpha], theta, theta_e).with_hint(hint);
+    problem.loose = loose;
+    let e = problem.solve_eval()?;
     Ok(Solution::of(e, i))
 }
 
@@ -624,9 +635,9 @@ mod tests {
         for alpha in [-1.0, -0.5, 0.0, 0.7, 2.0] {
             for (theta_d, r) in [(0.8, 0.52), (2.0, 0.7), (0.01, 0.6)] {
                 let theta_e = r * theta_d;
-                let Ok(cold) = solve_near(alpha, theta_d, theta_e, None) else {
+                let Ok(cold) = solve_near(alpha, theta_d, theta_e, (None, false)) else {
                     // Not drawable: not with a hint either.
-                    assert!(solve_near(alpha, theta_d, theta_e, Some(0.5)).is_err());
+                    assert!(solve_near(alpha, theta_d, theta_e, (Some(0.5), false)).is_err());
                     continue;
                 };
                 for hint in [
@@ -636,7 +647,7 @@ mod tests {
                     1e6,
                     f64::NAN,
                 ] {
-                    let warm = solve_near(alpha, theta_d, theta_e, Some(hint)).unwrap();
+                    let warm = solve_near(alpha, theta_d, theta_e, (Some(hint), false)).unwrap();
                     assert!(
                         (warm.mu - cold.mu).abs() <= 1e-12 * cold.mu.max(1.0),
                         "{alpha} {theta_d} {r} {hint}: {} {}",
@@ -644,6 +655,19 @@ mod tests {
                         cold.mu
                     );
                 }
+                // A loose search from a difference quotient's step away (1e-7 in θe) stops
+                // an evaluation early, within 1e-11 of μ.
+                let nudged = theta_e + 1e-7;
+                let Ok(tight) = solve_near(alpha, theta_d, nudged, (Some(cold.mu), false)) else {
+                    continue;
+                };
+                let loose = solve_near(alpha, theta_d, nudged, (Some(cold.mu), true)).unwrap();
+                assert!(
+                    (loose.mu - tight.mu).abs() <= 1e-11 * tight.mu.max(1.0),
+                    "{alpha} {theta_d} {r}: {} {}",
+                    loose.mu,
+                    tight.mu
+                );
             }
         }
     }

@@ -102,20 +102,27 @@ impl Unit {
     /// chord of length `chord`, or `None` when there is none that turns by at most
     /// [`MAX_HALF_TURNING`] each way. Of the two mirror images, the one that turns less.
     pub(super) fn s_span(&self, ta: f64, tb: f64, chord: f64) -> Option<SSpan> {
-        self.s_span_near(ta, tb, chord, None)
+        self.s_span_near(ta, tb, chord, (None, false))
     }
 
     /// [`Unit::s_span`], started from `hint`, the [`SSpan::hint`] of the S of nearby
     /// tangents, when given: Newton's method from its A on its mirror image, and the other
     /// image searched only as far as it could turn less. Without a hint, or when Newton's
     /// method does not converge from it, the search from the smallest admissible A.
+    /// With `loose` (for a difference quotient, a step of 1e-7 from the hint's tangents),
+    /// Newton's method on the hint's mirror image alone when it converges.
     pub(super) fn s_span_near(
         &self,
         ta: f64,
         tb: f64,
         chord: f64,
-        hint: Option<(f64, f64)>,
+        (hint, loose): (Option<(f64, f64)>, bool),
     ) -> Option<SSpan> {
+        if let (true, Some((sigma, a0))) = (loose, hint) {
+            if let Some(s) = self.s_span_from(sigma, ta, tb, chord, a0) {
+                return Some(s);
+            }
+        }
         let (first, a0) = hint.map_or((1.0, None), |(sigma, a)| (sigma, Some(a)));
         let found = a0
             .and_then(|a0| self.s_span_from(first, ta, tb, chord, a0))
@@ -639,15 +646,20 @@ mod tests {
                 let near = unit.s_span(ta, tb, 2.0).expect("an S");
                 for d in [1e-7, 1e-3, -2e-2] {
                     let cold = unit.s_span(ta + d, tb - d, 2.0);
-                    let warm = unit.s_span_near(ta + d, tb - d, 2.0, Some(near.hint()));
-                    let (cold, warm) = (cold.expect("an S"), warm.expect("an S"));
-                    assert_eq!(cold.sigma, warm.sigma, "{alpha} {ta} {tb} {d}");
-                    for i in 0..2 {
-                        let gap = (cold.theta[i] - warm.theta[i]).abs();
-                        assert!(
-                            gap <= 1e-14 * cold.theta[i].max(1.0),
-                            "{alpha} {ta} {tb} {d}"
-                        );
+                    let warm = unit.s_span_near(ta + d, tb - d, 2.0, (Some(near.hint()), false));
+                    // Loosely (the hint's mirror image only), a difference quotient's step.
+                    let loose = (d == 1e-7)
+                        .then(|| unit.s_span_near(ta + d, tb - d, 2.0, (Some(near.hint()), true)));
+                    let cold = cold.expect("an S");
+                    for warm in [warm].into_iter().chain(loose).map(|w| w.expect("an S")) {
+                        assert_eq!(cold.sigma, warm.sigma, "{alpha} {ta} {tb} {d}");
+                        for i in 0..2 {
+                            let gap = (cold.theta[i] - warm.theta[i]).abs();
+                            assert!(
+                                gap <= 1e-14 * cold.theta[i].max(1.0),
+                                "{alpha} {ta} {tb} {d}"
+                            );
+                        }
                     }
                 }
             }

@@ -160,15 +160,16 @@ impl SegmentSolution {
     /// Solve the segment on `points` with slope `alpha` (not checked: see
     /// [`Segment::from_control_points`]).
     pub(crate) fn new(points: [Point; 3], alpha: f64) -> Result<SegmentSolution> {
-        Self::near(points, alpha, None)
+        Self::near(points, alpha, (None, false))
     }
 
-    /// [`SegmentSolution::new`], the chord-angle search started at μ = `hint` when given
-    /// (the [`SegmentSolution::mu`] of a nearby triangle's solution).
+    /// [`SegmentSolution::new`], the chord-angle search started at μ = `hint.0` when given
+    /// (the [`SegmentSolution::mu`] of a nearby triangle's solution), and with `hint.1`
+    /// stopped loosely, for a difference quotient (see `chord_angle::solve_near`).
     pub(crate) fn near(
         points: [Point; 3],
         alpha: f64,
-        hint: Option<f64>,
+        hint: (Option<f64>, bool),
     ) -> Result<SegmentSolution> {
         let arranged = Self::arrange(points)?;
         let solution = chord_angle::solve_near(alpha, arranged.0.turning, arranged.2, hint)?;
@@ -221,6 +222,16 @@ impl SegmentSolution {
             return None;
         }
         let solution = chord_angle::eval_at_guess(alpha, turning, theta_e)?;
+        Some(Self::with(points, alpha, arranged, solution))
+    }
+
+    /// The segment on `points` with slope `alpha`, not solved: its piece taken at `mu`, its
+    /// chord angle off by [`SegmentSolution::chord_angle_miss`] (for a first-order answer
+    /// by [`SegmentSolution::log_corrections`] near a known μ). `None` where μ is outside
+    /// the search's range or the numbers are not finite.
+    pub(crate) fn at_mu(points: [Point; 3], alpha: f64, mu: f64) -> Option<SegmentSolution> {
+        let arranged = Self::arrange(points).ok()?;
+        let solution = chord_angle::eval_at(alpha, arranged.0.turning, arranged.2, mu)?;
         Some(Self::with(points, alpha, arranged, solution))
     }
 

@@ -304,31 +304,47 @@ fn default_options_are_the_smooth_spline() {
     assert_eq!(a.control_triangles(), b.control_triangles());
 }
 
-/// A warm re-solve after moving one point agrees with the cold solve.
+/// A warm re-solve after moving one point agrees with the cold solve, at both slopes; so
+/// does one that moves it back (warm from the warm answer, whose spans away from the point
+/// are taken as they were), and one from an answer at another slope (nothing taken).
 #[test]
 fn warm_re_solve_agrees_with_cold() {
     let mut rng = bench_common::Rng(0x6C79);
-    let mut checked = 0;
-    while checked < 20 {
-        let g = bench_common::glyphs::glyph(&mut rng);
-        let Ok(first) = Spline::from_points_with(&g.points, -1.0, Closure::Closed, &g.options)
-        else {
-            continue;
-        };
-        let mut moved = g.points.clone();
-        let k = (rng.next() * moved.len() as f64) as usize;
-        moved[k] += kurbo::Vec2::new(0.01 * (rng.next() - 0.5), 0.01 * (rng.next() - 0.5));
-        let (Ok(cold), Ok(warm)) = (
-            Spline::from_points_with(&moved, -1.0, Closure::Closed, &g.options),
-            Spline::from_points_near(&moved, -1.0, Closure::Closed, &g.options, &first),
-        ) else {
-            continue;
-        };
-        for (a, b) in cold.angles().iter().zip(warm.angles()) {
-            assert!(wrap(a - b).abs() < 1e-9, "{a} {b}");
+    for alpha in [-1.0, -0.5] {
+        let mut checked = 0;
+        while checked < 20 {
+            let g = bench_common::glyphs::glyph(&mut rng);
+            let o = &g.options;
+            let Ok(first) = Spline::from_points_with(&g.points, alpha, Closure::Closed, o) else {
+                continue;
+            };
+            let mut moved = g.points.clone();
+            let k = (rng.next() * moved.len() as f64) as usize;
+            moved[k] += kurbo::Vec2::new(0.01 * (rng.next() - 0.5), 0.01 * (rng.next() - 0.5));
+            let (Ok(cold), Ok(warm)) = (
+                Spline::from_points_with(&moved, alpha, Closure::Closed, o),
+                Spline::from_points_near(&moved, alpha, Closure::Closed, o, &first),
+            ) else {
+                continue;
+            };
+            let agree = |a: &Spline, b: &Spline, what: &str| {
+                for (x, y) in a.angles().iter().zip(b.angles()) {
+                    assert!(wrap(x - y).abs() < 1e-9, "{what} α {alpha}: {x} {y}");
+                }
+                assert_targets(misses(b), what);
+            };
+            agree(&cold, &warm, "warm");
+            let back = Spline::from_points_near(&g.points, alpha, Closure::Closed, o, &warm);
+            agree(&first, &back.unwrap(), "moved back");
+            let other = -1.5 - alpha;
+            if let (Ok(cold), Ok(warm)) = (
+                Spline::from_points_with(&moved, other, Closure::Closed, o),
+                Spline::from_points_near(&moved, other, Closure::Closed, o, &first),
+            ) {
+                agree(&cold, &warm, "another slope");
+            }
+            checked += 1;
         }
-        assert_targets(misses(&warm), "warm");
-        checked += 1;
     }
 }
 

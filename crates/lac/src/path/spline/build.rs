@@ -8,7 +8,7 @@ use super::super::run::Item;
 use super::super::s_span::HAIR;
 use super::super::{joint_limits, G2_JUMP_LIMIT, INFLECTION_LIMIT};
 use super::layout::{dir, wrap, At, Condition, Kind, Layout, Plan, Tangent};
-use super::solve::{point_of, segments_of, Memo, Problem, Reached, Shape};
+use super::solve::{point_of, segments_of, Key, Memo, Problem, Reached, Shape};
 use super::{Spline, SplineInflection, SplineKnot, SplinePoint};
 use crate::foundation::error::{Error, G2Failure, PointFailure, Result};
 use crate::foundation::numeric::length;
@@ -41,7 +41,7 @@ pub(super) fn builds(points: &[Point], layout: &Layout, alpha: f64, x: &[f64]) -
 /// segment that fails continued by the S family (at the edge of the drawable region, where
 /// a segment's curvature reaches zero at one end), and the span's S if it has one.
 /// A span's segments, their control triangles and its S, if it has one.
-type Built = (Vec<Segment>, Vec<[Point; 3]>, Option<Shape>);
+pub(super) type Built = (Vec<Segment>, Vec<[Point; 3]>, Option<Shape>);
 
 fn built_span(p: &Problem, x: &[f64], k: usize, reached: Option<&Reached>) -> Result<Built> {
     let l = p.layout;
@@ -51,7 +51,7 @@ fn built_span(p: &Problem, x: &[f64], k: usize, reached: Option<&Reached>) -> Re
         l.position(p.points, x, l.end_of(k)),
     );
     let value = match reached {
-        Some((v, _)) => *v,
+        Some(r) => r.value,
         None => p.span(x, k)?,
     };
     let s_failure = |shape: &Shape| {
@@ -85,9 +85,12 @@ fn built_span(p: &Problem, x: &[f64], k: usize, reached: Option<&Reached>) -> Re
         Shape::Plain(t) => {
             // The solver's own segment where it has it (the same triangle), else solved.
             let solved = reached
-                .and_then(|r| r.1.clone())
+                .and_then(|r| r.made.clone())
                 .filter(|s| s.points() == t)
-                .map_or_else(|| SegmentSolution::near(t, p.alpha, p.mu_of(k)), Ok);
+                .map_or_else(
+                    || SegmentSolution::near(t, p.alpha, (p.mu_of(k), false)),
+                    Ok,
+                );
             match solved.and_then(|s| s.into_segment()) {
                 Ok(seg) => Ok((vec![seg], vec![t], None)),
                 Err(e) => {
@@ -149,6 +152,7 @@ pub(super) fn build(
     x: Vec<f64>,
     memo: &[Memo],
     reached: &[Reached],
+    earlier: &[(Key, Built)],
 ) -> Result<()> {
     let points = s.points.clone();
     let alpha = s.alpha;
@@ -161,8 +165,16 @@ pub(super) fn build(
     // Per layout span: its pieces' range, and its S (two halves) if any.
     let mut ranges = Vec::with_capacity(spans);
     let mut inflection_points = Vec::new();
+    let mut built = Vec::with_capacity(spans);
     for k in 0..spans {
-        let (segs, tris, shape) = built_span(&p, &x, k, reached.get(k))?;
+        // An earlier build's span (at the same slope) where its ends have not moved.
+        let key = p.key(&x, k);
+        let made = match earlier.get(k) {
+            Some((was, b)) if *was == key && earlier.len() == spans => b.clone(),
+            _ => built_span(&p, &x, k, reached.get(k))?,
+        };
+        built.push((key, made.clone()));
+        let (segs, tris, shape) = made;
         let start = segments.len();
         if layout.spans[k].kind == Kind::Line {
             let (a, b) = (
@@ -410,5 +422,6 @@ pub(super) fn build(
     s.unknowns = x;
     s.knot_share = layout.knot_share;
     s.tangents_before = layout.tangents_before;
+    s.built = built;
     Ok(())
 }

@@ -645,6 +645,66 @@ impl Layout {
         }
     }
 
+    /// The independent parts of the system: the part of each row and of each unknown (the
+    /// root of its set), where a part is closed under "a row reads a span that reads an
+    /// unknown". Corners with given tangents and straight spans cut a spline into parts,
+    /// and a part whose spans do not change needs no Newton step.
+    pub(super) fn parts(&self) -> (Vec<usize>, Vec<usize>) {
+        let rows = self.rows.len();
+        // Rows first, then unknowns, in one union–find.
+        let mut parent: Vec<usize> = (0..rows + self.owner.len()).collect();
+        fn root(parent: &mut [usize], mut i: usize) -> usize {
+            while parent[i] != i {
+                parent[i] = parent[parent[i]];
+                i = parent[i];
+            }
+            i
+        }
+        let mut row_of = vec![None; self.nodes.len()];
+        for (r, &k) in self.rows.iter().enumerate() {
+            row_of[k] = Some(r);
+        }
+        for (s, span) in self.spans.iter().enumerate() {
+            if span.kind == Kind::Line {
+                continue;
+            }
+            let (a, b) = (s, self.end_of(s));
+            let mut reads: Vec<usize> = Vec::with_capacity(8);
+            // The unknowns the span reads: its ends' places and tangents on its side.
+            for (k, side) in [(a, 1), (b, 0)] {
+                let node = &self.nodes[k];
+                if let Tangent::Free(v) = node.tangent[side] {
+                    reads.push(rows + v);
+                }
+                if let At::Knot(_, knot) = node.at {
+                    reads.extend(knot.u.iter().chain([&knot.h]).map(|v| rows + v));
+                }
+            }
+            // The rows that read the span: a condition on the side it lies.
+            for (k, after) in [(a, true), (b, false)] {
+                let reads_side = match self.nodes[k].condition {
+                    Some(Condition::G2) => true,
+                    Some(
+                        Condition::Curvature { after: side, .. }
+                        | Condition::Inflection { after: side },
+                    ) => side == after,
+                    None => false,
+                };
+                if let (true, Some(r)) = (reads_side, row_of[k]) {
+                    reads.push(r);
+                }
+            }
+            if let Some((&first, rest)) = reads.split_first() {
+                for &i in rest {
+                    let (p, q) = (root(&mut parent, first), root(&mut parent, i));
+                    parent[q] = p;
+                }
+            }
+        }
+        let part: Vec<usize> = (0..parent.len()).map(|i| root(&mut parent, i)).collect();
+        (part[..rows].to_vec(), part[rows..].to_vec())
+    }
+
     /// Where node `k` is for unknowns `x`.
     pub(super) fn position(&self, points: &[Point], x: &[f64], k: usize) -> Point {
         match self.nodes[k].at {
@@ -688,5 +748,51 @@ impl Layout {
     pub(super) fn is_tridiagonal(&self) -> bool {
         self.rows.len() == self.owner.len()
             && self.rows.iter().zip(&self.owner).all(|(r, o)| r == o)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// How many parts the full layout of `types` on eight points round a circle has, and
+    /// whether every row's part holds as many unknowns as rows.
+    fn parts_of(types: &[PointType], lines: &[usize]) -> (usize, bool) {
+        let points: Vec<Point> = (0..8)
+            .map(|k| {
+                let t = TAU * k as f64 / 8.0;
+                Point::new(t.cos(), 1.3 * t.sin())
+            })
+            .collect();
+        let options = SplineOptions {
+            types: types.to_vec(),
+            lines: lines.to_vec(),
+            ..SplineOptions::default()
+        };
+        let plan = Plan::new(&points, true, -1.0, &options).unwrap();
+        let (layout, _) =
+            Layout::full(&points, true, &plan, |_| 0.0, |_| Ok((0.0, 0.0, 0.0))).unwrap();
+        let (rows, unknowns) = layout.parts();
+        let mut roots: Vec<usize> = rows.clone();
+        roots.sort_unstable();
+        roots.dedup();
+        let square = roots.iter().all(|p| {
+            rows.iter().filter(|r| *r == p).count() == unknowns.iter().filter(|u| *u == p).count()
+        });
+        (roots.len(), square)
+    }
+
+    /// Smooth and tangent points couple the whole ring; corners (their tangents given on
+    /// both sides) and straight spans cut it into square parts.
+    #[test]
+    fn corners_and_straight_spans_cut_a_spline_into_parts() {
+        let s = PointType::Smooth;
+        let c = PointType::CORNER;
+        let t = PointType::Tangent(0.3);
+        assert_eq!(parts_of(&[s; 8], &[]), (1, true));
+        assert_eq!(parts_of(&[s, s, t, s, s, s, t, s], &[]), (1, true));
+        assert_eq!(parts_of(&[c, s, s, s, c, s, s, s], &[]), (2, true));
+        assert_eq!(parts_of(&[c, s, s, s, s, s, s, s], &[4]), (2, true));
+        assert_eq!(parts_of(&[s; 8], &[1, 5]), (2, true));
     }
 }

@@ -84,6 +84,12 @@ pub struct Spline {
     jacobian: solve::Entries,
     /// Where each span's own search ended (the warm start of a re-solve's spans).
     memo: Vec<solve::Memo>,
+    /// The solver's spans at the answer (a re-solve at the same slope does not solve again
+    /// those whose ends stay).
+    reached: Vec<solve::Reached>,
+    /// Each span's pieces as built, and what the span is a function of (a re-solve at the
+    /// same slope does not build again those whose ends stay).
+    built: Vec<(solve::Key, build::Built)>,
 }
 
 /// Where a span of a [`Spline`] passes through an inflection, as measured on its two
@@ -168,7 +174,7 @@ impl Spline {
         closure: Closure,
         options: &SplineOptions,
     ) -> Result<Spline> {
-        Spline::checked(points, alpha, closure, options)?.solved(None)
+        Spline::checked(points, alpha, closure, options)?.solved(None, &[])
     }
 
     /// [`Spline::from_points_with`] warm-started from `near`, an earlier spline with the
@@ -196,26 +202,43 @@ impl Spline {
             && near.options.lines == options.lines
             && near.options.start.curvature.is_some() == options.start.curvature.is_some()
             && near.options.end.curvature.is_some() == options.end.curvature.is_some();
-        s.solved(same.then_some(solve::Warm {
-            unknowns: &near.unknowns,
-            share: near.knot_share,
-            before: near.tangents_before,
-            jacobian: &near.jacobian,
-            memo: &near.memo,
-            points: &near.points,
-        }))
+        let built = if same && near.alpha == alpha {
+            &near.built[..]
+        } else {
+            &[]
+        };
+        s.solved(
+            same.then_some(solve::Warm {
+                unknowns: &near.unknowns,
+                share: near.knot_share,
+                before: near.tangents_before,
+                jacobian: &near.jacobian,
+                memo: &near.memo,
+                points: &near.points,
+                reached: if near.alpha == alpha {
+                    &near.reached
+                } else {
+                    &[]
+                },
+            }),
+            built,
+        )
     }
 
     /// The validated input solved (from `warm`, an earlier answer's unknowns, if given),
     /// built and checked.
-    fn solved(mut self, warm: Option<solve::Warm<'_>>) -> Result<Spline> {
+    fn solved(
+        mut self,
+        warm: Option<solve::Warm<'_>>,
+        earlier: &[(solve::Key, build::Built)],
+    ) -> Result<Spline> {
         let plan = layout::Plan::new(&self.points, self.closed, self.alpha, &self.options)?;
         // A smooth spline's answer built on the way (where the solver tries one at α
         // directly), kept when it is the answer.
         let mut built: Option<(Vec<f64>, Spline)> = None;
         let mut accept = |l: &layout::Layout, x: &[f64]| {
             let mut trial = self.clone();
-            let ok = build::build(&mut trial, &plan, l, x.to_vec(), &[], &[]).is_ok();
+            let ok = build::build(&mut trial, &plan, l, x.to_vec(), &[], &[], &[]).is_ok();
             if ok {
                 built = Some((x.to_vec(), trial));
             }
@@ -231,10 +254,11 @@ impl Spline {
         )?;
         match built {
             Some((bx, trial)) if bx == x => self = trial,
-            _ => build::build(&mut self, &plan, &layout, x, &memo, &reached)?,
+            _ => build::build(&mut self, &plan, &layout, x, &memo, &reached, earlier)?,
         }
         self.jacobian = jacobian.unwrap_or_default();
         self.memo = memo;
+        self.reached = reached;
         check_total_length(&self)?;
         Ok(self)
     }
@@ -314,6 +338,8 @@ impl Spline {
             tangents_before: false,
             jacobian: Vec::new(),
             memo: Vec::new(),
+            reached: Vec::new(),
+            built: Vec::new(),
         })
     }
 

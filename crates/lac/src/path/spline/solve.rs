@@ -5,7 +5,7 @@
 //! The relaxed problem first (with the continuation in α of the smooth spline), then the
 //! full one from it.
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::f64::consts::PI;
 
 use kurbo::{Point, Vec2};
@@ -20,7 +20,7 @@ use crate::foundation::numeric::length;
 use crate::segment::{Segment, SegmentSolution};
 
 /// A kept Jacobian's steps must shrink the residual by this factor or it is made afresh.
-const KEEP_WHILE: f64 = 0.01;
+const KEEP_WHILE: f64 = 0.001;
 /// A residual norm at rounding: below it a step that does not lower it ends the descent.
 const RESIDUAL_FLOOR: f64 = 1e-12;
 /// Most Newton steps.
@@ -35,6 +35,12 @@ const MAX_STEP: f64 = 0.2;
 const HOMOTOPY: [f64; 4] = [0.25, 0.5, 0.75, 1.0];
 /// Where the knots' lines cross their chords, tried in turn (see [`Plan::knot_frame`]).
 const KNOT_SHARES: [f64; 3] = [0.5, 0.3, 0.7];
+
+/// The largest first-order correction (of ln|κ|) a difference quotient's span takes from one
+/// evaluation: the error is about its square, so the quotient is good to about this share.
+/// (A quotient's step moves ln|κ| by 1e-7 to 1e-5.)
+const ONE_STEP: f64 = 1e-5;
+const NEXT: f64 = 1e-11;
 
 /// A Jacobian's entries: (row, unknown, value).
 pub(super) type Entries = Vec<(usize, usize, f64)>;
@@ -82,10 +88,42 @@ pub(super) struct Problem<'a> {
     /// The spans at the last answer Newton's method reached, and their plain segments, so
     /// that the build need not solve them again.
     reached: RefCell<Vec<Reached>>,
+    /// Each span's last full evaluation, so that a span whose ends did not move is not
+    /// solved again (seeded with an earlier answer's spans for a warm re-solve).
+    cache: RefCell<Vec<Option<Reached>>>,
+    /// Whether span solves may stop loosely: while taking difference quotients, whose
+    /// values are never kept.
+    loose: Cell<bool>,
+    /// The spans the last full evaluation solved (not taken from the cache).
+    moved: RefCell<Vec<usize>>,
 }
 
-/// A span at an answer: its value and, for a plain segment, its solution.
-pub(super) type Reached = (Value, Option<SegmentSolution>);
+/// What a span's shape is a function of (with the slope): its kind, its ends' places and
+/// tangents (its start's leaving, its end's arriving).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Key {
+    kind: Kind,
+    ends: [f64; 6],
+}
+
+/// A span at an answer, or as last evaluated: what it was evaluated for, its value and, for
+/// a plain segment, its solution.
+#[derive(Clone)]
+pub(super) struct Reached {
+    key: Key,
+    pub(super) value: Value,
+    pub(super) made: Option<SegmentSolution>,
+}
+
+impl std::fmt::Debug for Reached {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Reached")
+            .field("key", &self.key)
+            .field("value", &self.value)
+            .field("made", &self.made.as_ref().map(|m| m.mu()))
+            .finish()
+    }
+}
 
 impl Problem<'_> {
     pub(super) fn new<'a>(points: &'a [Point], layout: &'a Layout, alpha: f64) -> Problem<'a> {
@@ -99,6 +137,9 @@ impl Problem<'_> {
             memo: RefCell::new(vec![Memo::default(); layout.spans.len()]),
             made: RefCell::new(vec![None; layout.spans.len()]),
             reached: RefCell::new(Vec::new()),
+            cache: RefCell::new(vec![None; layout.spans.len()]),
+            loose: Cell::new(false),
+            moved: RefCell::new(Vec::new()),
         }
     }
 
@@ -107,14 +148,58 @@ impl Problem<'_> {
         self.reached.take()
     }
 
-    /// Keep `values`, just evaluated, and the segments that evaluation solved, as reached.
-    fn reach(&self, values: &[Value]) {
-        let made = self.made.borrow();
+    /// Keep `values`, the spans at `x`, as reached, with the plain segments solved for them
+    /// where the cache still holds them.
+    fn reach(&self, x: &[f64], values: &[Value]) {
+        let cache = self.cache.borrow();
         *self.reached.borrow_mut() = values
             .iter()
-            .zip(made.iter())
-            .map(|(v, m)| (*v, m.clone()))
+            .zip(cache.iter())
+            .enumerate()
+            .map(|(k, (v, c))| {
+                let key = self.key(x, k);
+                Reached {
+                    key,
+                    value: *v,
+                    made: c
+                        .as_ref()
+                        .filter(|c| c.key == key)
+                        .and_then(|c| c.made.clone()),
+                }
+            })
             .collect();
+    }
+
+    /// Start from an earlier answer's spans (of the same layout and slope): those whose
+    /// ends have not moved are not solved again.
+    pub(super) fn seed_spans(&self, reached: &[Reached]) {
+        let mut cache = self.cache.borrow_mut();
+        if reached.len() == cache.len() {
+            for (c, r) in cache.iter_mut().zip(reached) {
+                *c = Some(r.clone());
+            }
+        }
+    }
+
+    /// What span `k` is a function of, for unknowns `x`.
+    pub(super) fn key(&self, x: &[f64], k: usize) -> Key {
+        let l = self.layout;
+        let (ka, kb) = (k, l.end_of(k));
+        let (a, b) = (
+            l.position(self.points, x, ka),
+            l.position(self.points, x, kb),
+        );
+        Key {
+            kind: l.spans[k].kind,
+            ends: [
+                a.x,
+                a.y,
+                b.x,
+                b.y,
+                l.tangent(x, ka, true),
+                l.tangent(x, kb, false),
+            ],
+        }
     }
 
     /// Every span's memo.
@@ -197,7 +282,7 @@ impl Problem<'_> {
                     b,
                     [phi_a, ta, tb],
                     span,
-                    (&mut m, &mut made),
+                    (&mut m, &mut made, self.loose.get()),
                 )?;
                 if let Some(slot) = self.made.borrow_mut().get_mut(k) {
                     *slot = made;
@@ -212,11 +297,22 @@ impl Problem<'_> {
         }
     }
 
-    /// Every span.
+    /// Every span: solved again where its ends moved since its last full evaluation.
     pub(super) fn spans(&self, x: &[f64]) -> Result<Vec<Value>> {
-        self.made.borrow_mut().iter_mut().for_each(|m| *m = None);
+        self.moved.borrow_mut().clear();
         (0..self.layout.spans.len())
-            .map(|k| self.span(x, k))
+            .map(|k| {
+                let key = self.key(x, k);
+                if let Some(r) = self.cache.borrow()[k].as_ref().filter(|r| r.key == key) {
+                    return Ok(r.value);
+                }
+                self.moved.borrow_mut().push(k);
+                self.made.borrow_mut()[k] = None;
+                let value = self.span(x, k)?;
+                let made = self.made.borrow_mut()[k].take();
+                self.cache.borrow_mut()[k] = Some(Reached { key, value, made });
+                Ok(value)
+            })
             .collect()
     }
 
@@ -296,7 +392,8 @@ impl Problem<'_> {
 
     /// The Jacobian's entries (row, unknown, value) by forward differences: each unknown
     /// moves the spans at its node, which move the rows at that node and its neighbours.
-    fn jacobian(&self, x: &mut [f64], values: &[Value]) -> Option<Entries> {
+    /// Only the columns of the unknowns `on`.
+    fn jacobian(&self, x: &mut [f64], values: &[Value], on: &[bool]) -> Option<Entries> {
         let l = self.layout;
         let m = l.owner.len();
         if l.rows.len() != m {
@@ -309,7 +406,8 @@ impl Problem<'_> {
         let nodes = l.nodes.len();
         let base = self.residual(x, values);
         let mut entries: Vec<(usize, usize, f64)> = Vec::with_capacity(3 * m);
-        for v in 0..m {
+        self.loose.set(true);
+        for v in (0..m).filter(|&v| on[v]) {
             let node = l.owner[v];
             let (before, after) = l.spans_at(node);
             let saved = x[v];
@@ -357,14 +455,51 @@ impl Problem<'_> {
             }
             x[v] = saved;
         }
+        self.loose.set(false);
         Some(entries)
     }
 
-    /// The Newton step of Jacobian `entries` for the right-hand side `rhs`, solved
+    /// The Newton step of Jacobian `entries` for the right-hand side `rhs`, in the rows and
+    /// unknowns `on` (the others' steps zero; they must be a whole number of parts), solved
     /// tridiagonally when it is, densely otherwise.
-    fn step(&self, entries: &Entries, rhs: &[f64]) -> Option<Vec<f64>> {
+    fn step(
+        &self,
+        entries: &Entries,
+        rhs: &[f64],
+        (rows_on, on): (&[bool], &[bool]),
+    ) -> Option<Vec<f64>> {
         let l = self.layout;
         let m = l.owner.len();
+        if on.iter().any(|o| !o) {
+            let index = |on: &[bool]| {
+                let mut next = 0;
+                on.iter()
+                    .map(|&o| {
+                        next += usize::from(o);
+                        o.then_some(next - 1)
+                    })
+                    .collect::<Vec<_>>()
+            };
+            let (rows, cols) = (index(rows_on), index(on));
+            let n = cols.iter().flatten().count();
+            if rows.iter().flatten().count() != n {
+                return None;
+            }
+            let mut a = vec![0.0; n * n];
+            for &(r, c, d) in entries {
+                if let (Some(r), Some(c)) = (rows[r], cols[c]) {
+                    a[r * n + c] += d;
+                }
+            }
+            let b = rhs
+                .iter()
+                .zip(rows_on)
+                .filter(|(_, o)| **o)
+                .map(|(b, _)| *b)
+                .collect();
+            let dx = banded::dense(a, b)?;
+            return Some(cols.iter().map(|c| c.map_or(0.0, |c| dx[c])).collect());
+        }
         if l.is_tridiagonal() {
             let (mut sub, mut diag, mut sup) = (vec![0.0; m], vec![0.0; m], vec![0.0; m]);
             let mut banded_ok = true;
@@ -406,18 +541,52 @@ impl Problem<'_> {
         };
         let norm = |r: &[f64]| r.iter().map(|x| x * x).sum::<f64>().sqrt();
         let (mut values, mut r) = eval(&x)?;
-        self.reach(&values);
         // A Jacobian is kept while the steps it gives shrink the residual a hundredfold (the
         // point conditions' dense systems: each Jacobian costs two span solves an unknown,
         // a step one; a Jacobian kept through slower steps costs more steps than it saves);
         // the smooth spline's is made afresh at every step, as it always was.
         let keep = !self.layout.is_tridiagonal();
         let mut jacobian: Option<Entries> = self.start.take();
+        // An earlier answer's Jacobian: its columns at the spans that moved made afresh.
+        if let Some(j) = &mut jacobian {
+            let moved = self.moved.borrow();
+            let l = self.layout;
+            let mut on = vec![false; l.owner.len()];
+            for &s in moved.iter() {
+                for (v, &node) in l.owner.iter().enumerate() {
+                    on[v] |= node == s || node == l.end_of(s);
+                }
+            }
+            drop(moved);
+            if on.contains(&true) && on.contains(&false) {
+                if let Some(fresh) = self.jacobian(&mut x, &values, &on) {
+                    j.retain(|e| !on[e.1]);
+                    j.extend(fresh);
+                }
+            }
+        }
+        // The latest Jacobian with every column: a fresh one need only make the columns of
+        // the parts that move.
+        let mut whole = jacobian.clone();
+        let (row_part, unknown_part) = self.layout.parts();
         for _ in 0..MAX_STEPS {
-            let done = if exact {
-                self.misses(&x, &values).iter().all(|m| *m <= G2_TOLERANCE)
-            } else {
-                norm(&r) <= 1e-9
+            // With the exact conditions, a part whose rows all hold is done: its unknowns
+            // stay, so its spans are not solved again (a warm re-solve moves a part or two).
+            let misses = exact.then(|| self.misses(&x, &values));
+            let (rows_on, on) = match &misses {
+                Some(misses) => {
+                    let mut part_on = vec![false; row_part.len() + unknown_part.len()];
+                    for (m, &p) in misses.iter().zip(&row_part) {
+                        part_on[p] |= *m > G2_TOLERANCE || m.is_nan();
+                    }
+                    let on = |parts: &[usize]| parts.iter().map(|&p| part_on[p]).collect();
+                    (on(&row_part), on(&unknown_part))
+                }
+                None => (vec![true; row_part.len()], vec![true; unknown_part.len()]),
+            };
+            let done = match &misses {
+                Some(_) => !rows_on.contains(&true),
+                None => norm(&r) <= 1e-9,
             };
             if done {
                 break;
@@ -425,13 +594,25 @@ impl Problem<'_> {
             let fresh = jacobian.is_none();
             let entries = match jacobian.take() {
                 Some(j) => j,
-                None => match self.jacobian(&mut x, &values) {
-                    Some(j) => j,
-                    None => break,
-                },
+                None => {
+                    let partial = whole.is_some() && on.contains(&false);
+                    let columns = if partial {
+                        on.clone()
+                    } else {
+                        vec![true; on.len()]
+                    };
+                    let Some(mut j) = self.jacobian(&mut x, &values, &columns) else {
+                        break;
+                    };
+                    if let (true, Some(w)) = (partial, &whole) {
+                        j.extend(w.iter().filter(|e| !on[e.1]));
+                    }
+                    whole = Some(j.clone());
+                    j
+                }
             };
             let rhs: Vec<f64> = r.iter().map(|x| -x).collect();
-            let Some(dx) = self.step(&entries, &rhs) else {
+            let Some(dx) = self.step(&entries, &rhs, (&rows_on, &on)) else {
                 if fresh {
                     break;
                 }
@@ -464,12 +645,13 @@ impl Problem<'_> {
             if keep {
                 *self.last.borrow_mut() = Some(entries.clone());
             }
-            if keep && lambda == 1.0 && norm(&r2) < KEEP_WHILE * now {
+            let (n2, rate) = (norm(&r2), norm(&r2) / now);
+            if keep && lambda == 1.0 && (rate < KEEP_WHILE || n2 * rate < NEXT) {
                 jacobian = Some(entries);
             }
             (x, values, r) = (x2, v2, r2);
-            self.reach(&values);
         }
+        self.reach(&x, &values);
         let misses = self.misses(&x, &values);
         Ok((x, misses))
     }
@@ -509,11 +691,11 @@ pub(super) fn curve(
     b: Point,
     [phi_a, ta, tb]: [f64; 3],
     span: usize,
-    (memo, made): (&mut Memo, &mut Option<SegmentSolution>),
+    (memo, made, loose): (&mut Memo, &mut Option<SegmentSolution>, bool),
 ) -> Result<(Shape, (f64, f64))> {
     let c = length(b - a);
     let hint = memo.s;
-    let s_span = || unit.and_then(|u| u.s_span_near(ta, tb, c, hint));
+    let s_span = || unit.and_then(|u| u.s_span_near(ta, tb, c, (hint, loose)));
     let s_found = |memo: &mut Memo, s: SSpan| {
         memo.s = Some(s.hint());
         Ok((Shape::S(s), s.end_curvatures()))
@@ -523,8 +705,16 @@ pub(super) fn curve(
     if ta * tb < 0.0 && ta.abs() + tb.abs() < PI {
         let u = c * tb.abs().sin() / (ta.abs() + tb.abs()).sin();
         let t = [a, a + Vec2::from_angle(phi_a) * u, b];
-        let solved =
-            SegmentSolution::near(t, alpha, memo.mu).and_then(|s| Ok((s.end_curvatures()?, s)));
+        // For a difference quotient: one evaluation at the last μ, corrected to first order.
+        if let Some(k) = memo
+            .mu
+            .filter(|_| loose)
+            .and_then(|mu| one_step(t, alpha, mu))
+        {
+            return Ok((Shape::Plain(t), k));
+        }
+        let solved = SegmentSolution::near(t, alpha, (memo.mu, loose))
+            .and_then(|s| Ok((s.end_curvatures()?, s)));
         return match solved {
             Ok((k, s)) => {
                 memo.mu = Some(s.mu());
@@ -557,6 +747,18 @@ pub(super) fn curve(
     }
 }
 
+/// The end curvatures of the segment on `t` at slope `alpha` from one evaluation at μ =
+/// `mu`, corrected to first order in its miss, when that correction is below [`ONE_STEP`].
+fn one_step(t: [Point; 3], alpha: f64, mu: f64) -> Option<(f64, f64)> {
+    let s = SegmentSolution::at_mu(t, alpha, mu)?;
+    let [c0, c1] = s.log_corrections()?;
+    if c0.abs().max(c1.abs()) > ONE_STEP {
+        return None;
+    }
+    let (k0, k1) = s.end_curvatures().ok()?;
+    Some((k0 * c0.exp(), k1 * c1.exp()))
+}
+
 /// The segments of a span's shape from `a` to `b` (none for a line), each half of an S
 /// stopping a share `hair` of its length short of the inflection.
 pub(super) fn segments_of(
@@ -582,6 +784,8 @@ pub(super) struct Warm<'a> {
     pub(super) jacobian: &'a Entries,
     pub(super) memo: &'a [Memo],
     pub(super) points: &'a [Point],
+    /// Its spans (empty unless at the same slope).
+    pub(super) reached: &'a [Reached],
 }
 
 /// An earlier answer's unknowns `x` (for the points `old`) made a start for `points`: a free
@@ -641,6 +845,7 @@ pub(super) fn solve(
         jacobian,
         memo,
         points: old,
+        reached,
     }) = warm
     {
         let placed = if before {
@@ -665,6 +870,7 @@ pub(super) fn solve(
             let p = Problem::new(points, &layout, alpha);
             *p.start.borrow_mut() = (!jacobian.is_empty()).then(|| jacobian.clone());
             p.seed(memo);
+            p.seed_spans(reached);
             if let Ok((x, misses)) = p.newton(x, &vec![0.0; layout.rows.len()]) {
                 if converged(&misses) {
                     let (jacobian, memo) = (p.last.take(), p.memos());

@@ -359,6 +359,40 @@ impl SSpan {
         (self.sigma, self.angle)
     }
 
+    /// For a whole S on a chord of length `chord`: d ln|κ| at its start and at its end with
+    /// respect to its end tangents' angles from the chord (ta, tb) and to ln `chord`, and
+    /// dA with respect to ta and tb, exactly; `None` for a half, or where they are not
+    /// numbers.
+    ///
+    /// With S = F(θ₁) + F(θ₂) = (chord/scale) e^{iA}, θ₁ = σ ta + A, θ₂ = σ tb + A and
+    /// fᵢ = F′(θᵢ)/S, the equation arg S = A moves A by −σ Im fᵢ/(Im f₁ + Im f₂ − 1) per
+    /// unit of its angle, ln|S| by Re f₁ dθ₁ + Re f₂ dθ₂, and ln|κᵢ| = (1 − a) ln(θᵢ/a) +
+    /// ln|S| − ln chord.
+    pub(super) fn slopes(&self, chord: f64) -> Option<([[f64; 3]; 2], [f64; 2])> {
+        if self.is_half() {
+            return None;
+        }
+        let [t1, t2] = self.theta;
+        let s = Complex::cis(self.angle).scale(chord / self.scale);
+        let f1 = self.unit.chord_derivative(t1).div(s);
+        let f2 = self.unit.chord_derivative(t2).div(s);
+        let g_a = f1.im + f2.im - 1.0;
+        let da = [-self.sigma * f1.im / g_a, -self.sigma * f2.im / g_a];
+        let (dt1, dt2) = ([self.sigma + da[0], da[1]], [da[0], self.sigma + da[1]]);
+        let dln_s = [
+            f1.re * dt1[0] + f2.re * dt2[0],
+            f1.re * dt1[1] + f2.re * dt2[1],
+        ];
+        let k = 1.0 - self.unit.a;
+        let row = |dt: [f64; 2], t: f64| [k * dt[0] / t + dln_s[0], k * dt[1] / t + dln_s[1], -1.0];
+        let out = [row(dt1, t1), row(dt2, t2)];
+        out.iter()
+            .flatten()
+            .chain(&da)
+            .all(|d| d.is_finite())
+            .then_some((out, da))
+    }
+
     /// The signed curvature at its start and end.
     pub(super) fn end_curvatures(&self) -> (f64, f64) {
         let [t1, t2] = self.theta;
@@ -625,6 +659,46 @@ mod tests {
                     assert!(miss <= 1e-14 * 2.0, "{alpha} {small} {flip}: {miss:e}");
                     let gap = (first.last_point() - last.first_point()).hypot();
                     assert!(gap <= 1e-11, "{gap}");
+                }
+            }
+        }
+    }
+
+    /// The exact slopes of an S (of ln|κ| at its ends and of A) agree with central
+    /// differences of S spans solved afresh.
+    #[test]
+    fn s_slopes_agree_with_differences() {
+        let h = 1e-6;
+        for alpha in [-0.5, -1.0, -2.0] {
+            let unit = Unit::new(alpha).unwrap();
+            for (ta, tb) in [(0.4, 0.3), (-0.2, -0.7), (0.05, 0.9), (1.2, 0.2)] {
+                let c = 1.7;
+                let s = unit.s_span(ta, tb, c).expect("an S");
+                let (exact, da) = s.slopes(c).expect("slopes");
+                let at = |ta: f64, tb: f64, c: f64| {
+                    let s = unit.s_span(ta, tb, c).expect("an S");
+                    let (k0, k1) = s.end_curvatures();
+                    [k0.abs().ln(), k1.abs().ln(), s.angle]
+                };
+                let moved = [
+                    (at(ta + h, tb, c), at(ta - h, tb, c)),
+                    (at(ta, tb + h, c), at(ta, tb - h, c)),
+                    (at(ta, tb, c * h.exp()), at(ta, tb, c * (-h).exp())),
+                ];
+                for (var, (up, down)) in moved.iter().enumerate() {
+                    let want = [
+                        exact[0][var],
+                        exact[1][var],
+                        da.get(var).copied().unwrap_or(0.0),
+                    ];
+                    for i in 0..3 {
+                        let diff = (up[i] - down[i]) / (2.0 * h);
+                        assert!(
+                            (diff - want[i]).abs() <= 1e-6 * diff.abs().max(1.0),
+                            "α {alpha} ({ta}, {tb}) var {var} {i}: {diff} {}",
+                            want[i]
+                        );
+                    }
                 }
             }
         }

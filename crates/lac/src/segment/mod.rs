@@ -352,6 +352,62 @@ impl SegmentSolution {
         out.iter().all(|d| d.is_finite()).then_some(out)
     }
 
+    /// d ln|κ0| and d ln|κ1| with respect to the triangle's angles at P0 and at P2 (between
+    /// each leg and the chord) and to ln|P2 − P0|, exactly, from the solution's own
+    /// derivatives: `None` for α ≥ 1, next to the circular arc of equal legs, or where they
+    /// are not numbers.
+    ///
+    /// The piece runs from its reference point (ρ = 1) at the end it was solved from, whose
+    /// angle is θe, over θd = θe + θo. At fixed μ, Λ = μ·(1 − e^{−(1−α)μ})/((1−α)μ θd) falls as
+    /// 1/θd and the far end keeps ln ρ = μ, so ∂ln P/∂θd = ρ_far e^{iθd}/P − (Λ/θd) P′/P
+    /// =: R, with P′/P = (d ln|P|/dμ + i dφ/dμ)/(dΛ/dμ). The chord-angle equation φ = θe
+    /// then moves μ by (dθe − Im R dθd)/(dφ/dμ), and ln|κ| = ln κ_std + ln|P| − ln|P2 − P0|
+    /// with ln κ_std 0 at the reference end and −μ at the far one, ln|P| by
+    /// (d ln|P|/dμ) dμ + Re R dθd.
+    pub(crate) fn angle_slopes(&self) -> Option<[[f64; 3]; 2]> {
+        Some(self.slopes()?.0)
+    }
+
+    /// dμ with respect to the triangle's angles at P0 and at P2 (see
+    /// [`SegmentSolution::angle_slopes`]): a first guess of μ for a nearby triangle.
+    pub(crate) fn mu_slopes(&self) -> Option<[f64; 2]> {
+        Some(self.slopes()?.1)
+    }
+
+    /// [`SegmentSolution::angle_slopes`] and [`SegmentSolution::mu_slopes`].
+    fn slopes(&self) -> Option<([[f64; 3]; 2], [f64; 2])> {
+        let sens = self.solution.sensitivity?;
+        let turning = self.tri.turning;
+        if self.alpha >= 1.0 || self.theta_e - 0.5 * turning <= 1e-6 * turning {
+            return None;
+        }
+        let piece = &self.solution.piece;
+        let (mu, lambda) = (self.solution.mu, piece.form.lambda);
+        let slope = 1.0 / sens.dmu_dtheta_e;
+        let q = sens.dln_chord_dmu;
+        // dΛ/dμ = e^{−(1−α)μ}/θd.
+        let dlambda_dmu = (-(1.0 - self.alpha) * mu).exp() / turning;
+        let p_ratio = Complex::new(q, slope).scale(1.0 / dlambda_dmu);
+        let far = Complex::cis(piece.end.theta).scale(piece.end.ln_rho.exp());
+        let r = far.div(piece.chord) - p_ratio.scale(lambda / turning);
+        // d/dθs (the end solved from) and d/dθo (the other), θd = θs + θo.
+        let dmu = [(1.0 - r.im) / slope, -r.im / slope];
+        let dln_p = [q * dmu[0] + r.re, q * dmu[1] + r.re];
+        let solved = [dln_p[0], dln_p[1], -1.0];
+        let other = [dln_p[0] - dmu[0], dln_p[1] - dmu[1], -1.0];
+        // In the triangle's order: angles at (P0, P2), then ln|P2 − P0|.
+        let by_ends = |d: [f64; 3]| if self.reversed { [d[1], d[0], d[2]] } else { d };
+        let (solved, other) = (by_ends(solved), by_ends(other));
+        let out = if self.reversed {
+            [other, solved]
+        } else {
+            [solved, other]
+        };
+        let dmu = by_ends([dmu[0], dmu[1], 0.0]);
+        let dmu = [dmu[0], dmu[1]];
+        (out.iter().flatten().chain(&dmu).all(|d| d.is_finite())).then_some((out, dmu))
+    }
+
     /// The segment, checked.
     pub(crate) fn into_segment(self) -> Result<Segment> {
         let SegmentSolution {
@@ -781,5 +837,83 @@ impl Segment {
         let scale = self.scale;
         -self.turn.sign() * self.dir() * self.form.lambda * (-(1.0 + self.alpha) * ln_rho).exp()
             / (scale * scale)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The control points of the triangle on a chord of length `c` whose legs make the
+    /// angles `t0` at P0 and `t2` at P2 with it.
+    fn triangle(t0: f64, t2: f64, c: f64) -> [Point; 3] {
+        let u = c * t2.sin() / (t0 + t2).sin();
+        [
+            Point::ORIGIN,
+            Point::new(u * t0.cos(), u * t0.sin()),
+            Point::new(c, 0.0),
+        ]
+    }
+
+    /// ln|κ0| and ln|κ1| of the solved segment.
+    fn ln_kappa(p: [Point; 3], alpha: f64) -> [f64; 2] {
+        let (k0, k1) = SegmentSolution::new(p, alpha)
+            .unwrap()
+            .end_curvatures()
+            .unwrap();
+        [k0.abs().ln(), k1.abs().ln()]
+    }
+
+    /// The exact slopes (of ln|κ| and μ) by the triangle's angles and chord agree with
+    /// central differences of solved segments (h = 1e-5: their error about 1e-10), either leg solved from.
+    #[test]
+    fn angle_slopes_agree_with_differences() {
+        let h = 1e-5;
+        let mut checked = 0;
+        for alpha in [-1.0, -0.5, 0.0, 0.5] {
+            for (t0, t2, c) in [
+                (0.3, 0.5, 1.0),
+                (0.5, 0.3, 2.0),
+                (0.25, 0.8, 0.7),
+                (1.1, 0.4, 1.3),
+                (0.2, 0.21, 1.0),
+            ] {
+                // (Not every triangle is drawable at every α.)
+                let Ok(s) = SegmentSolution::new(triangle(t0, t2, c), alpha) else {
+                    continue;
+                };
+                let exact = s.angle_slopes().expect("slopes");
+                checked += 1;
+                let moved = [
+                    (triangle(t0 + h, t2, c), triangle(t0 - h, t2, c), h),
+                    (triangle(t0, t2 + h, c), triangle(t0, t2 - h, c), h),
+                    (
+                        triangle(t0, t2, c * h.exp()),
+                        triangle(t0, t2, c * (-h).exp()),
+                        h,
+                    ),
+                ];
+                let dmu = s.mu_slopes().expect("slopes");
+                for (var, (plus, minus, step)) in moved.into_iter().enumerate() {
+                    let mu = |p| SegmentSolution::new(p, alpha).unwrap().mu();
+                    let diff = (mu(plus) - mu(minus)) / (2.0 * step);
+                    let want = dmu.get(var).copied().unwrap_or(0.0);
+                    assert!(
+                        (diff - want).abs() <= 1e-7 * diff.abs().max(1.0),
+                        "α {alpha} ({t0}, {t2}, {c}) dμ var {var}: {diff} {want}"
+                    );
+                    let (up, down) = (ln_kappa(plus, alpha), ln_kappa(minus, alpha));
+                    for end in 0..2 {
+                        let diff = (up[end] - down[end]) / (2.0 * step);
+                        assert!(
+                            (diff - exact[end][var]).abs() <= 1e-7 * diff.abs().max(1.0),
+                            "α {alpha} ({t0}, {t2}, {c}) end {end} var {var}: {diff} {}",
+                            exact[end][var]
+                        );
+                    }
+                }
+            }
+        }
+        assert!(checked >= 16, "{checked} of 20 triangles drawable");
     }
 }

@@ -106,6 +106,34 @@ pub(super) struct Key {
     ends: [f64; 6],
 }
 
+impl Key {
+    /// Its chord's length and its end tangents' angles from the chord.
+    fn frame(&self) -> (f64, f64, f64) {
+        let [ax, ay, bx, by, phi_a, phi_b] = self.ends;
+        let chord = Point::new(bx, by) - Point::new(ax, ay);
+        let psi = dir(chord);
+        (length(chord), wrap(phi_a - psi), wrap(phi_b - psi))
+    }
+
+    /// The change of a plain segment's triangle (its angles at its ends between leg and
+    /// chord, and ln of its chord) from this span's to one with chord `c` and end tangents
+    /// `ta`, `tb` from it, or `None` unless both are plain segments turning the same way.
+    fn plain_step(&self, c: f64, ta: f64, tb: f64) -> Option<[f64; 3]> {
+        let (c0, ta0, tb0) = self.frame();
+        (ta * ta0 > 0.0 && tb * tb0 > 0.0 && ta * tb < 0.0)
+            .then(|| [ta.abs() - ta0.abs(), tb.abs() - tb0.abs(), (c / c0).ln()])
+    }
+
+    /// The change of an S span's end tangents' angles from its chord, and of ln of its
+    /// chord, from this span's to one with chord `c` and end tangents `ta`, `tb`, or `None`
+    /// where one would be tried as a plain segment and the other not.
+    fn s_step(&self, c: f64, ta: f64, tb: f64) -> Option<[f64; 3]> {
+        let (c0, ta0, tb0) = self.frame();
+        let plain = |ta: f64, tb: f64| ta * tb < 0.0 && ta.abs() + tb.abs() < PI;
+        (plain(ta, tb) == plain(ta0, tb0)).then(|| [ta - ta0, tb - tb0, (c / c0).ln()])
+    }
+}
+
 /// A span at an answer, or as last evaluated: what it was evaluated for, its value and, for
 /// a plain segment, its solution.
 #[derive(Clone)]
@@ -272,8 +300,17 @@ impl Problem<'_> {
             Kind::HalfToEnd => half(tb, true),
             Kind::HalfFromStart => half(ta, false),
             Kind::Curve => {
+                if let Some(v) = self
+                    .loose
+                    .get()
+                    .then(|| self.linear(k, c, ta, tb))
+                    .flatten()
+                {
+                    return Ok(v);
+                }
                 let phi_a = l.tangent(x, ka, true);
-                let mut m = memo;
+                // The search starts where the last evaluation's slopes put it, if they can.
+                let mut m = self.predicted(k, memo, c, ta, tb);
                 let mut made = None;
                 let (shape, kappa) = curve(
                     self.alpha,
@@ -294,6 +331,76 @@ impl Problem<'_> {
                     other: f64::NAN,
                 })
             }
+        }
+    }
+
+    /// Plain span `k` for a chord `c` and end tangents `ta`, `tb` a difference quotient's
+    /// step from those of its last full evaluation: its end curvatures moved to first order
+    /// by the exact slopes of that evaluation's segment (no segment solved), or `None`
+    /// where it has none or the step leaves a plain segment.
+    fn linear(&self, k: usize, c: f64, ta: f64, tb: f64) -> Option<Value> {
+        let cache = self.cache.borrow();
+        let last = cache.get(k)?.as_ref()?;
+        let (slopes, d) = match (&last.value.shape, &last.made) {
+            (Shape::Plain(_), Some(made)) => {
+                (made.angle_slopes()?, last.key.plain_step(c, ta, tb)?)
+            }
+            (Shape::S(s), _) => {
+                let (c0, _, _) = last.key.frame();
+                (s.slopes(c0)?.0, last.key.s_step(c, ta, tb)?)
+            }
+            _ => return None,
+        };
+        let moved =
+            |kappa: f64, s: [f64; 3]| kappa * (s[0] * d[0] + s[1] * d[1] + s[2] * d[2]).exp();
+        let kappa = (
+            moved(last.value.kappa.0, slopes[0]),
+            moved(last.value.kappa.1, slopes[1]),
+        );
+        (kappa.0.is_finite() && kappa.1.is_finite()).then_some(Value {
+            // (A difference quotient reads the curvatures only.)
+            shape: last.value.shape,
+            kappa,
+            other: f64::NAN,
+        })
+    }
+
+    /// Span `k`'s memo for chord `c` and end tangents `ta`, `tb`: a plain segment's μ, an
+    /// S's A, moved to first order from its last full evaluation where it can be.
+    fn predicted(&self, k: usize, memo: Memo, c: f64, ta: f64, tb: f64) -> Memo {
+        let cache = self.cache.borrow();
+        let Some(last) = cache.get(k).and_then(|c| c.as_ref()) else {
+            return memo;
+        };
+        match (&last.value.shape, &last.made) {
+            (Shape::Plain(_), Some(made)) => {
+                let mu = made
+                    .mu_slopes()
+                    .zip(last.key.plain_step(c, ta, tb))
+                    .map(|(slopes, d)| made.mu() + slopes[0] * d[0] + slopes[1] * d[1]);
+                match mu.filter(|mu| *mu > 0.0 && mu.is_finite()) {
+                    Some(mu) => Memo {
+                        mu: Some(mu),
+                        ..memo
+                    },
+                    None => memo,
+                }
+            }
+            (Shape::S(s), _) => {
+                let (c0, _, _) = last.key.frame();
+                let a = s
+                    .slopes(c0)
+                    .zip(last.key.s_step(c, ta, tb))
+                    .map(|((_, da), d)| {
+                        let (sigma, a) = s.hint();
+                        (sigma, a + da[0] * d[0] + da[1] * d[1])
+                    });
+                match a.filter(|a| a.1.is_finite()) {
+                    Some(a) => Memo { s: Some(a), ..memo },
+                    None => memo,
+                }
+            }
+            _ => memo,
         }
     }
 

@@ -20,7 +20,7 @@ use crate::foundation::numeric::length;
 use crate::segment::{Segment, SegmentSolution};
 
 /// A kept Jacobian's steps must shrink the residual by this factor or it is made afresh.
-const KEEP_WHILE: f64 = 0.001;
+const KEEP_WHILE: f64 = 0.0001;
 /// A residual norm at rounding: below it a step that does not lower it ends the descent.
 const RESIDUAL_FLOOR: f64 = 1e-12;
 /// Most Newton steps.

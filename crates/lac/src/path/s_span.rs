@@ -393,6 +393,29 @@ impl SSpan {
             .then_some((out, da))
     }
 
+    /// For a half S (see [`Unit::half`]) on a chord of length `chord`: with respect to the
+    /// angle from the chord of its tangent at the inflection (its size), the turning of its
+    /// curved end's half, ln|κ| there (which falls by 1 per unit of ln `chord` besides), and
+    /// the angle from the chord of its tangent there; `None` for a whole S.
+    ///
+    /// The turning θ solves arg F(θ) = that angle, so moves by 1/Im(F′/F); ln|κ| =
+    /// (1 − a) ln(θ/a) + ln|F(θ)| − ln chord, and the other angle is σ(θ − the angle).
+    pub(super) fn half_slopes(&self, chord: f64) -> Option<[f64; 3]> {
+        if !self.is_half() {
+            return None;
+        }
+        let x = self.theta[0].max(self.theta[1]);
+        let f = Complex::cis(self.angle).scale(chord / self.scale);
+        let r = self.unit.chord_derivative(x).div(f);
+        let dx = 1.0 / r.im;
+        let out = [
+            dx,
+            ((1.0 - self.unit.a) / x + r.re) * dx,
+            self.sigma * (dx - 1.0),
+        ];
+        out.iter().all(|d| d.is_finite()).then_some(out)
+    }
+
     /// The signed curvature at its start and end.
     pub(super) fn end_curvatures(&self) -> (f64, f64) {
         let [t1, t2] = self.theta;
@@ -702,6 +725,45 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The exact slopes of a half S agree with central differences of halves solved afresh.
+    #[test]
+    fn half_slopes_agree_with_differences() {
+        let h = 1e-6;
+        let mut checked = 0;
+        for alpha in [-0.5, -1.0, -2.0] {
+            let unit = Unit::new(alpha).unwrap();
+            for (t, at_end) in [(0.3, true), (-0.5, false), (0.05, true), (-0.9, true)] {
+                let c = 1.3;
+                let at = |t: f64| {
+                    let (s, other) = unit.half(t, c, at_end, None).expect("a half");
+                    let (k0, k1) = s.end_curvatures();
+                    [
+                        s.theta[0].max(s.theta[1]),
+                        k0.abs().max(k1.abs()).ln(),
+                        other,
+                    ]
+                };
+                // (Not every angle has a half that turns by at most π.)
+                let Some((s, _)) = unit.half(t, c, at_end, None) else {
+                    continue;
+                };
+                let exact = s.half_slopes(c).expect("slopes");
+                checked += 1;
+                // The size of the angle grows with t for t > 0, falls for t < 0.
+                let (up, down) = (at(t + h), at(t - h));
+                for i in 0..3 {
+                    let diff = t.signum() * (up[i] - down[i]) / (2.0 * h);
+                    assert!(
+                        (diff - exact[i]).abs() <= 1e-6 * diff.abs().max(1.0),
+                        "α {alpha} {t} {i}: {diff} {}",
+                        exact[i]
+                    );
+                }
+            }
+        }
+        assert!(checked >= 9, "{checked} of 12 halves");
     }
 
     /// Started from a nearby S (as a spline's Newton iteration does), the search finds the

@@ -107,6 +107,25 @@ pub(super) struct Key {
 }
 
 impl Key {
+    /// Its chord's direction.
+    fn psi(&self) -> f64 {
+        let [ax, ay, bx, by, _, _] = self.ends;
+        dir(Point::new(bx, by) - Point::new(ax, ay))
+    }
+
+    /// The change of a half S's size (the angle from the chord of its tangent at the
+    /// inflection), and of ln of its chord, from this span's to one with chord `c` and end
+    /// tangents `ta`, `tb`, or `None` unless it is a half S and that angle keeps its side.
+    fn half_step(&self, c: f64, ta: f64, tb: f64) -> Option<[f64; 2]> {
+        let (c0, ta0, tb0) = self.frame();
+        let (t, t0) = match self.kind {
+            Kind::HalfToEnd => (tb, tb0),
+            Kind::HalfFromStart => (ta, ta0),
+            _ => return None,
+        };
+        (t * t0 > 0.0).then(|| [t.abs() - t0.abs(), (c / c0).ln()])
+    }
+
     /// Its chord's length and its end tangents' angles from the chord.
     fn frame(&self) -> (f64, f64, f64) {
         let [ax, ay, bx, by, phi_a, phi_b] = self.ends;
@@ -277,9 +296,18 @@ impl Problem<'_> {
                     miss: f64::NAN,
                 },
             };
+            if let Some(v) = self
+                .loose
+                .get()
+                .then(|| self.linear(k, c, (ta, tb), psi))
+                .flatten()
+            {
+                return Ok(v);
+            }
+            let hint = self.predicted(k, memo, c, ta, tb).half;
             let (s, other) = self
                 .unit
-                .and_then(|u| u.half(t, c, at_end, memo.half))
+                .and_then(|u| u.half(t, c, at_end, hint))
                 .ok_or_else(fail)?;
             remember(Memo {
                 half: Some(s.theta[0].max(s.theta[1])),
@@ -303,7 +331,7 @@ impl Problem<'_> {
                 if let Some(v) = self
                     .loose
                     .get()
-                    .then(|| self.linear(k, c, ta, tb))
+                    .then(|| self.linear(k, c, (ta, tb), psi))
                     .flatten()
                 {
                     return Ok(v);
@@ -334,13 +362,32 @@ impl Problem<'_> {
         }
     }
 
-    /// Plain span `k` for a chord `c` and end tangents `ta`, `tb` a difference quotient's
-    /// step from those of its last full evaluation: its end curvatures moved to first order
-    /// by the exact slopes of that evaluation's segment (no segment solved), or `None`
-    /// where it has none or the step leaves a plain segment.
-    fn linear(&self, k: usize, c: f64, ta: f64, tb: f64) -> Option<Value> {
+    /// Span `k` for a chord `c` of direction `psi` and end tangents `ta`, `tb` a difference
+    /// quotient's step from those of its last full evaluation: its end curvatures (and a
+    /// half S's other tangent) moved to first order by the exact slopes of that evaluation's
+    /// segment, S or half S (none solved), or `None` where it has none or the step leaves
+    /// its kind of shape.
+    fn linear(&self, k: usize, c: f64, (ta, tb): (f64, f64), psi: f64) -> Option<Value> {
         let cache = self.cache.borrow();
         let last = cache.get(k)?.as_ref()?;
+        if let (Shape::S(s), Some([d_angle, dlnc])) =
+            (&last.value.shape, last.key.half_step(c, ta, tb))
+        {
+            let (c0, _, _) = last.key.frame();
+            let [_, dln_kappa, d_other] = s.half_slopes(c0)?;
+            let f = (dln_kappa * d_angle - dlnc).exp();
+            let kappa = (last.value.kappa.0 * f, last.value.kappa.1 * f);
+            // Its other tangent, from the chord as it was, moved, and on the chord as it is.
+            let other = psi + (last.value.other - last.key.psi()) + d_other * d_angle;
+            return [kappa.0, kappa.1, other]
+                .iter()
+                .all(|v| v.is_finite())
+                .then_some(Value {
+                    shape: last.value.shape,
+                    kappa,
+                    other,
+                });
+        }
         let (slopes, d) = match (&last.value.shape, &last.made) {
             (Shape::Plain(_), Some(made)) => {
                 (made.angle_slopes()?, last.key.plain_step(c, ta, tb)?)
@@ -381,6 +428,20 @@ impl Problem<'_> {
                 match mu.filter(|mu| *mu > 0.0 && mu.is_finite()) {
                     Some(mu) => Memo {
                         mu: Some(mu),
+                        ..memo
+                    },
+                    None => memo,
+                }
+            }
+            (Shape::S(s), _) if s.is_half() => {
+                let (c0, _, _) = last.key.frame();
+                let theta = s
+                    .half_slopes(c0)
+                    .zip(last.key.half_step(c, ta, tb))
+                    .map(|([dx, _, _], [d_angle, _])| s.theta[0].max(s.theta[1]) + dx * d_angle);
+                match theta.filter(|t| *t > 0.0 && t.is_finite()) {
+                    Some(t) => Memo {
+                        half: Some(t),
                         ..memo
                     },
                     None => memo,

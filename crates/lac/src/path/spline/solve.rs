@@ -5,7 +5,7 @@
 //! The relaxed problem first (with the continuation in α of the smooth spline), then the
 //! full one from it.
 
-use std::cell::{Cell, RefCell};
+use std::cell::{Cell, OnceCell, RefCell};
 use std::f64::consts::PI;
 
 use kurbo::{Point, Vec2};
@@ -106,50 +106,112 @@ pub(super) struct Key {
     ends: [f64; 6],
 }
 
-impl Key {
-    /// Its chord's direction.
-    fn psi(&self) -> f64 {
-        let [ax, ay, bx, by, _, _] = self.ends;
-        dir(Point::new(bx, by) - Point::new(ax, ay))
-    }
+/// What first-order moves of a span need from one evaluation of it: its chord's length and
+/// its end tangents' angles from the chord, and its shape's exact slopes (made once per
+/// evaluation, when first asked).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Slopes {
+    chord: f64,
+    psi: f64,
+    ta: f64,
+    tb: f64,
+    of: Of,
+}
 
-    /// The change of a half S's size (the angle from the chord of its tangent at the
-    /// inflection), and of ln of its chord, from this span's to one with chord `c` and end
-    /// tangents `ta`, `tb`, or `None` unless it is a half S and that angle keeps its side.
-    fn half_step(&self, c: f64, ta: f64, tb: f64) -> Option<[f64; 2]> {
-        let (c0, ta0, tb0) = self.frame();
-        let (t, t0) = match self.kind {
-            Kind::HalfToEnd => (tb, tb0),
-            Kind::HalfFromStart => (ta, ta0),
-            _ => return None,
+/// A shape's exact slopes, with where it was.
+#[derive(Clone, Copy, Debug)]
+enum Of {
+    /// A plain segment: d ln|κ| at its ends by its triangle's angles at its ends and ln
+    /// chord, dμ by the angles, and μ.
+    Plain {
+        kappa: [[f64; 3]; 2],
+        mu: [f64; 2],
+        at: f64,
+    },
+    /// An S: d ln|κ| by (ta, tb, ln chord), dA by (ta, tb), and its mirror image and A.
+    S {
+        kappa: [[f64; 3]; 2],
+        a: [f64; 2],
+        at: (f64, f64),
+    },
+    /// A half S: its turning, ln|κ| at its curved end and its other tangent's angle by its
+    /// size (see [`SSpan::half_slopes`]), and its turning.
+    Half { slopes: [f64; 3], at: f64 },
+    /// None to be had.
+    Nothing,
+}
+
+impl Slopes {
+    /// The slopes of span `value` (and `made`, a plain segment's solution), evaluated for
+    /// `key`.
+    fn of(key: &Key, value: &Value, made: Option<&SegmentSolution>) -> Slopes {
+        let [ax, ay, bx, by, phi_a, phi_b] = key.ends;
+        let d = Point::new(bx, by) - Point::new(ax, ay);
+        let (chord, psi) = (length(d), dir(d));
+        let of = match (&value.shape, made) {
+            (Shape::Plain(_), Some(m)) => match (m.angle_slopes(), m.mu_slopes()) {
+                (Some(kappa), Some(mu)) => Of::Plain {
+                    kappa,
+                    mu,
+                    at: m.mu(),
+                },
+                _ => Of::Nothing,
+            },
+            (Shape::S(s), _) if s.is_half() => match s.half_slopes(chord) {
+                Some(slopes) => Of::Half {
+                    slopes,
+                    at: s.theta[0].max(s.theta[1]),
+                },
+                None => Of::Nothing,
+            },
+            (Shape::S(s), _) => match s.slopes(chord) {
+                Some((kappa, a)) => Of::S {
+                    kappa,
+                    a,
+                    at: s.hint(),
+                },
+                None => Of::Nothing,
+            },
+            _ => Of::Nothing,
         };
-        (t * t0 > 0.0).then(|| [t.abs() - t0.abs(), (c / c0).ln()])
-    }
-
-    /// Its chord's length and its end tangents' angles from the chord.
-    fn frame(&self) -> (f64, f64, f64) {
-        let [ax, ay, bx, by, phi_a, phi_b] = self.ends;
-        let chord = Point::new(bx, by) - Point::new(ax, ay);
-        let psi = dir(chord);
-        (length(chord), wrap(phi_a - psi), wrap(phi_b - psi))
+        Slopes {
+            chord,
+            psi,
+            ta: wrap(phi_a - psi),
+            tb: wrap(phi_b - psi),
+            of,
+        }
     }
 
     /// The change of a plain segment's triangle (its angles at its ends between leg and
     /// chord, and ln of its chord) from this span's to one with chord `c` and end tangents
     /// `ta`, `tb` from it, or `None` unless both are plain segments turning the same way.
     fn plain_step(&self, c: f64, ta: f64, tb: f64) -> Option<[f64; 3]> {
-        let (c0, ta0, tb0) = self.frame();
-        (ta * ta0 > 0.0 && tb * tb0 > 0.0 && ta * tb < 0.0)
-            .then(|| [ta.abs() - ta0.abs(), tb.abs() - tb0.abs(), (c / c0).ln()])
+        let (ta0, tb0) = (self.ta, self.tb);
+        (ta * ta0 > 0.0 && tb * tb0 > 0.0 && ta * tb < 0.0).then(|| {
+            [
+                ta.abs() - ta0.abs(),
+                tb.abs() - tb0.abs(),
+                (c / self.chord).ln(),
+            ]
+        })
     }
 
     /// The change of an S span's end tangents' angles from its chord, and of ln of its
-    /// chord, from this span's to one with chord `c` and end tangents `ta`, `tb`, or `None`
-    /// where one would be tried as a plain segment and the other not.
+    /// chord, to one with chord `c` and end tangents `ta`, `tb`, or `None` where one would
+    /// be tried as a plain segment and the other not.
     fn s_step(&self, c: f64, ta: f64, tb: f64) -> Option<[f64; 3]> {
-        let (c0, ta0, tb0) = self.frame();
         let plain = |ta: f64, tb: f64| ta * tb < 0.0 && ta.abs() + tb.abs() < PI;
-        (plain(ta, tb) == plain(ta0, tb0)).then(|| [ta - ta0, tb - tb0, (c / c0).ln()])
+        (plain(ta, tb) == plain(self.ta, self.tb))
+            .then(|| [ta - self.ta, tb - self.tb, (c / self.chord).ln()])
+    }
+
+    /// The change of a half S's size (the angle from the chord of its tangent at the
+    /// inflection, at its end when `at_end`), and of ln of its chord, to one with chord `c`
+    /// and that angle `t`, or `None` unless the angle keeps its side.
+    fn half_step(&self, c: f64, t: f64, at_end: bool) -> Option<[f64; 2]> {
+        let t0 = if at_end { self.tb } else { self.ta };
+        (t * t0 > 0.0).then(|| [t.abs() - t0.abs(), (c / self.chord).ln()])
     }
 }
 
@@ -160,6 +222,24 @@ pub(super) struct Reached {
     key: Key,
     pub(super) value: Value,
     pub(super) made: Option<SegmentSolution>,
+    slopes: OnceCell<Slopes>,
+}
+
+impl Reached {
+    fn new(key: Key, value: Value, made: Option<SegmentSolution>) -> Reached {
+        Reached {
+            key,
+            value,
+            made,
+            slopes: OnceCell::new(),
+        }
+    }
+
+    /// Its slopes, made when first asked.
+    fn slopes(&self) -> &Slopes {
+        self.slopes
+            .get_or_init(|| Slopes::of(&self.key, &self.value, self.made.as_ref()))
+    }
 }
 
 impl std::fmt::Debug for Reached {
@@ -205,14 +285,13 @@ impl Problem<'_> {
             .enumerate()
             .map(|(k, (v, c))| {
                 let key = self.key(x, k);
-                Reached {
+                Reached::new(
                     key,
-                    value: *v,
-                    made: c
-                        .as_ref()
+                    *v,
+                    c.as_ref()
                         .filter(|c| c.key == key)
                         .and_then(|c| c.made.clone()),
-                }
+                )
             })
             .collect();
     }
@@ -370,98 +449,84 @@ impl Problem<'_> {
     fn linear(&self, k: usize, c: f64, (ta, tb): (f64, f64), psi: f64) -> Option<Value> {
         let cache = self.cache.borrow();
         let last = cache.get(k)?.as_ref()?;
-        if let (Shape::S(s), Some([d_angle, dlnc])) =
-            (&last.value.shape, last.key.half_step(c, ta, tb))
-        {
-            let (c0, _, _) = last.key.frame();
-            let [_, dln_kappa, d_other] = s.half_slopes(c0)?;
-            let f = (dln_kappa * d_angle - dlnc).exp();
-            let kappa = (last.value.kappa.0 * f, last.value.kappa.1 * f);
-            // Its other tangent, from the chord as it was, moved, and on the chord as it is.
-            let other = psi + (last.value.other - last.key.psi()) + d_other * d_angle;
-            return [kappa.0, kappa.1, other]
-                .iter()
-                .all(|v| v.is_finite())
-                .then_some(Value {
-                    shape: last.value.shape,
-                    kappa,
-                    other,
-                });
-        }
-        let (slopes, d) = match (&last.value.shape, &last.made) {
-            (Shape::Plain(_), Some(made)) => {
-                (made.angle_slopes()?, last.key.plain_step(c, ta, tb)?)
+        let slopes = last.slopes();
+        let kind = self.layout.spans[k].kind;
+        let (k0, k1) = last.value.kappa;
+        let (kappa, other) = match slopes.of {
+            Of::Half {
+                slopes: [_, dln_kappa, d_other],
+                ..
+            } => {
+                let at_end = kind == Kind::HalfToEnd;
+                let t = if at_end { tb } else { ta };
+                let [d_angle, dlnc] = slopes.half_step(c, t, at_end)?;
+                let f = (dln_kappa * d_angle - dlnc).exp();
+                // Its other tangent: from the chord as it was, moved, on the chord as it is.
+                let other = psi + (last.value.other - slopes.psi) + d_other * d_angle;
+                ((k0 * f, k1 * f), other)
             }
-            (Shape::S(s), _) => {
-                let (c0, _, _) = last.key.frame();
-                (s.slopes(c0)?.0, last.key.s_step(c, ta, tb)?)
+            Of::Plain { kappa, .. } | Of::S { kappa, .. } => {
+                let d = match slopes.of {
+                    Of::Plain { .. } => slopes.plain_step(c, ta, tb)?,
+                    _ => slopes.s_step(c, ta, tb)?,
+                };
+                let moved = |s: [f64; 3]| (s[0] * d[0] + s[1] * d[1] + s[2] * d[2]).exp();
+                // (A difference quotient reads the curvatures only.)
+                ((k0 * moved(kappa[0]), k1 * moved(kappa[1])), f64::NAN)
             }
-            _ => return None,
+            Of::Nothing => return None,
         };
-        let moved =
-            |kappa: f64, s: [f64; 3]| kappa * (s[0] * d[0] + s[1] * d[1] + s[2] * d[2]).exp();
-        let kappa = (
-            moved(last.value.kappa.0, slopes[0]),
-            moved(last.value.kappa.1, slopes[1]),
-        );
-        (kappa.0.is_finite() && kappa.1.is_finite()).then_some(Value {
-            // (A difference quotient reads the curvatures only.)
-            shape: last.value.shape,
-            kappa,
-            other: f64::NAN,
-        })
+        (kappa.0.is_finite() && kappa.1.is_finite() && (other.is_finite() || other.is_nan()))
+            .then_some(Value {
+                shape: last.value.shape,
+                kappa,
+                other,
+            })
     }
 
     /// Span `k`'s memo for chord `c` and end tangents `ta`, `tb`: a plain segment's μ, an
-    /// S's A, moved to first order from its last full evaluation where it can be.
+    /// S's A, a half S's turning, moved to first order from its last full evaluation where
+    /// it can be.
     fn predicted(&self, k: usize, memo: Memo, c: f64, ta: f64, tb: f64) -> Memo {
         let cache = self.cache.borrow();
         let Some(last) = cache.get(k).and_then(|c| c.as_ref()) else {
             return memo;
         };
-        match (&last.value.shape, &last.made) {
-            (Shape::Plain(_), Some(made)) => {
-                let mu = made
-                    .mu_slopes()
-                    .zip(last.key.plain_step(c, ta, tb))
-                    .map(|(slopes, d)| made.mu() + slopes[0] * d[0] + slopes[1] * d[1]);
-                match mu.filter(|mu| *mu > 0.0 && mu.is_finite()) {
-                    Some(mu) => Memo {
-                        mu: Some(mu),
-                        ..memo
-                    },
-                    None => memo,
+        let slopes = last.slopes();
+        match slopes.of {
+            Of::Plain { mu, at, .. } => {
+                let next = slopes
+                    .plain_step(c, ta, tb)
+                    .map(|d| at + mu[0] * d[0] + mu[1] * d[1])
+                    .filter(|mu| *mu > 0.0 && mu.is_finite());
+                Memo {
+                    mu: next.or(memo.mu),
+                    ..memo
                 }
             }
-            (Shape::S(s), _) if s.is_half() => {
-                let (c0, _, _) = last.key.frame();
-                let theta = s
-                    .half_slopes(c0)
-                    .zip(last.key.half_step(c, ta, tb))
-                    .map(|([dx, _, _], [d_angle, _])| s.theta[0].max(s.theta[1]) + dx * d_angle);
-                match theta.filter(|t| *t > 0.0 && t.is_finite()) {
-                    Some(t) => Memo {
-                        half: Some(t),
-                        ..memo
-                    },
-                    None => memo,
+            Of::S { a, at, .. } => {
+                let next = slopes
+                    .s_step(c, ta, tb)
+                    .map(|d| (at.0, at.1 + a[0] * d[0] + a[1] * d[1]))
+                    .filter(|s| s.1.is_finite());
+                Memo {
+                    s: next.or(memo.s),
+                    ..memo
                 }
             }
-            (Shape::S(s), _) => {
-                let (c0, _, _) = last.key.frame();
-                let a = s
-                    .slopes(c0)
-                    .zip(last.key.s_step(c, ta, tb))
-                    .map(|((_, da), d)| {
-                        let (sigma, a) = s.hint();
-                        (sigma, a + da[0] * d[0] + da[1] * d[1])
-                    });
-                match a.filter(|a| a.1.is_finite()) {
-                    Some(a) => Memo { s: Some(a), ..memo },
-                    None => memo,
+            Of::Half { slopes: h, at } => {
+                let at_end = self.layout.spans[k].kind == Kind::HalfToEnd;
+                let t = if at_end { tb } else { ta };
+                let next = slopes
+                    .half_step(c, t, at_end)
+                    .map(|[d, _]| at + h[0] * d)
+                    .filter(|t| *t > 0.0 && t.is_finite());
+                Memo {
+                    half: next.or(memo.half),
+                    ..memo
                 }
             }
-            _ => memo,
+            Of::Nothing => memo,
         }
     }
 
@@ -478,7 +543,7 @@ impl Problem<'_> {
                 self.made.borrow_mut()[k] = None;
                 let value = self.span(x, k)?;
                 let made = self.made.borrow_mut()[k].take();
-                self.cache.borrow_mut()[k] = Some(Reached { key, value, made });
+                self.cache.borrow_mut()[k] = Some(Reached::new(key, value, made));
                 Ok(value)
             })
             .collect()

@@ -5,7 +5,8 @@
 //! The relaxed problem first (with the continuation in α of the smooth spline), then the
 //! full one from it.
 
-use std::cell::{Cell, OnceCell, RefCell};
+use std::cell::{Cell, RefCell};
+use std::sync::OnceLock;
 use std::f64::consts::PI;
 
 use kurbo::{Point, Vec2};
@@ -222,7 +223,7 @@ pub(super) struct Reached {
     key: Key,
     pub(super) value: Value,
     pub(super) made: Option<SegmentSolution>,
-    slopes: OnceCell<Slopes>,
+    slopes: OnceLock<Slopes>,
 }
 
 impl Reached {
@@ -231,7 +232,7 @@ impl Reached {
             key,
             value,
             made,
-            slopes: OnceCell::new(),
+            slopes: OnceLock::new(),
         }
     }
 

@@ -4,7 +4,8 @@
 //! the next; consecutive pieces meeting with continuous position and tangent (but at a
 //! corner), with curvature continuous (relative) at the points and knots and zero on both
 //! sides (with a sign change) at a span's inflection; every point's report: the given
-//! directions, zero curvature where a curve meets a straight span, the given end curvatures.
+//! directions, zero curvature where a curve meets a straight span, the given end curvatures;
+//! the same of [`lac::Spline::from_points_near`] after its middle point is dragged.
 
 use kurbo::Point;
 use lac::{Closure, PointType, SplineEnd, SplineOptions};
@@ -63,6 +64,19 @@ pub(super) fn check(input: &Input) -> Result<bool, String> {
     };
     check_spline(&spline)?;
     check_points(&spline)?;
+    // A drag: the middle point moved by 1% of the points' extent, re-solved from this answer
+    // (which solves only the part of the spline the move touches), meets every check too.
+    let mut moved = spline.points().to_vec();
+    let extent = moved.iter().map(|p| dist(*p, moved[0])).fold(0.0, f64::max);
+    let k = moved.len() / 2;
+    moved[k].x += 0.006 * extent;
+    moved[k].y -= 0.008 * extent;
+    if let Some(near) = typed(Spline::from_points_near(
+        &moved, *alpha, closure, &options, &spline,
+    ))? {
+        check_spline(&near).map_err(|e| format!("after a drag: {e}"))?;
+        check_points(&near).map_err(|e| format!("after a drag: {e}"))?;
+    }
     Ok(true)
 }
 

@@ -180,8 +180,11 @@ impl Spline {
     /// [`Spline::from_points_with`] warm-started from `near`, an earlier spline with the
     /// same number of points, types and straight spans (e.g. before a point was dragged):
     /// Newton's method starts from its answer and its last Jacobian, which takes a few
-    /// residuals instead of a solve from the circles. Falls back to the cold solve when that
-    /// does not converge.
+    /// residuals instead of a solve from the circles. At the same slope it also takes the
+    /// earlier spans whose ends have not moved (with their pieces), and solves only the parts
+    /// of the spline the change touches (corners with given tangents and straight spans
+    /// separate them). The answer is the cold solve's (to the solver's tolerance, 1e-12).
+    /// Falls back to the cold solve when that does not converge.
     pub fn from_points_near(
         points: &[Point],
         alpha: f64,

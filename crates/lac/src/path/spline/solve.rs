@@ -6,8 +6,8 @@
 //! full one from it.
 
 use std::cell::{Cell, RefCell};
-use std::sync::OnceLock;
 use std::f64::consts::PI;
+use std::sync::OnceLock;
 
 use kurbo::{Point, Vec2};
 

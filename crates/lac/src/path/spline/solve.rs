@@ -368,6 +368,13 @@ impl Problem<'_> {
                 *slot = m;
             }
         };
+        // For a difference quotient: the span's last solution moved to first order, where
+        // it can be.
+        if self.loose.get() && l.spans[k].kind != Kind::Line {
+            if let Some(v) = self.linear(k, c, (ta, tb), psi) {
+                return Ok(v);
+            }
+        }
         let half = |t: f64, at_end: bool| -> Result<Value> {
             let fail = || Error::SplinePoint {
                 point: point_of(l, if at_end { kb } else { ka }),
@@ -376,14 +383,6 @@ impl Problem<'_> {
                     miss: f64::NAN,
                 },
             };
-            if let Some(v) = self
-                .loose
-                .get()
-                .then(|| self.linear(k, c, (ta, tb), psi))
-                .flatten()
-            {
-                return Ok(v);
-            }
             let hint = self.predicted(k, memo, c, ta, tb).half;
             let (s, other) = self
                 .unit
@@ -408,14 +407,6 @@ impl Problem<'_> {
             Kind::HalfToEnd => half(tb, true),
             Kind::HalfFromStart => half(ta, false),
             Kind::Curve => {
-                if let Some(v) = self
-                    .loose
-                    .get()
-                    .then(|| self.linear(k, c, (ta, tb), psi))
-                    .flatten()
-                {
-                    return Ok(v);
-                }
                 let phi_a = l.tangent(x, ka, true);
                 // The search starts where the last evaluation's slopes put it, if they can.
                 let mut m = self.predicted(k, memo, c, ta, tb);

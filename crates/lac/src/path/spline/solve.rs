@@ -696,12 +696,14 @@ impl Problem<'_> {
         let l = self.layout;
         let m = l.owner.len();
         if on.iter().any(|o| !o) {
+            // Each row's or unknown's place among those on.
             let index = |on: &[bool]| {
                 let mut next = 0;
                 on.iter()
                     .map(|&o| {
+                        let place = o.then_some(next);
                         next += usize::from(o);
-                        o.then_some(next - 1)
+                        place
                     })
                     .collect::<Vec<_>>()
             };

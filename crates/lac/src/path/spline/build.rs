@@ -277,9 +277,26 @@ pub(super) fn build(
             .map(|e| length(e.point - at))
             .fold(0.0, f64::max);
         if gap.is_nan() || gap > gap_limit {
-            return Err(Error::NumericalFailure {
-                what: "the spline's joint check (a point's position, tangent or curvature does \
-                       not match)",
+            // A span through its inflection whose curvature here is zero to rounding has its
+            // inflection at this point: a half too flat to place (κ ∝ u^(−1/α) from the
+            // inflection, flattest as α nears 0), which Newton's method can reach as a G2
+            // join at zero curvature. Say so; any other miss is lac's own failure.
+            let (sb, sa) = layout.spans_at(k);
+            let flat = [(sb, before), (sa, after)].into_iter().find_map(|(sp, e)| {
+                let (sp, e) = (sp?, e?);
+                (matches!(built[sp].1 .2, Some(Shape::S(_)))
+                    && e.kappa.abs() <= INFLECTION_LIMIT * scale)
+                    .then_some(sp)
+            });
+            return Err(match flat {
+                Some(sp) => Error::NoG2Spline {
+                    span: layout.spans[sp].span,
+                    reason: G2Failure::InflectionAtPoint,
+                },
+                None => Error::NumericalFailure {
+                    what: "the spline's joint check (a point's position, tangent or curvature \
+                           does not match)",
+                },
             });
         }
         let corner = node.tangent[0] != node.tangent[1];

@@ -225,16 +225,6 @@ impl SegmentSolution {
         Some(Self::with(points, alpha, arranged, solution))
     }
 
-    /// The segment on `points` with slope `alpha`, not solved: its piece taken at `mu`, its
-    /// chord angle off by [`SegmentSolution::chord_angle_miss`] (for a first-order answer
-    /// by [`SegmentSolution::log_corrections`] near a known μ). `None` where μ is outside
-    /// the search's range or the numbers are not finite.
-    pub(crate) fn at_mu(points: [Point; 3], alpha: f64, mu: f64) -> Option<SegmentSolution> {
-        let arranged = Self::arrange(points).ok()?;
-        let solution = chord_angle::eval_at(alpha, arranged.0.turning, arranged.2, mu)?;
-        Some(Self::with(points, alpha, arranged, solution))
-    }
-
     /// The segment on `points` (this one's control points moved, with the same vertex
     /// angle), not solved: its piece taken once at the μ that this one's derivatives
     /// predict, for a solver that iterates on μ and on the control points together (its

@@ -20,8 +20,10 @@ use crate::foundation::error::{Error, G2Failure, PointFailure, Result};
 use crate::foundation::numeric::length;
 use crate::segment::{Segment, SegmentSolution};
 
-/// A kept Jacobian's steps must shrink the residual by this factor or it is made afresh.
+/// A kept Jacobian's steps must shrink the residual by this factor or it is made afresh, ...
 const KEEP_WHILE: f64 = 0.0001;
+/// ... unless the next step at the same rate would take the residual below this.
+const NEXT: f64 = 1e-11;
 /// A residual norm at rounding: below it a step that does not lower it ends the descent.
 const RESIDUAL_FLOOR: f64 = 1e-12;
 /// Most Newton steps.
@@ -36,12 +38,6 @@ const MAX_STEP: f64 = 0.2;
 const HOMOTOPY: [f64; 4] = [0.25, 0.5, 0.75, 1.0];
 /// Where the knots' lines cross their chords, tried in turn (see [`Plan::knot_frame`]).
 const KNOT_SHARES: [f64; 3] = [0.5, 0.3, 0.7];
-
-/// The largest first-order correction (of ln|κ|) a difference quotient's span takes from one
-/// evaluation: the error is about its square, so the quotient is good to about this share.
-/// (A quotient's step moves ln|κ| by 1e-7 to 1e-5.)
-const ONE_STEP: f64 = 1e-5;
-const NEXT: f64 = 1e-11;
 
 /// A Jacobian's entries: (row, unknown, value).
 pub(super) type Entries = Vec<(usize, usize, f64)>;
@@ -932,14 +928,6 @@ pub(super) fn curve(
     if ta * tb < 0.0 && ta.abs() + tb.abs() < PI {
         let u = c * tb.abs().sin() / (ta.abs() + tb.abs()).sin();
         let t = [a, a + Vec2::from_angle(phi_a) * u, b];
-        // For a difference quotient: one evaluation at the last μ, corrected to first order.
-        if let Some(k) = memo
-            .mu
-            .filter(|_| loose)
-            .and_then(|mu| one_step(t, alpha, mu))
-        {
-            return Ok((Shape::Plain(t), k));
-        }
         let solved = SegmentSolution::near(t, alpha, (memo.mu, loose))
             .and_then(|s| Ok((s.end_curvatures()?, s)));
         return match solved {
@@ -972,18 +960,6 @@ pub(super) fn curve(
             reason: G2Failure::SpanInflects,
         }),
     }
-}
-
-/// The end curvatures of the segment on `t` at slope `alpha` from one evaluation at μ =
-/// `mu`, corrected to first order in its miss, when that correction is below [`ONE_STEP`].
-fn one_step(t: [Point; 3], alpha: f64, mu: f64) -> Option<(f64, f64)> {
-    let s = SegmentSolution::at_mu(t, alpha, mu)?;
-    let [c0, c1] = s.log_corrections()?;
-    if c0.abs().max(c1.abs()) > ONE_STEP {
-        return None;
-    }
-    let (k0, k1) = s.end_curvatures().ok()?;
-    Some((k0 * c0.exp(), k1 * c1.exp()))
 }
 
 /// The segments of a span's shape from `a` to `b` (none for a line), each half of an S
